@@ -1,0 +1,52 @@
+// azeltrack: one executable, subcommands (CLI11). Exit codes: 0 success, 1 failure, 2 bad usage.
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <exception>
+#include <iostream>
+
+#include "cli_error.hpp"
+#include "commands.hpp"
+
+namespace {
+
+void setup_logging() {
+  // Diagnostics go to stderr so that --json output on stdout stays machine-readable.
+  auto logger = spdlog::stderr_color_mt("azeltrack");
+  logger->set_pattern("azeltrack: %l: %v");
+  spdlog::set_default_logger(logger);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  setup_logging();
+  CLI::App app{"azeltrack: antenna tracking controller for EME, satellites and radio astronomy"};
+  app.set_version_flag("--version", std::string("azeltrack ") + AZT_VERSION);
+  app.require_subcommand(1);
+  const azt::app::Runner sky = azt::app::add_sky_command(app);
+  const azt::app::Runner locator = azt::app::add_locator_command(app);
+  const azt::app::Runner watch = azt::app::add_watch_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --help-all, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // One line, exit 2, whatever CLI11's own code would be.
+    azt::app::print_error(std::string(e.what()) + " (see azeltrack --help)");
+    return azt::app::kExitUsage;
+  }
+  try {
+    if (app.got_subcommand("sky")) return sky();
+    if (app.got_subcommand("locator")) return locator();
+    if (app.got_subcommand("watch")) return watch();
+  } catch (const azt::app::UsageError& e) {
+    azt::app::print_error(e.what());
+    return azt::app::kExitUsage;
+  } catch (const std::exception& e) {
+    azt::app::print_error(e.what());
+    return azt::app::kExitFailure;
+  }
+  return azt::app::kExitUsage;
+}

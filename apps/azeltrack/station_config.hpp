@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "azt/astro/target.hpp"
+#include "sky_setup.hpp"
+
+namespace azt::app {
+
+/// What `watch` reads from the configuration file (see README "Configuration").
+struct StationConfig {
+  SkySettings sky;
+  std::string band_name;              ///< the band whose Moon echo Doppler is shown
+  std::vector<astro::Target> targets; ///< Sun, Moon, then the listed sources
+};
+
+/// Reads and validates a TOML configuration file. Unknown keys, wrong types and out-of-range
+/// values are errors naming the key; throws UsageError.
+StationConfig load_station_config(const std::string& path);
+
+}  // namespace azt::app
