@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# The command line as users and scripts meet it: JSON fields, exit codes, one-line errors.
+# Usage: cli_test.sh path/to/azeltrack
+set -uo pipefail
+bin=${1:?usage: cli_test.sh AZELTRACK}
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+py=/usr/bin/python3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+
+ok() { passed=$((passed + 1)); }
+bad() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
+
+# expect_usage_error DESCRIPTION ARGS...: exit code 2, exactly one line on stderr, nothing on stdout.
+expect_usage_error() {
+  local what=$1; shift
+  "$bin" "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$?
+  local lines; lines=$(wc -l <"$tmp/err")
+  if [ $rc -ne 2 ] || [ "$lines" -ne 1 ] || [ -s "$tmp/out" ]; then
+    bad "$what: rc=$rc, stderr lines=$lines: $(cat "$tmp/err")"
+  else
+    ok
+  fi
+}
+
+# json_check DESCRIPTION PYTHON_EXPR ARGS...: runs azeltrack, evaluates the expression on `j`.
+json_check() {
+  local what=$1 expr=$2; shift 2
+  if ! "$bin" "$@" >"$tmp/out" 2>"$tmp/err"; then
+    bad "$what: exit $? $(cat "$tmp/err")"; return
+  fi
+  if "$py" -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($expr) else 1)" "$tmp/out"; then
+    ok
+  else
+    bad "$what: $expr is false for $(head -c 400 "$tmp/out")"
+  fi
+}
+
+at=(--at 2025-03-14T06:00:00Z)
+station=(--lat 46.189 --lon -79.393 --alt 300)
+
+"$bin" --help >"$tmp/out" 2>&1 && grep -q sky "$tmp/out" && grep -q locator "$tmp/out" && grep -q watch "$tmp/out" && ok || bad "--help"
+"$bin" sky --help >"$tmp/out" 2>&1 && grep -q -- --freq-mhz "$tmp/out" && ok || bad "sky --help"
+
+json_check "sky moon fields" \
+  "all(k in j for k in ['az_deg','el_deg','el_geometric_deg','ra_deg','dec_deg','distance_km','range_rate_km_s']) and 'echo_doppler_hz' not in j" \
+  sky moon "${at[@]}" "${station[@]}" --json
+json_check "moon az/el near the oracle (swetest 192.378 / 45.454)" \
+  "abs(j['az_deg']-192.378)<0.01 and abs(j['el_geometric_deg']-45.454)<0.01 and j['el_deg']>j['el_geometric_deg']" \
+  sky moon "${at[@]}" "${station[@]}" --json --dut1 0.203387
+json_check "echo doppler at --freq-mhz is -2 f rdot / c" \
+  "abs(j['echo_doppler_hz'] + 2*10368e6*j['range_rate_km_s']/299792.458) < 1e-6 and len(j['bands'])>=14" \
+  sky moon "${at[@]}" "${station[@]}" --freq-mhz 10368 --json
+json_check "dx echo doppler" "'dx_echo_doppler_hz' in j and j['dx']['grid']=='JO20'" \
+  sky moon "${at[@]}" --grid FN06HE --freq-mhz 1296 --dx-grid JO20 --json
+json_check "erfa backend selectable" "j['ephemeris']=='erfa'" sky sun "${at[@]}" "${station[@]}" --ephemeris erfa --json
+json_check "radio source has no distance" "j['distance_km'] is None and j['target']=='Cassiopeia A'" \
+  sky casa "${at[@]}" "${station[@]}" --json
+json_check "radec target" "abs(j['ra_deg']-83.8)<1 and j['range_rate_km_s'] is None" \
+  sky radec:83.633,22.0145 "${at[@]}" "${station[@]}" --json
+json_check "refraction none" "j['el_deg']==j['el_geometric_deg']" \
+  sky moon "${at[@]}" "${station[@]}" --refraction none --json
+json_check "catalogue list" "any(s['key']=='casa' for s in j) and any('leo' in s['aliases'] for s in j)" sky --list --json
+json_check "locator centre" "abs(j['lat_deg']-46.1875)<1e-9 and abs(j['lon_deg']+79.375)<1e-9" locator FN06HE --json
+json_check "locator from position" "j['locator'].upper()=='FN06HE'" locator --lat 46.189 --lon -79.393 --json
+
+# DUT1 beyond ±0.9 s is accepted with a warning on stderr.
+if "$bin" sky moon "${at[@]}" "${station[@]}" --dut1 2.5 --json >"$tmp/out" 2>"$tmp/err" && grep -qi warn "$tmp/err"; then ok; else bad "--dut1 2.5 should warn and succeed"; fi
+
+expect_usage_error "latitude out of range" sky moon "${at[@]}" --lat 100 --lon 0
+expect_usage_error "nan latitude" sky moon "${at[@]}" --lat nan --lon 0
+expect_usage_error "bad locator" sky moon "${at[@]}" --grid ZZ99
+expect_usage_error "grid and lat" sky moon "${at[@]}" --grid FN06 --lat 1 --lon 1
+expect_usage_error "no station" sky moon "${at[@]}"
+expect_usage_error "bad instant" sky moon --at yesterday "${station[@]}"
+expect_usage_error "instant without zone" sky moon --at 2025-03-14T06:00:00 "${station[@]}"
+expect_usage_error "unknown target" sky jupiter "${at[@]}" "${station[@]}"
+expect_usage_error "dut1 too large" sky moon "${at[@]}" "${station[@]}" --dut1 11
+expect_usage_error "bad frequency" sky moon "${at[@]}" "${station[@]}" --freq-mhz -5
+expect_usage_error "unknown ephemeris" sky moon "${at[@]}" "${station[@]}" --ephemeris jpl
+expect_usage_error "unknown option" sky moon "${at[@]}" "${station[@]}" --frobnicate
+expect_usage_error "no subcommand"
+expect_usage_error "bad locator (decode)" locator FN0
+expect_usage_error "bad humidity" sky moon "${at[@]}" "${station[@]}" --humidity 3
+
+# watch: one frame for a fixed instant, from the example configuration.
+if "$bin" watch --config "$root/examples/station.toml" --count 1 "${at[@]}" >"$tmp/out" 2>"$tmp/err" \
+   && grep -q '^Moon ' "$tmp/out" && grep -q 'Echo' "$tmp/out" && grep -q 'Cassiopeia A' "$tmp/out"; then
+  ok
+else
+  bad "watch frame: $(cat "$tmp/out" "$tmp/err")"
+fi
+printf '[station]\ngrid = "FN06"\n[sky]\nbandd = "144"\n' >"$tmp/typo.toml"
+expect_usage_error "config unknown key" watch --config "$tmp/typo.toml" --count 1
+printf '[station]\nlat_deg = 46\n' >"$tmp/half.toml"
+expect_usage_error "config lat without lon" watch --config "$tmp/half.toml" --count 1
+expect_usage_error "config missing" watch --config "$tmp/none.toml" --count 1
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
