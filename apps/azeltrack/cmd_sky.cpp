@@ -26,11 +26,20 @@ struct SkyOptions {
 void print_catalogue(bool json) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& s : astro::radio_sources()) {
-    auto flux = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-    out.push_back({{"key", s.key}, {"name", s.name}, {"aliases", s.aliases}, {"ra_deg", s.ra_deg},
-                   {"dec_deg", s.dec_deg}, {"kind", s.kind}, {"position_ref", s.position_ref},
-                   {"flux_1296_jy", flux(s.flux_1296_jy)}, {"flux_2304_jy", flux(s.flux_2304_jy)},
-                   {"flux_10368_jy", flux(s.flux_10368_jy)}, {"flux_ref", s.flux_ref}});
+    auto flux = [](const std::optional<double>& v) {
+      return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+    };
+    out.push_back({{"key", s.key},
+                   {"name", s.name},
+                   {"aliases", s.aliases},
+                   {"ra_deg", s.ra_deg},
+                   {"dec_deg", s.dec_deg},
+                   {"kind", s.kind},
+                   {"position_ref", s.position_ref},
+                   {"flux_1296_jy", flux(s.flux_1296_jy)},
+                   {"flux_2304_jy", flux(s.flux_2304_jy)},
+                   {"flux_10368_jy", flux(s.flux_10368_jy)},
+                   {"flux_ref", s.flux_ref}});
   }
   if (json) {
     std::cout << out.dump(2) << '\n';
@@ -48,11 +57,13 @@ SkySettings settings_from(const SkyOptions& o) {
   SkySettings s;
   const double alt_m = parse_number_option("--alt", o.alt);
   if (!o.grid.empty()) {
-    if (!o.lat.empty() || !o.lon.empty()) throw UsageError("give either --grid or --lat/--lon, not both");
+    if (!o.lat.empty() || !o.lon.empty())
+      throw UsageError("give either --grid or --lat/--lon, not both");
     s.observer = observer_from_grid(o.grid, alt_m);
     s.grid = o.grid;
   } else {
-    if (o.lat.empty() || o.lon.empty()) throw UsageError("the station is needed: --lat and --lon, or --grid");
+    if (o.lat.empty() || o.lon.empty())
+      throw UsageError("the station is needed: --lat and --lon, or --grid");
     s.observer = observer_from_coordinates(parse_number_option("--lat", o.lat),
                                            parse_number_option("--lon", o.lon), alt_m);
     s.grid = grid_of(s.observer);
@@ -94,15 +105,18 @@ void print_text(const nlohmann::json& j) {
               << " km/s\n";
   }
   if (j.contains("echo_delay_s")) {
-    std::cout << std::setprecision(4) << "  echo delay " << j["echo_delay_s"].get<double>() << " s\n";
+    std::cout << std::setprecision(4) << "  echo delay " << j["echo_delay_s"].get<double>()
+              << " s\n";
   }
   if (j.contains("echo_doppler_hz")) {
     std::cout << std::setprecision(1) << "  echo Doppler at " << j["freq_mhz"].get<double>()
-              << " MHz: " << std::showpos << j["echo_doppler_hz"].get<double>() << std::noshowpos << " Hz\n";
+              << " MHz: " << std::showpos << j["echo_doppler_hz"].get<double>() << std::noshowpos
+              << " Hz\n";
   }
   if (j.contains("dx_echo_doppler_hz")) {
     std::cout << std::setprecision(1) << "  DX echo Doppler (" << j["dx"]["grid"].get<std::string>()
-              << "): " << std::showpos << j["dx_echo_doppler_hz"].get<double>() << std::noshowpos << " Hz\n";
+              << "): " << std::showpos << j["dx_echo_doppler_hz"].get<double>() << std::noshowpos
+              << " Hz\n";
   }
 }
 
@@ -123,7 +137,8 @@ int run_sky(const SkyOptions& o) {
   }
   const auto ephemeris = open_ephemeris(settings.ephemeris);
   const SkySnapshot snapshot(*ephemeris, settings, utc);
-  const nlohmann::json j = report_json(snapshot.observe(*target), snapshot, settings, ephemeris->name());
+  const nlohmann::json j =
+      report_json(snapshot.observe(*target), snapshot, settings, ephemeris->name());
   if (o.json) {
     std::cout << j.dump() << '\n';
   } else {
@@ -142,17 +157,21 @@ double parse_number_option(const std::string& option, const std::string& text) {
 
 Runner add_sky_command(CLI::App& app) {
   auto opts = std::make_shared<SkyOptions>();
-  CLI::App* cmd = app.add_subcommand("sky", "Where a target is: az/el, RA/Dec, distance, range rate, Moon echo Doppler");
-  cmd->add_option("target", opts->target, "sun, moon, a catalogue name (see --list) or radec:RA_DEG,DEC_DEG");
+  CLI::App* cmd = app.add_subcommand(
+      "sky", "Where a target is: az/el, RA/Dec, distance, range rate, Moon echo Doppler");
+  cmd->add_option("target", opts->target,
+                  "sun, moon, a catalogue name (see --list) or radec:RA_DEG,DEC_DEG");
   cmd->add_flag("--list", opts->list, "List the radio-source catalogue");
   cmd->add_option("--at", opts->at, "UTC instant, ISO 8601 (2025-03-14T06:00:00Z); default now");
   cmd->add_option("--lat", opts->lat, "Station latitude, degrees north (WGS84)");
   cmd->add_option("--lon", opts->lon, "Station longitude, degrees east (WGS84)");
   cmd->add_option("--alt", opts->alt, "Station height above the ellipsoid, metres (default 0)");
-  cmd->add_option("--grid", opts->grid, "Station Maidenhead locator (4-10 characters), instead of --lat/--lon");
+  cmd->add_option("--grid", opts->grid,
+                  "Station Maidenhead locator (4-10 characters), instead of --lat/--lon");
   cmd->add_option("--freq-mhz", opts->freq_mhz, "Frequency for the Moon echo Doppler, MHz");
   cmd->add_option("--dx-grid", opts->dx_grid, "Locator of a DX station for the DX echo Doppler");
-  cmd->add_option("--dut1", opts->dut1, "UT1-UTC in seconds (default 0; beyond ±0.9 s warns, ±10 s max)");
+  cmd->add_option("--dut1", opts->dut1,
+                  "UT1-UTC in seconds (default 0; beyond ±0.9 s warns, ±10 s max)");
   cmd->add_option("--ephemeris", opts->ephemeris, "auto (default), swiss or erfa");
   cmd->add_option("--refraction", opts->refraction, "radio (default), optical or none");
   cmd->add_option("--pressure-hpa", opts->pressure, "Station pressure, hPa (default 1013.25)");

@@ -2,8 +2,8 @@
 // until Ctrl-C. The daemon (a later issue) replaces this as the main job.
 #include <unistd.h>
 
-#include <csignal>
 #include <chrono>
+#include <csignal>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -42,12 +42,12 @@ std::string moon_lines(const TargetReport& moon, const StationConfig& c) {
   const auto& p = moon.observation.place;
   const double f = *c.sky.freq_mhz;
   std::ostringstream out;
-  out << std::fixed << std::setprecision(0) << "\nMoon  distance " << *p.distance_km << " km   echo delay "
-      << std::setprecision(3) << astro::echo_delay_s(*p.distance_km) << " s   range rate "
-      << std::setprecision(1) << *p.range_rate_km_s * 1000.0 << " m/s\n"
-      << "Echo  " << c.band_name << " band (" << std::setprecision(3) << f << " MHz): "
-      << std::showpos << std::setprecision(0) << astro::self_echo_doppler_hz(f, *p.range_rate_km_s)
-      << " Hz" << std::noshowpos;
+  out << std::fixed << std::setprecision(0) << "\nMoon  distance " << *p.distance_km
+      << " km   echo delay " << std::setprecision(3) << astro::echo_delay_s(*p.distance_km)
+      << " s   range rate " << std::setprecision(1) << *p.range_rate_km_s * 1000.0 << " m/s\n"
+      << "Echo  " << c.band_name << " band (" << std::setprecision(3) << f
+      << " MHz): " << std::showpos << std::setprecision(0)
+      << astro::self_echo_doppler_hz(f, *p.range_rate_km_s) << " Hz" << std::noshowpos;
   if (moon.dx_range_rate_km_s) {
     out << "   DX " << c.sky.dx_grid << ": " << std::showpos
         << astro::dx_echo_doppler_hz(f, *p.range_rate_km_s, *moon.dx_range_rate_km_s) << " Hz"
@@ -58,7 +58,8 @@ std::string moon_lines(const TargetReport& moon, const StationConfig& c) {
   return out.str();
 }
 
-std::string frame(const astro::Ephemeris& eph, const StationConfig& c, const astro::UtcInstant& utc) {
+std::string frame(const astro::Ephemeris& eph, const StationConfig& c,
+                  const astro::UtcInstant& utc) {
   const SkySnapshot snapshot(eph, c.sky, utc);
   std::ostringstream out;
   out << "azeltrack  " << astro::format_iso8601_utc(utc) << "  station " << c.sky.grid << " ("
@@ -85,7 +86,8 @@ void wait_for_next_second() {
   const auto now = clock::now();
   const auto next = std::chrono::ceil<std::chrono::seconds>(now + std::chrono::milliseconds(1));
   while (g_stop == 0 && clock::now() < next) {
-    std::this_thread::sleep_for(std::min<clock::duration>(next - clock::now(), std::chrono::milliseconds(100)));
+    std::this_thread::sleep_for(
+        std::min<clock::duration>(next - clock::now(), std::chrono::milliseconds(100)));
   }
 }
 
@@ -103,7 +105,8 @@ int run_watch(const WatchOptions& o) {
   const bool tty = isatty(STDOUT_FILENO) != 0;
   for (int n = 0; g_stop == 0 && (o.count == 0 || n < o.count); ++n) {
     const std::string text = frame(*ephemeris, config, fixed ? *fixed : utc_now());
-    std::cout << (tty ? "\x1b[H\x1b[2J" : "") << text << (tty ? "\nCtrl-C to quit\n" : "\n") << std::flush;
+    std::cout << (tty ? "\x1b[H\x1b[2J" : "") << text << (tty ? "\nCtrl-C to quit\n" : "\n")
+              << std::flush;
     if (o.count == 0 || n + 1 < o.count) wait_for_next_second();
   }
   return 0;
@@ -113,8 +116,10 @@ int run_watch(const WatchOptions& o) {
 
 Runner add_watch_command(CLI::App& app) {
   auto opts = std::make_shared<WatchOptions>();
-  CLI::App* cmd = app.add_subcommand("watch", "Live terminal view of the sky for the configured station");
-  cmd->add_option("--config", opts->config, "Configuration file (TOML), default examples/station.toml");
+  CLI::App* cmd =
+      app.add_subcommand("watch", "Live terminal view of the sky for the configured station");
+  cmd->add_option("--config", opts->config,
+                  "Configuration file (TOML), default examples/station.toml");
   cmd->add_option("--count", opts->count, "Draw this many frames and exit (default: until Ctrl-C)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--at", opts->at, "Show a fixed UTC instant instead of the clock");

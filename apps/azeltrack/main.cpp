@@ -1,7 +1,7 @@
 // azeltrack: one executable, subcommands (CLI11). Exit codes: 0 success, 1 failure, 2 bad usage.
-#include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
 
 #include <exception>
 #include <iostream>

@@ -103,9 +103,10 @@ astro::TimeScales time_scales_at(const astro::UtcInstant& utc, double dut1_s) {
   static bool warned = false;
   if (time->leap_table_expired && !warned) {
     warned = true;
-    spdlog::warn("the leap-second table expired before this instant: TAI−UTC = {} s is assumed; "
-                 "update tzdata if a leap second has been announced since",
-                 time->tai_minus_utc_s);
+    spdlog::warn(
+        "the leap-second table expired before this instant: TAI−UTC = {} s is assumed; "
+        "update tzdata if a leap second has been announced since",
+        time->tai_minus_utc_s);
   }
   return *time;
 }

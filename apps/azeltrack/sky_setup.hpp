@@ -16,11 +16,11 @@ namespace azt::app {
 /// from its options and `watch` from the configuration file.
 struct SkySettings {
   astro::Observer observer;
-  std::string grid;                         ///< the station's locator (given or derived)
-  std::optional<astro::Observer> dx;        ///< a DX station for DX echo Doppler
+  std::string grid;                   ///< the station's locator (given or derived)
+  std::optional<astro::Observer> dx;  ///< a DX station for DX echo Doppler
   std::string dx_grid;
   double dut1_s = 0.0;
-  std::string ephemeris = "auto";           ///< auto | erfa | swiss
+  std::string ephemeris = "auto";  ///< auto | erfa | swiss
   astro::Atmosphere atmosphere;
   std::optional<double> freq_mhz;
 };

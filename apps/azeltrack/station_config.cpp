@@ -13,7 +13,7 @@ namespace {
 
 const std::set<std::string, std::less<>> kStationKeys{"grid", "lat_deg", "lon_deg", "height_m"};
 const std::set<std::string, std::less<>> kSkyKeys{"band", "ephemeris", "dut1_s", "dx_grid",
-                                                   "sources"};
+                                                  "sources"};
 const std::set<std::string, std::less<>> kAtmosphereKeys{"refraction", "pressure_hpa",
                                                          "temperature_c", "relative_humidity"};
 
@@ -31,7 +31,8 @@ class ConfigReader {
     const toml::table* t = node->as_table();
     if (t == nullptr) error(std::string("[") + name + "] must be a table");
     for (const auto& [key, value] : *t) {
-      if (keys.count(key.str()) == 0) error("unknown key [" + std::string(name) + "]." + std::string(key.str()));
+      if (keys.count(key.str()) == 0)
+        error("unknown key [" + std::string(name) + "]." + std::string(key.str()));
     }
     return t;
   }
@@ -43,7 +44,8 @@ class ConfigReader {
     return v;
   }
 
-  std::optional<std::string> text(const toml::table* t, const char* section, const char* key) const {
+  std::optional<std::string> text(const toml::table* t, const char* section,
+                                  const char* key) const {
     if (t == nullptr || !t->contains(key)) return std::nullopt;
     auto v = (*t)[key].value<std::string>();
     if (!v) error(std::string("[") + section + "]." + key + " must be a string");
@@ -105,10 +107,13 @@ void read_sky(const ConfigReader& r, const toml::table* t, StationConfig& config
     }
   }
   config.targets = {astro::Target::sun(), astro::Target::moon()};
-  const toml::array* sources = t != nullptr && t->contains("sources") ? (*t)["sources"].as_array() : nullptr;
-  if (t != nullptr && t->contains("sources") && sources == nullptr) r.error("[sky].sources must be an array");
+  const toml::array* sources =
+      t != nullptr && t->contains("sources") ? (*t)["sources"].as_array() : nullptr;
+  if (t != nullptr && t->contains("sources") && sources == nullptr)
+    r.error("[sky].sources must be an array");
   if (sources == nullptr) {
-    for (const auto& s : astro::radio_sources()) config.targets.push_back(astro::Target::radio_source(s));
+    for (const auto& s : astro::radio_sources())
+      config.targets.push_back(astro::Target::radio_source(s));
     return;
   }
   for (const auto& node : *sources) {
@@ -124,10 +129,10 @@ void read_atmosphere(const ConfigReader& r, const toml::table* t, SkySettings& s
   const std::string model_name = r.text(t, "atmosphere", "refraction").value_or("radio");
   auto model = astro::parse_refraction_model(model_name);
   if (!model) r.error("[atmosphere].refraction: " + model.error().message);
-  auto atm = astro::Atmosphere::make(r.number(t, "atmosphere", "pressure_hpa").value_or(1013.25),
-                                     r.number(t, "atmosphere", "temperature_c").value_or(10.0),
-                                     r.number(t, "atmosphere", "relative_humidity").value_or(0.5),
-                                     *model);
+  auto atm =
+      astro::Atmosphere::make(r.number(t, "atmosphere", "pressure_hpa").value_or(1013.25),
+                              r.number(t, "atmosphere", "temperature_c").value_or(10.0),
+                              r.number(t, "atmosphere", "relative_humidity").value_or(0.5), *model);
   if (!atm) r.error("[atmosphere]: " + atm.error().message);
   sky.atmosphere = *atm;
 }

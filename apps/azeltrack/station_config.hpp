@@ -11,8 +11,8 @@ namespace azt::app {
 /// What `watch` reads from the configuration file (see README "Configuration").
 struct StationConfig {
   SkySettings sky;
-  std::string band_name;              ///< the band whose Moon echo Doppler is shown
-  std::vector<astro::Target> targets; ///< Sun, Moon, then the listed sources
+  std::string band_name;               ///< the band whose Moon echo Doppler is shown
+  std::vector<astro::Target> targets;  ///< Sun, Moon, then the listed sources
 };
 
 /// Reads and validates a TOML configuration file. Unknown keys, wrong types and out-of-range

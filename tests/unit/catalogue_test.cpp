@@ -11,10 +11,10 @@ TEST(Catalogue, SeedButtonsResolveToTheirRadioSources) {
   // Seed 000: "track by predefine touch buttons Sun, Moon, Sagittarius, Cassiopeia, Taurus, Leo
   // and Pictor". Leo has no strong source; it means Virgo A (documented in catalogue.cpp).
   const std::pair<const char*, const char*> buttons[] = {{"Sagittarius", "sgra"},
-                                                        {"Cassiopeia", "casa"},
-                                                        {"Taurus", "taua"},
-                                                        {"Leo", "vira"},
-                                                        {"Pictor", "pica"}};
+                                                         {"Cassiopeia", "casa"},
+                                                         {"Taurus", "taua"},
+                                                         {"Leo", "vira"},
+                                                         {"Pictor", "pica"}};
   for (const auto& [button, key] : buttons) {
     const RadioSource* s = find_radio_source(button);
     ASSERT_NE(s, nullptr) << button;
@@ -36,8 +36,8 @@ TEST(Catalogue, NamesAliasesAndSpellings) {
 
 TEST(Catalogue, CalibrationSourcesOfTheReferenceStudyArePresent) {
   // ../shared/reference/astronomy-and-eme.md §5 table.
-  for (const char* key : {"casa", "cyga", "taua", "vira", "sgra", "pica", "hyda", "hera", "oria",
-                          "m17", "cena"}) {
+  for (const char* key :
+       {"casa", "cyga", "taua", "vira", "sgra", "pica", "hyda", "hera", "oria", "m17", "cena"}) {
     EXPECT_NE(find_radio_source(key), nullptr) << key;
   }
 }
@@ -75,7 +75,8 @@ TEST(Bands, CoverSixMetresToFourMillimetres) {
   ASSERT_GE(bands.size(), 14u);
   EXPECT_NEAR(bands.front().freq_mhz, 50.19, 0.5);
   EXPECT_NEAR(bands.back().freq_mhz, 76032.1, 1.0);
-  for (std::size_t i = 1; i < bands.size(); ++i) EXPECT_GT(bands[i].freq_mhz, bands[i - 1].freq_mhz);
+  for (std::size_t i = 1; i < bands.size(); ++i)
+    EXPECT_GT(bands[i].freq_mhz, bands[i - 1].freq_mhz);
   EXPECT_EQ(find_band("10g"), find_band("10368"));
   EXPECT_EQ(find_band("2M"), find_band("144"));
   EXPECT_EQ(find_band("47088")->freq_mhz, 47088.1);

@@ -27,7 +27,8 @@ TEST(ItuP834, LessBendingAtAHigherStation) {
 
 TEST(Saemundsson, MeeusTableAt1010HpaAnd10C) {
   // §3.4 table, column "Sæmundsson (optical)".
-  const double expected[][2] = {{0, 29.0}, {1, 21.7}, {2, 16.9}, {5, 9.7}, {10, 5.4}, {20, 2.7}, {45, 1.0}};
+  const double expected[][2] = {{0, 29.0}, {1, 21.7}, {2, 16.9}, {5, 9.7},
+                                {10, 5.4}, {20, 2.7}, {45, 1.0}};
   for (const auto& row : expected) {
     EXPECT_NEAR(saemundsson_refraction_deg(row[0], 1010.0, 10.0) / kArcmin, row[1], 0.06) << row[0];
   }

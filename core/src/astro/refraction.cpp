@@ -117,8 +117,8 @@ double refraction_deg(double el_geometric_deg, double height_m, const Atmosphere
 double itu_p834_refraction_deg(double el_free_space_deg, double height_km) {
   const double t = el_free_space_deg;
   const double h = height_km;
-  return 1.0 / (1.728 + 0.5411 * t + 0.03723 * t * t + h * (0.1815 + 0.06272 * t + 0.01138 * t * t) +
-                h * h * (0.01727 + 0.008288 * t));
+  return 1.0 / (1.728 + 0.5411 * t + 0.03723 * t * t +
+                h * (0.1815 + 0.06272 * t + 0.01138 * t * t) + h * h * (0.01727 + 0.008288 * t));
 }
 
 double radio_refractivity(double pressure_hpa, double temperature_c, double relative_humidity) {

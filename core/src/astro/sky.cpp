@@ -45,7 +45,8 @@ Vec3 kepler_acceleration(const Vec3& r, double gm) {
 /// < 1e-6 m for the Moon (τ ≈ 1.3 s) and < 1 mm for the Sun's barycentric motion (τ ≈ 499 s).
 PosVel extrapolate_back(const PosVel& at_t, const Vec3& accel, double tau_d) {
   PosVel out;
-  out.pos_au = add(sub(at_t.pos_au, scale(at_t.vel_au_d, tau_d)), scale(accel, 0.5 * tau_d * tau_d));
+  out.pos_au =
+      add(sub(at_t.pos_au, scale(at_t.vel_au_d, tau_d)), scale(accel, 0.5 * tau_d * tau_d));
   out.vel_au_d = sub(at_t.vel_au_d, scale(accel, tau_d));
   return out;
 }
@@ -99,7 +100,8 @@ Place place_of_body(const Epoch& epoch, const Station& st, const Vec3& r, const 
   Vec3 u = scale(r, 1.0 / rho_au);
   // d|X(t−τ(t)) − O(t)|/dt with τ = ρ/c: ρ̇ = u·(V_X − V_O) / (1 + u·V_X / c).
   const Vec3 v_obs = observer_velocity_au_d(st);
-  const double rate_au_d = dot(u, sub(vel_x, v_obs)) / (1.0 + dot(u, vel_x) / kSpeedOfLightAuPerDay);
+  const double rate_au_d =
+      dot(u, sub(vel_x, v_obs)) / (1.0 + dot(u, vel_x) / kSpeedOfLightAuPerDay);
 
   double pnat[3] = {u[0], u[1], u[2]};
   double ppr[3];
@@ -169,9 +171,9 @@ Station make_station(const Epoch& epoch, const Observer& observer) {
   }
   eraASTROM astrom{};
   // Polar motion is not applied (≈ 0.3″, below every bar here); refraction constants zero.
-  eraApco(epoch.time.tt.jd1, epoch.time.tt.jd2, ebpv, ehp, epoch.x, epoch.y, epoch.s,
-          epoch.era_rad, observer.lon_deg * ERFA_DD2R, observer.lat_deg * ERFA_DD2R,
-          observer.height_m, 0.0, 0.0, epoch.sp, 0.0, 0.0, &astrom);
+  eraApco(epoch.time.tt.jd1, epoch.time.tt.jd2, ebpv, ehp, epoch.x, epoch.y, epoch.s, epoch.era_rad,
+          observer.lon_deg * ERFA_DD2R, observer.lat_deg * ERFA_DD2R, observer.height_m, 0.0, 0.0,
+          epoch.sp, 0.0, 0.0, &astrom);
   return station_from(astrom, observer);
 }
 

@@ -10,9 +10,11 @@ namespace azt::astro {
 namespace {
 
 // Geometric barycentric/geocentric cartesian states in the ICRS, exactly what the shared
-// reduction in sky.cpp expects (equatorial: libswe defaults to ecliptic): no light time, no aberration, no deflection, no precession.
-constexpr int32 kGeometricIcrs = SEFLG_SWIEPH | SEFLG_EQUATORIAL | SEFLG_J2000 | SEFLG_ICRS | SEFLG_XYZ |
-                                 SEFLG_TRUEPOS | SEFLG_NOABERR | SEFLG_NOGDEFL | SEFLG_SPEED;
+// reduction in sky.cpp expects (equatorial: libswe defaults to ecliptic): no light time, no
+// aberration, no deflection, no precession.
+constexpr int32 kGeometricIcrs = SEFLG_SWIEPH | SEFLG_EQUATORIAL | SEFLG_J2000 | SEFLG_ICRS |
+                                 SEFLG_XYZ | SEFLG_TRUEPOS | SEFLG_NOABERR | SEFLG_NOGDEFL |
+                                 SEFLG_SPEED;
 
 Result<PosVel> calc(const JulianDate& tt, int body, int32 flags) {
   double xx[6];
@@ -22,8 +24,9 @@ Result<PosVel> calc(const JulianDate& tt, int body, int32 flags) {
   const int32 got = swe_calc(tt.jd1 + tt.jd2, body, flags, xx, err);
   if (got < 0) return fail(std::string("Swiss Ephemeris: ") + err);
   if ((got & SEFLG_SWIEPH) == 0) {
-    return fail("Swiss Ephemeris data files not found (libswe fell back to its Moshier theory); "
-                "install swe-basic-data or set the ephemeris path");
+    return fail(
+        "Swiss Ephemeris data files not found (libswe fell back to its Moshier theory); "
+        "install swe-basic-data or set the ephemeris path");
   }
   PosVel out;
   for (std::size_t i = 0; i < 3; ++i) {

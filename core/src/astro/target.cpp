@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "azt/util/format_number.hpp"
 #include "azt/util/parse_number.hpp"
 
 namespace azt::astro {
@@ -16,8 +17,7 @@ std::string lower(std::string_view text) {
 }
 
 std::string format_radec_name(double ra_deg, double dec_deg) {
-  // Six decimals (4 mas) is plenty for a label; azeltrack never changes the C locale.
-  return "RA " + std::to_string(ra_deg) + " Dec " + std::to_string(dec_deg);
+  return "RA " + format_number(ra_deg) + " Dec " + format_number(dec_deg);
 }
 
 Result<Target> parse_radec(std::string_view spec, std::string_view original) {

@@ -7,8 +7,8 @@ namespace azt::astro {
 
 /// An amateur band with the frequency at which EME activity concentrates, for per-band Doppler.
 struct AmateurBand {
-  std::string_view name;   ///< "144", "10g" …
-  double freq_mhz = 0.0;   ///< typical EME frequency in the band
+  std::string_view name;  ///< "144", "10g" …
+  double freq_mhz = 0.0;  ///< typical EME frequency in the band
 };
 
 /// 50 MHz to 24 GHz, plus 47 and 76 GHz, in frequency order.

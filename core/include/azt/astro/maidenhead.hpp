@@ -9,10 +9,10 @@ namespace azt::astro {
 
 /// A Maidenhead (QTH) locator square: its centre and its size.
 struct LocatorSquare {
-  double lat_deg = 0.0;       ///< centre
-  double lon_deg = 0.0;       ///< centre
-  double height_deg = 0.0;    ///< latitude span of the square
-  double width_deg = 0.0;     ///< longitude span of the square
+  double lat_deg = 0.0;     ///< centre
+  double lon_deg = 0.0;     ///< centre
+  double height_deg = 0.0;  ///< latitude span of the square
+  double width_deg = 0.0;   ///< longitude span of the square
 };
 
 /// Decodes a locator of 4, 6, 8 or 10 characters (field A–R, square 0–9, subsquare a–x,

@@ -16,13 +16,13 @@ namespace azt::astro {
 struct Epoch {
   TimeScales time;
   EarthSun earth_sun;
-  double bpn[3][3]{};   ///< GCRS → CIRS (bias-precession-nutation) matrix
-  double x = 0.0;       ///< CIP X, Y (rad)
+  double bpn[3][3]{};  ///< GCRS → CIRS (bias-precession-nutation) matrix
+  double x = 0.0;      ///< CIP X, Y (rad)
   double y = 0.0;
-  double s = 0.0;       ///< CIO locator (rad)
-  double sp = 0.0;      ///< TIO locator (rad)
-  double era_rad = 0.0; ///< Earth rotation angle of UT1
-  double eo_rad = 0.0;  ///< equation of the origins: RA(equinox) = RA(CIO) − eo
+  double s = 0.0;        ///< CIO locator (rad)
+  double sp = 0.0;       ///< TIO locator (rad)
+  double era_rad = 0.0;  ///< Earth rotation angle of UT1
+  double eo_rad = 0.0;   ///< equation of the origins: RA(equinox) = RA(CIO) − eo
 };
 
 Result<Epoch> make_epoch(const Ephemeris& ephemeris, const TimeScales& time);
@@ -33,11 +33,11 @@ struct Station {
   Observer observer;
   // eraASTROM fields (see erfa.h); kept here so the header does not drag erfa.h in.
   double pmt = 0.0;
-  double eb[3]{};     ///< observer barycentric position (au)
-  double eh[3]{};     ///< Sun → observer unit vector
-  double em = 0.0;    ///< Sun → observer distance (au)
-  double v[3]{};      ///< observer barycentric velocity (units of c)
-  double bm1 = 0.0;   ///< sqrt(1 − |v|²)
+  double eb[3]{};    ///< observer barycentric position (au)
+  double eh[3]{};    ///< Sun → observer unit vector
+  double em = 0.0;   ///< Sun → observer distance (au)
+  double v[3]{};     ///< observer barycentric velocity (units of c)
+  double bm1 = 0.0;  ///< sqrt(1 − |v|²)
   double bpn[3][3]{};
   double along = 0.0, phi = 0.0, xpl = 0.0, ypl = 0.0, sphi = 0.0, cphi = 0.0, diurab = 0.0,
          eral = 0.0;

@@ -15,9 +15,9 @@ namespace azt::astro {
 struct Target {
   enum class Kind { Sun, Moon, Source, RaDec };
   Kind kind = Kind::Moon;
-  std::string name;                       ///< display name
-  const RadioSource* source = nullptr;    ///< for Kind::Source
-  double ra_deg = 0.0;                    ///< ICRS/J2000, for Source and RaDec
+  std::string name;                     ///< display name
+  const RadioSource* source = nullptr;  ///< for Kind::Source
+  double ra_deg = 0.0;                  ///< ICRS/J2000, for Source and RaDec
   double dec_deg = 0.0;
 
   static Target sun();

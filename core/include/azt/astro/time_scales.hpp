@@ -25,24 +25,28 @@ struct UtcInstant {
   static Result<UtcInstant> from_calendar(int year, int month, int day, int hour, int minute,
                                           double second);
   /// From Unix time (seconds since 1970-01-01T00:00:00Z, leap seconds not counted, as POSIX).
+  /// Whole days go to jd1 and the time of day to jd2, so sub-microsecond digits survive. A
+  /// non-finite input gives a non-finite instant, which make_time_scales() rejects.
   static UtcInstant from_unix_seconds(double unix_s);
   /// Modified Julian Date of the instant (UTC day count + fraction).
   [[nodiscard]] double mjd() const;
 };
 
 /// Parses an ISO 8601 UTC instant: `YYYY-MM-DDTHH:MM[:SS[.fff]]Z` (a space may replace the `T`;
-/// `+00:00` may replace the `Z`). Anything else — a missing zone, another offset, junk — is an error
-/// naming the problem.
+/// `+00:00` may replace the `Z`). Anything else — a missing zone, another offset, junk — is an
+/// error naming the problem.
 Result<UtcInstant> parse_iso8601_utc(std::string_view text);
 
-/// Formats as `YYYY-MM-DDTHH:MM:SS.sssZ` (milliseconds, rounded).
+/// Formats as `YYYY-MM-DDTHH:MM:SS.sssZ` (milliseconds, rounded; 23:59:59.9996 carries into the
+/// next day). A non-finite instant, or one ERFA's calendar cannot hold, formats as
+/// "(invalid UTC instant)", which the parser rejects.
 std::string format_iso8601_utc(const UtcInstant& t);
 
 /// The time scales the sky needs at one instant.
 struct TimeScales {
   UtcInstant utc;
-  JulianDate tt;    ///< Terrestrial Time = TAI + 32.184 s (used as TDB: differs by < 2 ms).
-  JulianDate ut1;   ///< UT1 = UTC + DUT1.
+  JulianDate tt;   ///< Terrestrial Time = TAI + 32.184 s (used as TDB: differs by < 2 ms).
+  JulianDate ut1;  ///< UT1 = UTC + DUT1.
   double tai_minus_utc_s = 0.0;
   double dut1_s = 0.0;
   /// True when the instant lies after the leap-second table's expiry date: TAI−UTC is then the

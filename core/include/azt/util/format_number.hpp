@@ -1,0 +1,11 @@
+#pragma once
+
+#include <string>
+
+namespace azt {
+
+/// Shortest text that reads back as the same double (std::to_chars: locale-free, no exponent
+/// surprises from printf). "nan"/"inf" for non-finite values. For messages and labels.
+std::string format_number(double value);
+
+}  // namespace azt

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# House style, checked by the test command (DESIGN.md rule 6): clang-format on every first-party
+# C++ file, clang-tidy (naming, function size, bugprone, performance) on the core and the program.
+# Usage: lint.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+src=${1:?usage: lint.sh SOURCE_DIR BUILD_DIR}
+build=${2:?usage: lint.sh SOURCE_DIR BUILD_DIR}
+cd "$src"
+mapfile -t files < <(find core apps tests bench -name '*.cpp' -o -name '*.hpp' | sort)
+[ ${#files[@]} -gt 10 ] || { echo "lint: found only ${#files[@]} files" >&2; exit 1; }
+clang-format --dry-run --Werror "${files[@]}"
+echo "lint: clang-format clean on ${#files[@]} files"
+mapfile -t tidy < <(find core/src apps -name '*.cpp' | sort)
+out=$(printf '%s\n' "${tidy[@]}" |
+  xargs -P 2 -n 4 clang-tidy -p "$build" --quiet --warnings-as-errors='*' 2>&1) || {
+  printf '%s\n' "$out" | grep -E 'warning:|error:' | sort -u >&2
+  echo "lint: clang-tidy found problems" >&2
+  exit 1
+}
+echo "lint: clang-tidy clean on ${#tidy[@]} files"
