@@ -25,6 +25,14 @@ int main(int argc, char** argv) {
   CLI::App app{"azeltrack: antenna tracking controller for EME, satellites and radio astronomy"};
   app.set_version_flag("--version", std::string("azeltrack ") + AZT_VERSION);
   app.require_subcommand(1);
+  app.footer(
+      "Examples:\n"
+      "  azeltrack sky moon --grid FN06HE --freq-mhz 10368      where the Moon is, echo Doppler\n"
+      "  azeltrack sky casa --lat 46.189 --lon -79.393 --json   Cassiopeia A as JSON\n"
+      "  azeltrack sky --list                                   the radio-source catalogue\n"
+      "  azeltrack locator FN06HE                               centre of a locator square\n"
+      "  azeltrack watch --config examples/station.toml         live sky view (scripts/run)\n"
+      "Exit codes: 0 success, 1 failure, 2 bad arguments.");
   const azt::app::Runner sky = azt::app::add_sky_command(app);
   const azt::app::Runner locator = azt::app::add_locator_command(app);
   const azt::app::Runner watch = azt::app::add_watch_command(app);

@@ -10,21 +10,16 @@
 #include <system_error>
 
 #include "azt/astro/time_scales.hpp"
+#include "azt/util/quote.hpp"
 
 namespace azt::astro {
 
 namespace {
 
-constexpr std::size_t kMaxQuotedChars = 64;  ///< keeps error messages short on garbage input
 constexpr std::int64_t kMsPerDay = 86'400'000;
 
-std::string quoted(std::string_view text) {
-  if (text.size() <= kMaxQuotedChars) return "\"" + std::string(text) + "\"";
-  return "\"" + std::string(text.substr(0, kMaxQuotedChars)) + "...\"";
-}
-
 Error bad(std::string_view text, const std::string& why) {
-  return fail(quoted(text) + " is not a UTC time YYYY-MM-DDTHH:MM[:SS[.fff]]Z: " + why);
+  return fail(quote(text) + " is not a UTC time YYYY-MM-DDTHH:MM[:SS[.fff]]Z: " + why);
 }
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -94,9 +89,9 @@ std::optional<std::string> check_zone(std::string_view zone) {
   if (zone == "Z" || zone == "+00:00" || zone == "+0000") return std::nullopt;
   if (zone.empty()) return "no time zone: append 'Z' (or +00:00) for UTC";
   if (zone.front() == '+' || zone.front() == '-') {
-    return "offset " + quoted(zone) + " is not UTC: only Z, +00:00 or +0000 are accepted";
+    return "offset " + quote(zone) + " is not UTC: only Z, +00:00 or +0000 are accepted";
   }
-  return "unexpected " + quoted(zone) + " after the time";
+  return "unexpected " + quote(zone) + " after the time";
 }
 
 /// Appends `value` (>= 0) with at least `width` digits.

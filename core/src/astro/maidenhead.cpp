@@ -9,6 +9,7 @@
 
 #include "azt/astro/maidenhead.hpp"
 #include "azt/util/format_number.hpp"
+#include "azt/util/quote.hpp"
 
 #include <array>
 #include <charconv>
@@ -52,8 +53,6 @@ std::optional<int> symbol_index(char c, const Level& level) {
   return index;
 }
 
-std::string quoted(std::string_view text) { return "\"" + std::string(text.substr(0, 32)) + "\""; }
-
 /// Finest-grid cell index of a coordinate already checked to lie in [0, span]; the far edge
 /// (latitude 90, longitude 180) goes to the last cell.
 std::int64_t grid_index(double offset_deg, double units_per_deg) {
@@ -67,7 +66,7 @@ std::int64_t grid_index(double offset_deg, double units_per_deg) {
 
 Result<LocatorSquare> decode_locator(std::string_view locator) {
   if (!valid_length(locator.size())) {
-    return fail("locator " + quoted(locator) + " has " + std::to_string(locator.size()) +
+    return fail("locator " + quote(locator) + " has " + std::to_string(locator.size()) +
                 " characters; a locator has 4, 6, 8 or 10");
   }
   std::int64_t lon_units = 0;
@@ -76,7 +75,7 @@ Result<LocatorSquare> decode_locator(std::string_view locator) {
     const Level& level = kLevels[i / 2];
     const auto index = symbol_index(locator[i], level);
     if (!index) {
-      return fail("locator " + quoted(locator) + ": character '" + std::string(1, locator[i]) +
+      return fail("locator " + quote(locator) + ": character '" + std::string(1, locator[i]) +
                   "' at position " + std::to_string(i + 1) + " should be " + level.expected);
     }
     (i % 2 == 0 ? lon_units : lat_units) += *index * level.units;
