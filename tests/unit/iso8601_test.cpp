@@ -14,6 +14,7 @@
 #include <string>
 
 #include "azt/astro/time_scales.hpp"
+#include "test_support.hpp"
 
 namespace {
 
@@ -21,15 +22,8 @@ using azt::astro::format_iso8601_utc;
 using azt::astro::parse_iso8601_utc;
 using azt::astro::UtcInstant;
 
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
-
-UtcInstant calendar(int y, int mo, int d, int h, int mi, double s) {
-  auto r = UtcInstant::from_calendar(y, mo, d, h, mi, s);
-  EXPECT_TRUE(r.ok()) << r.error().message;
-  return r.ok() ? *r : UtcInstant{};
-}
+using azt::test::calendar;
+using azt::test::contains;
 
 double seconds_between(const UtcInstant& a, const UtcInstant& b) {
   return ((b.jd.jd1 - a.jd.jd1) + (b.jd.jd2 - a.jd.jd2)) * 86400.0;

@@ -10,6 +10,7 @@
 //    (Python datetime.timestamp()).
 
 #include "azt/astro/time_scales.hpp"
+#include "test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,15 +28,8 @@ using azt::astro::UtcInstant;
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
-
-UtcInstant calendar(int y, int mo, int d, int h, int mi, double s) {
-  auto r = UtcInstant::from_calendar(y, mo, d, h, mi, s);
-  EXPECT_TRUE(r.ok()) << r.error().message;
-  return r.ok() ? *r : UtcInstant{};
-}
+using azt::test::calendar;
+using azt::test::contains;
 
 // ---- UtcInstant::from_calendar --------------------------------------------------------------
 
