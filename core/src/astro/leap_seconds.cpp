@@ -1,4 +1,5 @@
 #include "azt/astro/leap_seconds.hpp"
+#include "azt/util/quote.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -115,8 +116,8 @@ std::optional<Error> add_data_line(std::string_view line, std::size_t line_no,
                                    std::vector<LeapSecondTable::Step>& steps) {
   const auto tokens = split_blanks(line.substr(0, line.find('#')), 2);
   if (tokens.size() != 2) {
-    return fail(line_error(line_no, "expected \"NTP_SECONDS TAI-UTC\", got \"" +
-                                        std::string(line.substr(0, kMaxQuotedChars)) + "\""));
+    return fail(line_error(
+        line_no, "expected \"NTP_SECONDS TAI-UTC\", got " + quote(line, kMaxQuotedChars)));
   }
   auto mjd = parse_ntp_day(tokens[0], line_no, "timestamp");
   if (!mjd) return mjd.error();
