@@ -90,6 +90,18 @@ SkySettings settings_from(const SkyOptions& o) {
   return s;
 }
 
+/// Self-echo Doppler on every band, four bands to a line.
+void print_band_table(const nlohmann::json& bands) {
+  std::cout << "  self-echo Doppler by band (MHz: Hz):";
+  int n = 0;
+  for (const auto& b : bands) {
+    std::cout << (n++ % 4 == 0 ? "\n   " : "") << std::setw(7) << b["band"].get<std::string>()
+              << ": " << std::showpos << std::fixed << std::setprecision(0) << std::setw(7)
+              << b["echo_doppler_hz"].get<double>() << std::noshowpos;
+  }
+  std::cout << '\n';
+}
+
 void print_text(const nlohmann::json& j) {
   std::cout << std::fixed << std::setprecision(4) << j["target"].get<std::string>() << " at "
             << j["utc"].get<std::string>() << " from " << j["observer"]["grid"].get<std::string>()
@@ -113,6 +125,7 @@ void print_text(const nlohmann::json& j) {
               << " MHz: " << std::showpos << j["echo_doppler_hz"].get<double>() << std::noshowpos
               << " Hz\n";
   }
+  if (j.contains("bands")) print_band_table(j["bands"]);
   if (j.contains("dx_echo_doppler_hz")) {
     std::cout << std::setprecision(1) << "  DX echo Doppler (" << j["dx"]["grid"].get<std::string>()
               << "): " << std::showpos << j["dx_echo_doppler_hz"].get<double>() << std::noshowpos
