@@ -38,16 +38,22 @@ std::string row(const TargetReport& r) {
   return out.str();
 }
 
-std::string moon_lines(const TargetReport& moon, const StationConfig& c) {
+/// `moon` now and `moon_later` one minute on: the Doppler drift an operator retunes for.
+std::string moon_lines(const TargetReport& moon, const TargetReport& moon_later,
+                       const StationConfig& c) {
   const auto& p = moon.observation.place;
   const double f = *c.sky.freq_mhz;
+  const double drift_hz_min =
+      astro::self_echo_doppler_hz(f, *moon_later.observation.place.range_rate_km_s) -
+      astro::self_echo_doppler_hz(f, *p.range_rate_km_s);
   std::ostringstream out;
   out << std::fixed << std::setprecision(0) << "\nMoon  distance " << *p.distance_km
       << " km   echo delay " << std::setprecision(3) << astro::echo_delay_s(*p.distance_km)
       << " s   range rate " << std::setprecision(1) << *p.range_rate_km_s * 1000.0 << " m/s\n"
       << "Echo  " << c.band_name << " band (" << std::setprecision(3) << f
       << " MHz): " << std::showpos << std::setprecision(0)
-      << astro::self_echo_doppler_hz(f, *p.range_rate_km_s) << " Hz" << std::noshowpos;
+      << astro::self_echo_doppler_hz(f, *p.range_rate_km_s) << " Hz (" << std::setprecision(1)
+      << drift_hz_min << " Hz/min)" << std::noshowpos << std::setprecision(0);
   if (moon.dx_range_rate_km_s) {
     out << "   DX " << c.sky.dx_grid << ": " << std::showpos
         << astro::dx_echo_doppler_hz(f, *p.range_rate_km_s, *moon.dx_range_rate_km_s) << " Hz"
@@ -66,7 +72,9 @@ std::string frame(const astro::Ephemeris& eph, const StationConfig& c,
       << std::fixed << std::setprecision(4) << c.sky.observer.lat_deg << ", "
       << c.sky.observer.lon_deg << ", " << std::setprecision(0) << c.sky.observer.height_m
       << " m)  ephemeris " << eph.name() << "  refraction "
-      << astro::to_string(c.sky.atmosphere.model) << "\n\n"
+      << astro::to_string(c.sky.atmosphere.model) << "\nTAI-UTC " << std::setprecision(0)
+      << snapshot.time().tai_minus_utc_s << " s  DUT1 " << std::showpos << std::setprecision(3)
+      << snapshot.time().dut1_s << std::noshowpos << " s  band " << c.band_name << "\n\n"
       << std::left << std::setw(20) << "target" << std::right << std::setw(8) << "az°"
       << std::setw(8) << "el°" << std::setw(8) << "geom°" << std::setw(10) << "RA°" << std::setw(9)
       << "Dec°" << '\n';
@@ -76,7 +84,10 @@ std::string frame(const astro::Ephemeris& eph, const StationConfig& c,
     out << row(r) << '\n';
     if (target.kind == astro::Target::Kind::Moon) moon = r;
   }
-  if (moon) out << moon_lines(*moon, c);
+  if (moon) {
+    const astro::UtcInstant later{astro::JulianDate{utc.jd.jd1, utc.jd.jd2 + 60.0 / 86400.0}};
+    out << moon_lines(*moon, SkySnapshot(eph, c.sky, later).observe(moon->target), c);
+  }
   return out.str();
 }
 
