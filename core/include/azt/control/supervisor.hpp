@@ -1,0 +1,78 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "azt/util/result.hpp"
+
+namespace azt::control {
+
+/// What stops an axis. Stale readings stop the motors for as long as they last; every other
+/// kind latches until clear().
+enum class FaultKind { None, StalePosition, Stall, Runaway, EncoderJump, EStop };
+
+std::string_view to_string(FaultKind kind);
+
+struct SupervisorConfig {
+  double stale_s = 0.2;             ///< no valid reading for this long stops the motors
+  double stall_window_s = 2.0;      ///< driven this long …
+  double stall_min_move_deg = 0.5;  ///< … and moved less than this: stalled
+  double driven_duty = 0.5;         ///< |duty| from which the axis counts as driven
+  double runaway_deg = 0.5;         ///< driven towards the goal yet the distance grew this much
+  double max_rate_deg_s = 1.5;      ///< fastest plausible axis speed
+  double jump_margin_deg = 0.2;     ///< tolerance above max_rate·Δt (backlash, quantization)
+  double jump_persist_s = 0.5;      ///< implausible readings for this long become a fault
+
+  static Result<SupervisorConfig> make(const SupervisorConfig& c);
+};
+
+/// The verdict for one tick.
+struct SupervisorVerdict {
+  bool allow_motion = false;           ///< false: drive the motor to zero now
+  std::optional<double> position_deg;  ///< the accepted reading, if any
+};
+
+/// The safety state machine of one axis (pure: time is a parameter, in seconds of a monotonic
+/// clock). Per tick, in this order: offer the new reading (if one arrived) with on_reading(),
+/// then call check() with the duty the controller wants and its distance to the goal. A fault
+/// detected in check() forbids motion in the same tick.
+class AxisSupervisor {
+ public:
+  explicit AxisSupervisor(const SupervisorConfig& config) : config_(config) {}
+
+  /// A new position reading at `now_s`. Returns false if it was rejected as an implausible jump
+  /// (the last good position stays in use).
+  bool on_reading(double now_s, double position_deg);
+
+  SupervisorVerdict check(double now_s, double duty, double distance_to_goal_deg);
+
+  /// The E-stop input went active: latches.
+  void emergency_stop(double now_s);
+
+  /// Clears a latched fault (an operator's decision); the motion history restarts. A cause that
+  /// persists (E-stop input still active, shaft still stuck) latches again on its next detection.
+  void clear();
+
+  [[nodiscard]] FaultKind fault() const { return fault_; }
+  [[nodiscard]] const std::string& reason() const { return reason_; }
+  [[nodiscard]] bool stale(double now_s) const;
+
+ private:
+  void latch(FaultKind kind, std::string reason);
+  void watch_motion(double now_s, double duty, double distance_to_goal_deg);
+
+  SupervisorConfig config_;
+  FaultKind fault_ = FaultKind::None;
+  std::string reason_;
+  std::optional<double> last_good_deg_;
+  double last_good_s_ = 0.0;
+  std::optional<double> first_rejected_s_;
+  // Motion watch: start of the present driven stretch, position and goal distance then.
+  std::optional<double> driven_since_s_;
+  double driven_start_deg_ = 0.0;
+  double driven_start_distance_deg_ = 0.0;
+  double driven_direction_ = 0.0;
+};
+
+}  // namespace azt::control

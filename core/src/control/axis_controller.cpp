@@ -1,0 +1,93 @@
+#include "azt/control/axis_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace azt::control {
+namespace {
+
+// Below this target rate the lead direction is meaningless (a target at its turning point).
+constexpr double kMinLeadRateDegS = 1e-5;
+
+double sign(double x) { return x < 0.0 ? -1.0 : 1.0; }
+
+bool finite_positive(double x) { return std::isfinite(x) && x > 0.0; }
+
+}  // namespace
+
+Result<AxisControlConfig> AxisControlConfig::make(const AxisControlConfig& c) {
+  if (!std::isfinite(c.window_deg) || c.window_deg < 0.0 || c.window_deg > 2.0) {
+    return fail("window_deg must be 0.0 to 2.0");
+  }
+  if (!finite_positive(c.lsb_deg) || c.lsb_deg > 1.0) return fail("lsb_deg must be in (0, 1]");
+  if (!finite_positive(c.fast_zone_deg)) return fail("fast_zone_deg must be positive");
+  if (!std::isfinite(c.tracking_speed) || c.tracking_speed <= 0.0 || c.tracking_speed > 1.0) {
+    return fail("tracking_speed must be in (0, 1]");
+  }
+  if (!finite_positive(c.max_rate_deg_s)) return fail("max_rate_deg_s must be positive");
+  if (!std::isfinite(c.ramp_s) || c.ramp_s < 0.0 || c.ramp_s > 30.0) {
+    return fail("ramp_s must be 0 to 30 s");
+  }
+  if (!std::isfinite(c.min_duty) || c.min_duty < 0.0 || c.min_duty >= 0.9) {
+    return fail("min_duty must be 0 to 0.9");
+  }
+  if (!finite_positive(c.time_constant_s) || c.time_constant_s > 10.0) {
+    return fail("time_constant_s must be in (0, 10] s");
+  }
+  return c;
+}
+
+double AxisController::goal_deg(double target_deg, double target_rate_deg_s) const {
+  if (!config_.lead || std::fabs(target_rate_deg_s) < kMinLeadRateDegS) return target_deg;
+  return target_deg + sign(target_rate_deg_s) * config_.window_deg;
+}
+
+double AxisController::approach_speed_deg_s(double error_deg, double distance_deg) const {
+  const double zone = std::fabs(error_deg) > config_.fast_zone_deg ? 1.0 : config_.tracking_speed;
+  double speed = zone * config_.max_rate_deg_s;
+  speed = std::min(speed, distance_deg / (4.0 * config_.time_constant_s));
+  if (config_.ramp_s > 0.0) {
+    const double accel_deg_s2 = config_.max_rate_deg_s / config_.ramp_s;
+    speed = std::min(speed, std::sqrt(2.0 * accel_deg_s2 * distance_deg));
+  }
+  return speed;
+}
+
+double AxisController::slew_duty(double wanted, double dt_s) {
+  if (config_.ramp_s <= 0.0) return duty_ = wanted;
+  const double step = dt_s / config_.ramp_s;
+  duty_ = std::clamp(wanted, duty_ - step, duty_ + step);
+  return duty_;
+}
+
+double AxisController::update(double target_deg, double position_deg, double target_rate_deg_s,
+                              double dt_s) {
+  if (!std::isfinite(target_deg) || !std::isfinite(position_deg) || !(dt_s > 0.0)) {
+    halt();
+    return 0.0;
+  }
+  const double error_deg = target_deg - position_deg;
+  if (!moving_) {
+    if (std::fabs(error_deg) <= config_.start_threshold_deg()) return slew_duty(0.0, dt_s);
+    moving_ = true;
+    ++starts_;
+  }
+  const double to_goal_deg = goal_deg(target_deg, target_rate_deg_s) - position_deg;
+  if (std::fabs(to_goal_deg) <= config_.lsb_deg) {
+    // Arrived: the approach speed is down to K·1 LSB, so cutting the duty now coasts < 1 LSB.
+    moving_ = false;
+    duty_ = 0.0;
+    return duty_;
+  }
+  const double speed = approach_speed_deg_s(error_deg, std::fabs(to_goal_deg));
+  const double magnitude =
+      config_.min_duty + (1.0 - config_.min_duty) * std::min(1.0, speed / config_.max_rate_deg_s);
+  return slew_duty(sign(to_goal_deg) * magnitude, dt_s);
+}
+
+void AxisController::halt() {
+  duty_ = 0.0;
+  moving_ = false;
+}
+
+}  // namespace azt::control
