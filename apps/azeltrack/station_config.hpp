@@ -15,6 +15,11 @@ struct StationConfig {
   std::vector<astro::Target> targets;  ///< Sun, Moon, then the listed sources
 };
 
+class ConfigFile;
+
+/// The station, sky and atmosphere tables of a parsed configuration file.
+StationConfig station_config_from(const ConfigFile& file);
+
 /// Reads and validates a TOML configuration file. Unknown keys, wrong types and out-of-range
 /// values are errors naming the key; throws UsageError.
 StationConfig load_station_config(const std::string& path);

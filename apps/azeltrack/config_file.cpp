@@ -1,0 +1,113 @@
+#include "config_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cli_error.hpp"
+
+namespace azt::app {
+namespace {
+
+bool allowed_key(std::string_view key, std::initializer_list<std::string_view> allowed) {
+  return std::find(allowed.begin(), allowed.end(), key) != allowed.end();
+}
+
+const toml::table* checked_table(const ConfigFile& file, const toml::node* node,
+                                 const std::string& name,
+                                 std::initializer_list<std::string_view> allowed) {
+  if (node == nullptr) return nullptr;
+  const toml::table* t = node->as_table();
+  if (t == nullptr) file.fail("[" + name + "] must be a table");
+  for (const auto& [key, value] : *t) {
+    if (!allowed_key(key.str(), allowed)) {
+      file.fail("unknown key [" + name + "]." + std::string(key.str()));
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+const toml::node* ConfigSection::node(std::string_view key) const {
+  return table_ == nullptr ? nullptr : table_->get(key);
+}
+
+bool ConfigSection::has(std::string_view key) const { return node(key) != nullptr; }
+
+void ConfigSection::fail(std::string_view key, const std::string& what) const {
+  file_.fail("[" + name_ + "]." + std::string(key) + " " + what);
+}
+
+std::optional<double> ConfigSection::number(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  auto v = n->value<double>();  // integers too
+  if (!v || !std::isfinite(*v)) fail(key, "must be a finite number");
+  return v;
+}
+
+std::optional<std::int64_t> ConfigSection::integer(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  if (!n->is_integer()) fail(key, "must be an integer");
+  return n->value<std::int64_t>();
+}
+
+std::optional<std::string> ConfigSection::text(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  auto v = n->value<std::string>();
+  if (!v) fail(key, "must be a string");
+  return v;
+}
+
+std::optional<bool> ConfigSection::boolean(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  if (!n->is_boolean()) fail(key, "must be true or false");
+  return n->value<bool>();
+}
+
+const toml::array* ConfigSection::array(std::string_view key) const {
+  const toml::node* n = node(key);
+  if (n == nullptr) return nullptr;
+  if (!n->is_array()) fail(key, "must be an array");
+  return n->as_array();
+}
+
+ConfigSection ConfigSection::child(std::string_view key,
+                                   std::initializer_list<std::string_view> allowed) const {
+  const std::string name = name_ + "." + std::string(key);
+  return ConfigSection(file_, checked_table(file_, node(key), name, allowed), name);
+}
+
+ConfigFile ConfigFile::load(const std::string& path) {
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source().begin;
+    throw UsageError("config " + path + ":" + std::to_string(where.line) + ":" +
+                     std::to_string(where.column) + ": " + std::string(e.description()));
+  }
+  ConfigFile file(path, std::move(root));
+  for (const auto& [key, value] : file.root_) {
+    if (!allowed_key(key.str(),
+                     {"station", "sky", "atmosphere", "control", "geometry", "park", "sim"})) {
+      file.fail("unknown table or key '" + std::string(key.str()) + "'");
+    }
+  }
+  return file;
+}
+
+ConfigSection ConfigFile::section(std::string_view name,
+                                  std::initializer_list<std::string_view> allowed) const {
+  const std::string n(name);
+  return ConfigSection(*this, checked_table(*this, root_.get(name), n, allowed), n);
+}
+
+void ConfigFile::fail(const std::string& what) const {
+  throw UsageError("config " + path_ + ": " + what);
+}
+
+}  // namespace azt::app
