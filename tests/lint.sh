@@ -6,11 +6,11 @@ set -euo pipefail
 src=${1:?usage: lint.sh SOURCE_DIR BUILD_DIR}
 build=${2:?usage: lint.sh SOURCE_DIR BUILD_DIR}
 cd "$src"
-mapfile -t files < <(find core apps tests bench -name '*.cpp' -o -name '*.hpp' | sort)
+mapfile -t files < <(find core platform apps tests bench fuzz -name '*.cpp' -o -name '*.hpp' | sort)
 [ ${#files[@]} -gt 10 ] || { echo "lint: found only ${#files[@]} files" >&2; exit 1; }
 clang-format --dry-run --Werror "${files[@]}"
 echo "lint: clang-format clean on ${#files[@]} files"
-mapfile -t tidy < <(find core/src apps -name '*.cpp' | sort)
+mapfile -t tidy < <(find core/src platform/*/src apps -name '*.cpp' | sort)
 out=$(printf '%s\n' "${tidy[@]}" |
   # GCC-only flags in compile_commands.json (-Wno-restrict) are unknown to clang: ignore them.
   xargs -P 2 -n 4 clang-tidy -p "$build" --quiet --warnings-as-errors='*' \

@@ -13,6 +13,8 @@ using Runner = std::function<int()>;
 Runner add_sky_command(CLI::App& app);
 Runner add_locator_command(CLI::App& app);
 Runner add_watch_command(CLI::App& app);
+Runner add_simulate_command(CLI::App& app);
+Runner add_hub_command(CLI::App& app);
 
 /// Parses a finite decimal number given to `option`; throws UsageError otherwise
 /// (CLI11 would accept "nan" and "inf").

@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   const azt::app::Runner sky = azt::app::add_sky_command(app);
   const azt::app::Runner locator = azt::app::add_locator_command(app);
   const azt::app::Runner watch = azt::app::add_watch_command(app);
+  const azt::app::Runner simulate = azt::app::add_simulate_command(app);
+  const azt::app::Runner hub = azt::app::add_hub_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
@@ -49,6 +51,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("sky")) return sky();
     if (app.got_subcommand("locator")) return locator();
     if (app.got_subcommand("watch")) return watch();
+    if (app.got_subcommand("simulate")) return simulate();
+    if (app.got_subcommand("hub")) return hub();
   } catch (const azt::app::UsageError& e) {
     azt::app::print_error(e.what());
     return azt::app::kExitUsage;

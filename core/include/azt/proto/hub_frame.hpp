@@ -8,7 +8,7 @@
 // byte, not an extra delimiter. Decoded payloads:
 //
 //   seed version (5 bytes):  EncBITS, EL_hi, EL_lo, AZ_hi, AZ_lo
-//   CRC-8 version (6 bytes): the same five bytes, then CRC-8/SMBUS over them
+//   CRC-8 version (6 bytes): the same five bytes, then CRC-8/AUTOSAR over them
 //
 // EncBITS = AZ nibble << 4 | EL nibble; a nibble holds the resolution in bits, 9..15 as is and 16
 // as 0 (16 does not fit in a nibble; 1..8 are invalid). Raw values are big-endian, right-aligned,
@@ -133,22 +133,30 @@ inline double hub_raw_to_deg(uint16_t raw, uint8_t bits) {
   return static_cast<double>(raw) * hub_resolution_deg(bits);
 }
 
-/// CRC-8/SMBUS: polynomial 0x07, initial value 0, no reflection, no final XOR; check value 0xF4
-/// for the ASCII bytes "123456789" (Greg Cook, "Catalogue of parametrised CRC algorithms").
-/// 0x07 detects every error burst up to 8 bits and every error of up to 3 bits in codewords up to
-/// 119 bits (Koopman & Chakravarty, DSN 2004, polynomial 0x83 in their notation); ours are 48.
+/// CRC-8/AUTOSAR (the AUTOSAR E2E "CRC8H2F"): polynomial 0x2F, initial value 0xFF, no
+/// reflection, final XOR 0xFF; check value 0xDF for the ASCII bytes "123456789", residue 0x42
+/// (Greg Cook, "Catalogue of parametrised CRC algorithms"). Why this one:
+/// - it detects every error burst up to 8 bits, so any one corrupted data byte, and every error
+///   of up to 3 bits in our 48-bit codeword (Hamming distance 4, as Koopman & Chakravarty, DSN
+///   2004, list for 0x97 in their notation);
+/// - a corrupted COBS code byte re-parses the chunk instead, and the payload error it makes is
+///   built from code-chain hop lengths. Polynomial 0x07 (CRC-8/SMBUS, CRC-8/I-432-1) misses some
+///   of those; 0x2F misses none, so no single corrupted byte on the wire gets through (both
+///   checked exhaustively in tests/unit/hub_frame_test.cpp);
+/// - the initial value and final XOR keep an all-zero payload from having CRC 0, so a zeroed
+///   buffer, or seven 0x01 bytes on the line, is not a valid 0/0 reading.
 /// Bitwise rather than table-driven: 40 iterations per frame, and no 256-byte table in AVR flash.
 constexpr uint8_t hub_crc8(const uint8_t* data, size_t size) {
-  uint8_t crc = 0;
+  uint8_t crc = 0xFF;
   for (size_t i = 0; i < size; ++i) {
     crc = static_cast<uint8_t>(crc ^ data[i]);
     for (int bit = 0; bit < 8; ++bit) {
       const bool top = (crc & 0x80U) != 0;
       crc = static_cast<uint8_t>(crc << 1U);
-      if (top) crc = static_cast<uint8_t>(crc ^ 0x07U);
+      if (top) crc = static_cast<uint8_t>(crc ^ 0x2FU);
     }
   }
-  return crc;
+  return static_cast<uint8_t>(crc ^ 0xFFU);
 }
 
 /// COBS-encodes `size` payload bytes into `out` WITHOUT the trailing delimiter.
@@ -297,16 +305,16 @@ struct HubCounters {
   /// a fault", OnStepX) should count. Empty chunks and the one unsynced start-up chunk are not
   /// link errors.
   uint32_t rejected() const {
-    return overlong + wrong_length + bad_cobs + wrong_version + bad_crc + bad_nibble +
-           out_of_range;
+    return overlong + wrong_length + bad_cobs + wrong_version + bad_crc + bad_nibble + out_of_range;
   }
   uint32_t chunks() const { return frames_ok() + rejected() + empty + unsynced; }
 };
 
 /// Where a new or reset decoder starts.
-/// AwaitDelimiter: discard everything up to the first 0x00, as the seed's controller does ("searches
-/// for the frame_end delimiter character"): on a live serial port the first bytes are usually the
-/// tail of a frame. InSync: the input starts at a frame boundary (a capture file, a test, a pipe).
+/// AwaitDelimiter: discard everything up to the first 0x00, as the seed's controller does
+/// ("searches for the frame_end delimiter character"): on a live serial port the first bytes are
+/// usually the tail of a frame. InSync: the input starts at a frame boundary (a capture file, a
+/// test, a pipe).
 enum class HubSync : uint8_t { AwaitDelimiter, InSync };
 
 /// Streaming decoder: push bytes as they arrive; a fixed 7-byte buffer, no heap.
@@ -336,7 +344,8 @@ class HubDecoder {
       return HubFrameStatus::Pending;
     }
     const HubFrameStatus status = finish_chunk(out);
-    count(status);
+    uint32_t* counter = counter_for(counters_, status, out);
+    if (counter != nullptr) ++*counter;
     state_ = State::Collecting;
     length_ = 0;
     had_bytes_ = false;
@@ -368,28 +377,33 @@ class HubDecoder {
     return decode_hub_chunk(buffer_, length_, accept_, out);
   }
 
-  void count(HubFrameStatus status) {
-    HubCounters& c = counters_;
+  /// The counter an outcome adds one to; none for Pending. `frame` is read only on Ok.
+  static uint32_t* counter_for(HubCounters& c, HubFrameStatus status, const HubFrame& frame) {
     switch (status) {
-      case HubFrameStatus::Pending: break;
-      case HubFrameStatus::Ok: break;  // counted by version below
-      case HubFrameStatus::Empty: ++c.empty; break;
-      case HubFrameStatus::Unsynced: ++c.unsynced; break;
-      case HubFrameStatus::Overlong: ++c.overlong; break;
-      case HubFrameStatus::WrongLength: ++c.wrong_length; break;
-      case HubFrameStatus::BadCobs: ++c.bad_cobs; break;
-      case HubFrameStatus::WrongVersion: ++c.wrong_version; break;
-      case HubFrameStatus::BadCrc: ++c.bad_crc; break;
-      case HubFrameStatus::BadNibble: ++c.bad_nibble; break;
-      case HubFrameStatus::OutOfRange: ++c.out_of_range; break;
+      case HubFrameStatus::Pending:
+        return nullptr;
+      case HubFrameStatus::Ok:
+        return frame.version == HubFrameVersion::Crc8 ? &c.frames_crc8 : &c.frames_seed;
+      case HubFrameStatus::Empty:
+        return &c.empty;
+      case HubFrameStatus::Unsynced:
+        return &c.unsynced;
+      case HubFrameStatus::Overlong:
+        return &c.overlong;
+      case HubFrameStatus::WrongLength:
+        return &c.wrong_length;
+      case HubFrameStatus::BadCobs:
+        return &c.bad_cobs;
+      case HubFrameStatus::WrongVersion:
+        return &c.wrong_version;
+      case HubFrameStatus::BadCrc:
+        return &c.bad_crc;
+      case HubFrameStatus::BadNibble:
+        return &c.bad_nibble;
+      case HubFrameStatus::OutOfRange:
+        return &c.out_of_range;
     }
-    if (status == HubFrameStatus::Ok) {
-      if (length_ == kHubCrc8EncodedBytes) {
-        ++c.frames_crc8;
-      } else {
-        ++c.frames_seed;
-      }
-    }
+    return nullptr;
   }
 
   HubAccept accept_;
@@ -404,17 +418,28 @@ class HubDecoder {
 /// Short names for logs and JSON ("ok", "bad_crc", ...), matching the HubCounters fields.
 inline const char* hub_status_name(HubFrameStatus status) {
   switch (status) {
-    case HubFrameStatus::Pending: return "pending";
-    case HubFrameStatus::Ok: return "ok";
-    case HubFrameStatus::Empty: return "empty";
-    case HubFrameStatus::Unsynced: return "unsynced";
-    case HubFrameStatus::Overlong: return "overlong";
-    case HubFrameStatus::WrongLength: return "wrong_length";
-    case HubFrameStatus::BadCobs: return "bad_cobs";
-    case HubFrameStatus::WrongVersion: return "wrong_version";
-    case HubFrameStatus::BadCrc: return "bad_crc";
-    case HubFrameStatus::BadNibble: return "bad_nibble";
-    case HubFrameStatus::OutOfRange: return "out_of_range";
+    case HubFrameStatus::Pending:
+      return "pending";
+    case HubFrameStatus::Ok:
+      return "ok";
+    case HubFrameStatus::Empty:
+      return "empty";
+    case HubFrameStatus::Unsynced:
+      return "unsynced";
+    case HubFrameStatus::Overlong:
+      return "overlong";
+    case HubFrameStatus::WrongLength:
+      return "wrong_length";
+    case HubFrameStatus::BadCobs:
+      return "bad_cobs";
+    case HubFrameStatus::WrongVersion:
+      return "wrong_version";
+    case HubFrameStatus::BadCrc:
+      return "bad_crc";
+    case HubFrameStatus::BadNibble:
+      return "bad_nibble";
+    case HubFrameStatus::OutOfRange:
+      return "out_of_range";
   }
   return "unknown";
 }

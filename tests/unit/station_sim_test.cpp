@@ -1,0 +1,123 @@
+// The control loop closed around the simulated antenna (plants, EncoderHub frames, decoder,
+// supervisor, controller) in virtual time, on the control issue's reference plant:
+// az 1.5°/s, el 1.0°/s, τ 0.3 s, backlash 0.05°, stiction 0.1.
+#include "azt/sim/station_sim.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace azt::sim {
+namespace {
+
+StationSimSetup reference(int bits, double window_deg, bool lead = true) {
+  StationSimSetup s;
+  s.az_plant.max_rate_deg_s = 1.5;
+  s.el_plant.max_rate_deg_s = 1.0;
+  for (AxisParams* p : {&s.az_plant, &s.el_plant}) {
+    p->time_constant_s = 0.3;
+    p->backlash_deg = 0.05;
+    p->stiction_duty = 0.1;
+    p->encoder_bits = static_cast<std::uint8_t>(bits);
+  }
+  s.az_plant.min_deg = 0.0;
+  s.az_plant.max_deg = 360.0;
+  s.az_plant.start_deg = 100.0;
+  s.el_plant.min_deg = 0.0;
+  s.el_plant.max_deg = 90.0;
+  s.el_plant.start_deg = 20.0;
+  const double lsb = 360.0 / std::ldexp(1.0, bits);
+  for (auto [c, p] :
+       {std::pair{&s.az_control, &s.az_plant}, std::pair{&s.el_control, &s.el_plant}}) {
+    c->window_deg = window_deg;
+    c->lsb_deg = lsb;
+    c->max_rate_deg_s = p->max_rate_deg_s;
+    c->time_constant_s = p->time_constant_s;
+    c->min_duty = p->stiction_duty;
+    c->lead = lead;
+  }
+  s.az_supervisor.max_rate_deg_s = 1.5;
+  s.el_supervisor.max_rate_deg_s = 1.0;
+  return s;
+}
+
+/// A target moving like the Moon across the southern sky: 15°/h in azimuth, 5°/h in elevation.
+SkyTrack moon_like() {
+  return [](double t_s) {
+    return std::optional<control::AzEl>(
+        control::AzEl{120.0 + t_s * 15.0 / 3600.0, 25.0 + t_s * 5.0 / 3600.0});
+  };
+}
+
+class Tracking : public ::testing::TestWithParam<std::tuple<int, double>> {};
+
+TEST_P(Tracking, StaysWithinTheWindowPlusTwoLsbAndStartsRarely) {
+  const auto [bits, window] = GetParam();
+  const StationSimSetup setup = reference(bits, window);
+  const SimResult r = simulate_tracking(setup, moon_like(), 3600.0);
+  const double lsb = 360.0 / std::ldexp(1.0, bits);
+  ASSERT_TRUE(r.acquired_s.has_value());
+  EXPECT_TRUE(r.faults.empty()) << r.faults.front();
+  EXPECT_LE(r.max_error_deg, window + 2.0 * lsb) << "bits " << bits << " window " << window;
+  // The seed's algorithm restarts every L2 of travel (a few more for the acquisition and for
+  // counts that flicker at the stop). Leading the target by the window swings the error across
+  // 2·window + 1 LSB per start: half the starts when the window is large against the LSB.
+  const double l2 = window + lsb;
+  EXPECT_LE(static_cast<double>(r.az.starts), r.az.travel_deg / l2 + 5.0);
+  EXPECT_LE(static_cast<double>(r.el.starts), r.el.travel_deg / l2 + 5.0);
+  if (window > 0.0) {
+    const double swing = 2.0 * window + lsb;
+    EXPECT_LE(static_cast<double>(r.az.starts), 1.1 * r.az.travel_deg / swing + 2.0);
+    EXPECT_LE(static_cast<double>(r.el.starts), 1.1 * r.el.travel_deg / swing + 2.0);
+  }
+  EXPECT_EQ(r.hub.frames_ok(), static_cast<std::uint32_t>(std::llround(3600.0 / setup.tick_s)));
+}
+
+INSTANTIATE_TEST_SUITE_P(BitsAndWindows, Tracking,
+                         ::testing::Combine(::testing::Values(12, 16),
+                                            ::testing::Values(0.0, 0.1, 0.5)));
+
+TEST(Slew, HalfTurnInAzimuthNearTheMinimumTimeWithoutOvershoot) {
+  for (int bits : {12, 16}) {
+    const StationSimSetup setup = reference(bits, 0.0);
+    const SimResult r = simulate_slew(setup, control::AzEl{280.0, 20.0}, 600.0);
+    const double lsb = 360.0 / std::ldexp(1.0, bits);
+    ASSERT_TRUE(r.slew_time_s.has_value());
+    EXPECT_NEAR(r.slew_min_time_s, 180.0 / 1.5, 1e-9);
+    EXPECT_LE(*r.slew_time_s, 1.10 * r.slew_min_time_s + setup.az_control.ramp_s) << bits;
+    EXPECT_LE(r.az.overshoot_deg, lsb) << bits;
+    EXPECT_LE(r.max_error_deg, 2.0 * lsb) << bits;
+    EXPECT_TRUE(r.faults.empty());
+  }
+}
+
+TEST(Slew, OverlapRotatorGoesThroughNorthTheShortWay) {
+  StationSimSetup setup = reference(12, 0.0);
+  setup.az_range = control::AzimuthRange{0.0, 450.0};
+  setup.az_plant.max_deg = 450.0;
+  setup.az_plant.start_deg = 350.0;
+  const SimResult r = simulate_slew(setup, control::AzEl{20.0, 20.0}, 600.0);
+  ASSERT_TRUE(r.slew_time_s.has_value());
+  EXPECT_LT(*r.slew_time_s, 30.0);  // 30° the short way, not 330° back
+}
+
+TEST(Faults, CorruptLinkWithCrcStillTracks) {
+  StationSimSetup setup = reference(12, 0.1);
+  setup.link.byte_corruption = 0.05;
+  setup.link.frame_loss = 0.05;
+  const SimResult r = simulate_tracking(setup, moon_like(), 1800.0);
+  EXPECT_TRUE(r.faults.empty()) << r.faults.front();
+  EXPECT_LE(r.max_error_deg, 0.1 + 2.0 * 360.0 / 4096.0);
+  EXPECT_GT(r.hub.rejected(), 0u);
+}
+
+TEST(Faults, LostLinkStopsTheMotorsWithoutLatching) {
+  StationSimSetup setup = reference(12, 0.0);
+  setup.link.frame_loss = 1.0;
+  const SimResult r = simulate_slew(setup, control::AzEl{280.0, 60.0}, 20.0);
+  EXPECT_GT(r.max_error_deg, 100.0);  // never moved
+  EXPECT_TRUE(r.faults.empty());
+}
+
+}  // namespace
+}  // namespace azt::sim
