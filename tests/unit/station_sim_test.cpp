@@ -121,3 +121,48 @@ TEST(Faults, LostLinkStopsTheMotorsWithoutLatching) {
 
 }  // namespace
 }  // namespace azt::sim
+
+namespace azt::sim {
+namespace {
+
+SimResult slew_with_fault(AxisFaultKind kind, bool azimuth, std::int32_t counts = 0) {
+  StationSimSetup setup = reference(12, 0.0);
+  setup.plant_faults.push_back(ScheduledFault{5.0, azimuth, AxisFault{kind, counts}});
+  return simulate_slew(setup, control::AzEl{280.0, 60.0}, 200.0);
+}
+
+bool has_fault(const SimResult& r, const std::string& what) {
+  for (const auto& f : r.faults) {
+    if (f.find(what) != std::string::npos) return true;
+  }
+  return false;
+}
+
+TEST(Faults, FrozenShaftLatchesAStallAndStopsTheMotor) {
+  const SimResult r = slew_with_fault(AxisFaultKind::FrozenShaft, true);
+  EXPECT_TRUE(has_fault(r, "az: stall")) << (r.faults.empty() ? "" : r.faults.front());
+  EXPECT_EQ(r.max_duty_after_fault, 0.0);
+  EXPECT_GT(r.az.max_error_deg, 100.0);  // stopped where it froze, never "arrived"
+}
+
+TEST(Faults, ReversedMotorLatchesARunaway) {
+  const SimResult r = slew_with_fault(AxisFaultKind::ReversedMotor, false);
+  EXPECT_TRUE(has_fault(r, "el: runaway")) << (r.faults.empty() ? "" : r.faults.front());
+  EXPECT_EQ(r.max_duty_after_fault, 0.0);
+}
+
+TEST(Faults, SlippedEncoderLatchesAJump) {
+  const SimResult r = slew_with_fault(AxisFaultKind::EncoderOffset, true, 1000);  // 88°
+  EXPECT_TRUE(has_fault(r, "az: encoder_jump")) << (r.faults.empty() ? "" : r.faults.front());
+  EXPECT_EQ(r.max_duty_after_fault, 0.0);
+}
+
+TEST(Faults, OneGlitchIsIgnored) {
+  const SimResult r = slew_with_fault(AxisFaultKind::EncoderGlitch, true, 1000);
+  EXPECT_TRUE(r.faults.empty()) << r.faults.front();
+  ASSERT_TRUE(r.slew_time_s.has_value());
+  EXPECT_LE(r.max_error_deg, 2.0 * 360.0 / 4096.0);
+}
+
+}  // namespace
+}  // namespace azt::sim

@@ -81,12 +81,15 @@ void AxisSupervisor::watch_motion(double now_s, double duty, double distance_to_
   if (!driven_since_s_) {
     driven_since_s_ = now_s;
     driven_start_deg_ = *last_good_deg_;
-    driven_start_distance_deg_ = std::fabs(distance_to_goal_deg);
+    driven_min_distance_deg_ = std::fabs(distance_to_goal_deg);
     driven_direction_ = direction;
     return;
   }
   const double elapsed_s = now_s - *driven_since_s_;
-  if (std::fabs(distance_to_goal_deg) - driven_start_distance_deg_ > config_.runaway_deg) {
+  // Against the closest approach so far: a motor that reverses mid-move is caught as soon as the
+  // distance has grown by runaway_deg, not only once it exceeds where the window started.
+  driven_min_distance_deg_ = std::min(driven_min_distance_deg_, std::fabs(distance_to_goal_deg));
+  if (std::fabs(distance_to_goal_deg) - driven_min_distance_deg_ > config_.runaway_deg) {
     latch(FaultKind::Runaway, "driven towards the goal for " + format_number(elapsed_s) +
                                   " s but the distance grew by more than " +
                                   format_number(config_.runaway_deg) + " deg (motor reversed?)");
@@ -102,7 +105,7 @@ void AxisSupervisor::watch_motion(double now_s, double duty, double distance_to_
   // Healthy: start a new observation window from here.
   driven_since_s_ = now_s;
   driven_start_deg_ = *last_good_deg_;
-  driven_start_distance_deg_ = std::fabs(distance_to_goal_deg);
+  driven_min_distance_deg_ = std::fabs(distance_to_goal_deg);
 }
 
 SupervisorVerdict AxisSupervisor::check(double now_s, double duty, double distance_to_goal_deg) {

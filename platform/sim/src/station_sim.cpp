@@ -60,6 +60,7 @@ class StationLoop {
 
   /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
   void tick(double t_s, const std::optional<AzEl>& demand, const AzEl& rate_deg_s) {
+    inject_due_faults(t_s);
     transmit_frame(t_s);
     drive(az_, t_s,
           demand
@@ -69,6 +70,11 @@ class StationLoop {
     drive(el_, t_s,
           demand ? control::plan_elevation(demand->el_deg, setup_.el_range) : std::nullopt,
           rate_deg_s.el_deg);
+    for (const Axis* axis : {&az_, &el_}) {
+      if (axis->supervisor.fault() != control::FaultKind::None) {
+        max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(axis->controller.duty()));
+      }
+    }
     const double dt = setup_.tick_s / setup_.plant_substeps;
     for (int i = 0; i < setup_.plant_substeps; ++i) {
       az_.plant.step(az_.controller.duty(), dt);
@@ -76,6 +82,7 @@ class StationLoop {
     }
   }
 
+  [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
   Axis& az() { return az_; }
   Axis& el() { return el_; }
   [[nodiscard]] const proto::HubDecoder& decoder() const { return decoder_; }
@@ -93,6 +100,14 @@ class StationLoop {
   }
 
  private:
+  void inject_due_faults(double t_s) {
+    for (; next_fault_ < setup_.plant_faults.size() && setup_.plant_faults[next_fault_].at_s <= t_s;
+         ++next_fault_) {
+      const ScheduledFault& f = setup_.plant_faults[next_fault_];
+      (f.azimuth ? az_ : el_).plant.inject(f.fault);
+    }
+  }
+
   static proto::HubAccept accept_for(proto::HubFrameVersion v) {
     return v == proto::HubFrameVersion::Crc8 ? proto::HubAccept::Crc8Only
                                              : proto::HubAccept::SeedOnly;
@@ -150,6 +165,8 @@ class StationLoop {
   proto::HubDecoder decoder_;
   std::mt19937_64 rng_;
   bool link_started_ = false;
+  std::size_t next_fault_ = 0;  ///< plant_faults are sorted by time
+  double max_duty_after_fault_ = 0.0;
 };
 
 AxisMetrics finish_axis(const Accumulator& acc, const Axis& axis, double hours, double travel) {
@@ -216,6 +233,7 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
   result.max_error_deg = pooled.max_abs;
   result.simulated_s = static_cast<double>(ticks) * setup.tick_s;
   result.hub = loop.decoder().counters();
+  result.max_duty_after_fault = loop.max_duty_after_fault();
   return result;
 }
 
@@ -257,6 +275,7 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
   result.el.starts = loop.el().controller.starts();
   result.simulated_s = static_cast<double>(k) * setup.tick_s;
   result.hub = loop.decoder().counters();
+  result.max_duty_after_fault = loop.max_duty_after_fault();
   return result;
 }
 

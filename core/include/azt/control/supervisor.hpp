@@ -68,10 +68,11 @@ class AxisSupervisor {
   std::optional<double> last_good_deg_;
   double last_good_s_ = 0.0;
   std::optional<double> first_rejected_s_;
-  // Motion watch: start of the present driven stretch, position and goal distance then.
+  // Motion watch: start of the present driven stretch, the position then, and the closest the
+  // axis has come to its goal since.
   std::optional<double> driven_since_s_;
   double driven_start_deg_ = 0.0;
-  double driven_start_distance_deg_ = 0.0;
+  double driven_min_distance_deg_ = 0.0;
   double driven_direction_ = 0.0;
 };
 

@@ -78,7 +78,7 @@ constexpr uint8_t kHubMaxBits = 16;
 /// Payload sizes, decoded.
 constexpr size_t kHubSeedPayloadBytes = 5;
 constexpr size_t kHubCrc8PayloadBytes = 6;
-/// COBS adds one code byte to a payload shorter than 254 bytes (Cheshire & Baker, section 3).
+/// COBS adds one code byte to a payload shorter than 254 bytes (Cheshire & Baker).
 constexpr size_t kHubSeedEncodedBytes = kHubSeedPayloadBytes + 1;
 constexpr size_t kHubCrc8EncodedBytes = kHubCrc8PayloadBytes + 1;
 /// Whole frames, delimiter included: the seed's DATA[7], and ours.
@@ -137,8 +137,8 @@ inline double hub_raw_to_deg(uint16_t raw, uint8_t bits) {
 /// reflection, final XOR 0xFF; check value 0xDF for the ASCII bytes "123456789", residue 0x42
 /// (Greg Cook, "Catalogue of parametrised CRC algorithms"). Why this one:
 /// - it detects every error burst up to 8 bits, so any one corrupted data byte, and every error
-///   of up to 3 bits in our 48-bit codeword (Hamming distance 4, as Koopman & Chakravarty, DSN
-///   2004, list for 0x97 in their notation);
+///   of up to 3 bits in our 48-bit codeword (Hamming distance 4; 0x97 in the notation of Koopman
+///   & Chakravarty, DSN 2004, whose tables compare 8-bit polynomials this way);
 /// - a corrupted COBS code byte re-parses the chunk instead, and the payload error it makes is
 ///   built from code-chain hop lengths. Polynomial 0x07 (CRC-8/SMBUS, CRC-8/I-432-1) misses some
 ///   of those; 0x2F misses none, so no single corrupted byte on the wire gets through (both

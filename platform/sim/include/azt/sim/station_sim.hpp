@@ -21,6 +21,13 @@ struct LinkFaults {
   double byte_corruption = 0.0;  ///< each byte replaced by a random one
 };
 
+/// A plant fault that starts at a given simulated time.
+struct ScheduledFault {
+  double at_s = 0.0;
+  bool azimuth = true;  ///< false: the elevation axis
+  AxisFault fault;
+};
+
 /// One simulated station: two plants behind a simulated EncoderHub, the real controllers and
 /// supervisors, in virtual time.
 struct StationSimSetup {
@@ -36,7 +43,8 @@ struct StationSimSetup {
   int plant_substeps = 5;  ///< plant integration steps per tick
   proto::HubFrameVersion frame_version = proto::HubFrameVersion::Crc8;
   LinkFaults link;
-  std::uint64_t seed = 1;  ///< for the link faults
+  std::vector<ScheduledFault> plant_faults;  ///< sorted by at_s
+  std::uint64_t seed = 1;                    ///< for the link faults
 };
 
 /// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
@@ -60,8 +68,11 @@ struct SimResult {
   std::optional<double> slew_time_s;  ///< slew scenario: until both axes came to rest there
   double slew_min_time_s = 0.0;       ///< distance / max rate of the slower axis
   double simulated_s = 0.0;
-  std::vector<std::string> faults;  ///< "az: stall: …"
-  proto::HubCounters hub{};         ///< the decoder's counters after the run
+  std::vector<std::string> faults;  ///< "az: stall at 12.3 s: …"
+  /// The largest |duty| applied to an axis after its supervisor latched a fault (must be 0: the
+  /// motors stop in the tick that detects it).
+  double max_duty_after_fault = 0.0;
+  proto::HubCounters hub{};  ///< the decoder's counters after the run
 };
 
 /// Tracks `sky` for `duration_s`. Errors are the true shaft positions against the target, counted
