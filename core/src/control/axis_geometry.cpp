@@ -34,7 +34,8 @@ double plan_azimuth(double current_mount_deg, double target_sky_deg, const Azimu
   const double base = wrap_360(target_sky_deg);
   const double first = base + 360.0 * std::ceil((range.min_deg - base) / 360.0);
   double best = first;
-  for (double candidate = first; candidate <= range.max_deg; candidate += 360.0) {
+  for (int k = 1; first + 360.0 * k <= range.max_deg; ++k) {
+    const double candidate = first + 360.0 * k;
     if (std::fabs(candidate - current_mount_deg) < std::fabs(best - current_mount_deg)) {
       best = candidate;
     }
