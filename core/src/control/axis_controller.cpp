@@ -79,10 +79,15 @@ double AxisController::update(double target_deg, double position_deg, double tar
     duty_ = 0.0;
     return duty_;
   }
-  const double speed = approach_speed_deg_s(error_deg, std::fabs(to_goal_deg));
+  // Feed-forward of the target's own rate: without it a proportional approach lags a moving goal
+  // by rate/K (≈ 1 LSB of a 16-bit encoder at the Moon's 15°/h) and never quite arrives.
+  const double velocity =
+      std::clamp(sign(to_goal_deg) * approach_speed_deg_s(error_deg, std::fabs(to_goal_deg)) +
+                     target_rate_deg_s,
+                 -config_.max_rate_deg_s, config_.max_rate_deg_s);
   const double magnitude =
-      config_.min_duty + (1.0 - config_.min_duty) * std::min(1.0, speed / config_.max_rate_deg_s);
-  return slew_duty(sign(to_goal_deg) * magnitude, dt_s);
+      config_.min_duty + (1.0 - config_.min_duty) * std::fabs(velocity) / config_.max_rate_deg_s;
+  return slew_duty(sign(velocity) * magnitude, dt_s);
 }
 
 void AxisController::halt() {

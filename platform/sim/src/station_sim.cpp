@@ -42,8 +42,10 @@ struct Axis {
   double mount_deg = 0.0;  ///< last accepted reading, in mount degrees
   bool fault_reported = false;
 
-  Axis(const AxisParams& p, control::AxisControlConfig c, const control::SupervisorConfig& s)
-      : plant(p), controller((c.lsb_deg = lsb_deg(p), c)), supervisor(s) {}
+  Axis(const AxisParams& p, control::AxisControlConfig c, control::SupervisorConfig s)
+      : plant(p),
+        controller((c.lsb_deg = lsb_deg(p), c)),
+        supervisor((s.jump_margin_deg = std::max(s.jump_margin_deg, 2.0 * lsb_deg(p)), s)) {}
 };
 
 class StationLoop {

@@ -37,7 +37,8 @@ struct AxisControlConfig {
 ///
 /// Deceleration is planned so the axis neither overshoots nor hunts: the commanded speed is the
 /// least of the zone speed, K·d with K = 1/(4τ) (critical damping of a first-order motor under
-/// position feedback), and √(2·a·d) with a the ramp's acceleration. The stiction is compensated
+/// position feedback), and √(2·a·d) with a the ramp's acceleration, plus the target's own rate
+/// (feed-forward, so a moving goal is reached instead of chased). The stiction is compensated
 /// (duty = min_duty + (1 − min_duty)·v/v_max) so that slow final approach speeds still turn the
 /// motor; the duty changes by at most dt/ramp_s per tick (soft start and soft stop).
 class AxisController {
