@@ -42,6 +42,7 @@ StationSimSetup reference(int bits, double window_deg) {
     c->max_rate_deg_s = p->max_rate_deg_s;
     c->time_constant_s = p->time_constant_s;
     c->min_duty = p->stiction_duty;
+    c->backlash_deg = p->backlash_deg;
   }
   s.az_supervisor.max_rate_deg_s = 1.5;
   s.el_supervisor.max_rate_deg_s = 1.0;

@@ -36,6 +36,7 @@ control::AxisControlConfig control_for(const ConfigSection& c, const sim::AxisPa
   a.max_rate_deg_s = plant.max_rate_deg_s;
   a.time_constant_s = plant.time_constant_s;
   a.min_duty = plant.stiction_duty;
+  a.backlash_deg = plant.backlash_deg;
   a.lsb_deg = 360.0 / std::ldexp(1.0, plant.encoder_bits);
   auto ok = control::AxisControlConfig::make(a);
   if (!ok) c.fail("window_deg", ok.error().message);

@@ -34,6 +34,7 @@ StationSimSetup reference(int bits, double window_deg, bool lead = true) {
     c->max_rate_deg_s = p->max_rate_deg_s;
     c->time_constant_s = p->time_constant_s;
     c->min_duty = p->stiction_duty;
+    c->backlash_deg = p->backlash_deg;
     c->lead = lead;
   }
   s.az_supervisor.max_rate_deg_s = 1.5;

@@ -34,6 +34,9 @@ Result<AxisControlConfig> AxisControlConfig::make(const AxisControlConfig& c) {
   if (!finite_positive(c.time_constant_s) || c.time_constant_s > 10.0) {
     return fail("time_constant_s must be in (0, 10] s");
   }
+  if (!std::isfinite(c.backlash_deg) || c.backlash_deg < 0.0 || c.backlash_deg > 5.0) {
+    return fail("backlash_deg must be 0 to 5");
+  }
   return c;
 }
 
@@ -79,12 +82,17 @@ double AxisController::update(double target_deg, double position_deg, double tar
     duty_ = 0.0;
     return duty_;
   }
+  if (sign(to_goal_deg) != direction_) {
+    takeup_left_deg_ = direction_ == 0.0 ? 0.0 : config_.backlash_deg;
+    direction_ = sign(to_goal_deg);
+  }
   // Feed-forward of the target's own rate: without it a proportional approach lags a moving goal
   // by rate/K (≈ 1 LSB of a 16-bit encoder at the Moon's 15°/h) and never quite arrives.
+  const double planned_deg = std::fabs(to_goal_deg) + takeup_left_deg_;
   const double velocity =
-      std::clamp(sign(to_goal_deg) * approach_speed_deg_s(error_deg, std::fabs(to_goal_deg)) +
-                     target_rate_deg_s,
+      std::clamp(direction_ * approach_speed_deg_s(error_deg, planned_deg) + target_rate_deg_s,
                  -config_.max_rate_deg_s, config_.max_rate_deg_s);
+  takeup_left_deg_ = std::max(0.0, takeup_left_deg_ - std::fabs(velocity) * dt_s);
   const double magnitude =
       config_.min_duty + (1.0 - config_.min_duty) * std::fabs(velocity) / config_.max_rate_deg_s;
   return slew_duty(sign(velocity) * magnitude, dt_s);

@@ -17,6 +17,7 @@ struct AxisControlConfig {
   double ramp_s = 1.0;            ///< soft start/stop: time for the duty to go from 0 to 1
   double min_duty = 0.0;          ///< duty below which the motor does not turn (stiction)
   double time_constant_s = 0.3;   ///< motor speed response, sets the approach gain
+  double backlash_deg = 0.0;      ///< gear play, driven through quickly when a move reverses
   bool lead = true;               ///< lead a moving target across the whole window
 
   /// Validates every field; errors name it.
@@ -38,9 +39,13 @@ struct AxisControlConfig {
 /// Deceleration is planned so the axis neither overshoots nor hunts: the commanded speed is the
 /// least of the zone speed, K·d with K = 1/(4τ) (critical damping of a first-order motor under
 /// position feedback), and √(2·a·d) with a the ramp's acceleration, plus the target's own rate
-/// (feed-forward, so a moving goal is reached instead of chased). The stiction is compensated
-/// (duty = min_duty + (1 − min_duty)·v/v_max) so that slow final approach speeds still turn the
-/// motor; the duty changes by at most dt/ramp_s per tick (soft start and soft stop).
+/// (feed-forward, so a moving goal is reached instead of chased). A move in the other direction
+/// than the last one first has to take up the gear play, during which the shaft (and its encoder)
+/// stands still: the play is added to the distance the speed is planned on until the commanded
+/// motion has covered it, so the axis does not creep through it at final-approach speed. The
+/// stiction is compensated (duty = min_duty + (1 − min_duty)·v/v_max) so that slow final approach
+/// speeds still turn the motor; the duty changes by at most dt/ramp_s per tick (soft start and soft
+/// stop).
 class AxisController {
  public:
   explicit AxisController(const AxisControlConfig& config) : config_(config) {}
@@ -66,6 +71,8 @@ class AxisController {
   AxisControlConfig config_;
   double duty_ = 0.0;
   bool moving_ = false;
+  double direction_ = 0.0;        ///< of the present or last move: +1, −1, 0 before the first
+  double takeup_left_deg_ = 0.0;  ///< play still to take up in the present direction
   std::uint64_t starts_ = 0;
 };
 
