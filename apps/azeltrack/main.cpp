@@ -32,6 +32,8 @@ int main(int argc, char** argv) {
       "  azeltrack sky --list                                   the radio-source catalogue\n"
       "  azeltrack locator FN06HE                               centre of a locator square\n"
       "  azeltrack watch --config examples/station.toml         live sky view (scripts/run)\n"
+      "  azeltrack simulate --scenario moon --hours 6           the controller on the sim antenna\n"
+      "  azeltrack hub encode --az-bits 12 --el-bits 12 --az-raw 2048 --el-raw 100\n"
       "Exit codes: 0 success, 1 failure, 2 bad arguments.");
   const azt::app::Runner sky = azt::app::add_sky_command(app);
   const azt::app::Runner locator = azt::app::add_locator_command(app);
