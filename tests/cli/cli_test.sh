@@ -100,5 +100,21 @@ printf '[station]\nlat_deg = 46\n' >"$tmp/half.toml"
 expect_usage_error "config lat without lon" watch --config "$tmp/half.toml" --count 1
 expect_usage_error "config missing" watch --config "$tmp/none.toml" --count 1
 
+# simulate: the controller on the simulated antenna, in virtual time.
+sim=(simulate --config "$root/examples/sim.toml")
+json_check "simulate slew" \
+  "j['slew_time_s'] is not None and j['slew_time_s'] <= 1.1*j['slew_min_time_s'] + 1 and j['faults'] == [] and j['overshoot_deg'] >= 0" \
+  "${sim[@]}" --scenario slew --to-az 300 --to-el 30 --json
+json_check "simulate moon" \
+  "all(k in j for k in ['rms_error_deg','max_error_deg','slew_time_s','slew_min_time_s','overshoot_deg','faults']) and set(j['motor_starts_per_hour']) == {'az','el'} and j['max_error_deg'] < 0.3" \
+  "${sim[@]}" --scenario moon --from 2025-03-14T02:00:00Z --hours 0.5 --json
+expect_usage_error "simulate bad scenario" "${sim[@]}" --scenario mars
+expect_usage_error "simulate slew without target" "${sim[@]}" --scenario slew
+expect_usage_error "simulate slew below the horizon" "${sim[@]}" --scenario slew --to-az 10 --to-el -20
+printf '[station]\ngrid = "FN06"\n[sim.az]\nencoder_bits = 20\n' >"$tmp/bits.toml"
+expect_usage_error "simulate bad encoder bits" simulate --config "$tmp/bits.toml" --scenario slew --to-az 1 --to-el 1
+printf '[station]\ngrid = "FN06"\n[control]\nwindow_deg = 3\n' >"$tmp/window.toml"
+expect_usage_error "simulate window too large" simulate --config "$tmp/window.toml" --scenario slew --to-az 1 --to-el 1
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
