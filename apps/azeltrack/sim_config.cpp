@@ -60,6 +60,21 @@ void read_geometry(const ConfigSection& g, sim::StationSimSetup& setup) {
   setup.el_range = *el;
 }
 
+/// `[control] out_of_range = "hold" | "park"`, with the park position `park_az_deg`,
+/// `park_el_deg` (default: south at the lowest elevation).
+void read_out_of_range(const ConfigSection& c, sim::StationSimSetup& setup) {
+  const std::string policy = c.text("out_of_range").value_or("hold");
+  if (policy == "hold") return;
+  if (policy != "park") c.fail("out_of_range", "must be \"hold\" or \"park\"");
+  const control::AzEl park{c.number("park_az_deg").value_or(180.0),
+                           c.number("park_el_deg").value_or(setup.el_range.min_deg)};
+  if (park.az_deg < 0.0 || park.az_deg >= 360.0 ||
+      !control::plan_elevation(park.el_deg, setup.el_range)) {
+    c.fail("park_az_deg", "park position must be az 0..360 and inside the elevation range");
+  }
+  setup.park_when_out_of_range = park;
+}
+
 void read_link(const ConfigSection& s, sim::StationSimSetup& setup) {
   const std::string version = s.text("frame_version").value_or("crc8");
   if (version == "seed") {
@@ -103,8 +118,10 @@ SimConfig sim_config_from(const ConfigFile& file) {
   setup.az_plant = read_plant(sim_section.child("az", plant_keys), az_defaults);
   setup.el_plant = read_plant(sim_section.child("el", plant_keys), el_defaults);
   read_link(sim_section, setup);
-  const ConfigSection control = file.section(
-      "control", {"window_deg", "ramp_s", "tracking_speed", "fast_zone_deg", "lead", "tick_hz"});
+  const ConfigSection control =
+      file.section("control", {"window_deg", "ramp_s", "tracking_speed", "fast_zone_deg", "lead",
+                               "tick_hz", "out_of_range", "park_az_deg", "park_el_deg"});
+  read_out_of_range(control, setup);
   setup.az_control = control_for(control, setup.az_plant);
   setup.el_control = control_for(control, setup.el_plant);
   setup.az_supervisor = supervisor_for(setup.az_plant);

@@ -167,3 +167,43 @@ TEST(Faults, OneGlitchIsIgnored) {
 
 }  // namespace
 }  // namespace azt::sim
+
+namespace azt::sim {
+namespace {
+
+/// Sets at t = 600 s: elevation 5° falling 0.5°/min.
+SkyTrack setting() {
+  return [](double t_s) {
+    return std::optional<control::AzEl>(control::AzEl{250.0, 5.0 - t_s / 120.0});
+  };
+}
+
+TEST(OutOfRange, HoldsWhereTheTargetSet) {
+  StationSimSetup setup = reference(12, 0.1);
+  setup.az_plant.start_deg = 250.0;
+  setup.el_plant.start_deg = 5.0;
+  const SimResult r = simulate_tracking(setup, setting(), 1200.0);
+  EXPECT_TRUE(r.faults.empty());
+  // Errors count only while the target was up: none beyond the window + 2 LSB.
+  EXPECT_LE(r.max_error_deg, 0.1 + 2.0 * 360.0 / 4096.0);
+  EXPECT_NEAR(r.final_position.az_deg, 250.0, 0.2);  // held, not parked
+  EXPECT_GT(r.final_position.el_deg, -0.5);
+}
+
+TEST(OutOfRange, ParksWhenConfigured) {
+  StationSimSetup setup = reference(12, 0.1);
+  setup.az_plant.start_deg = 250.0;
+  setup.el_plant.start_deg = 5.0;
+  setup.park_when_out_of_range = control::AzEl{180.0, 0.0};
+  const SimResult r = simulate_tracking(setup, setting(), 1200.0);
+  EXPECT_TRUE(r.faults.empty());
+  // 70° of azimuth at 1.5°/s after the set at 600 s: parked well before 1200 s. The slew to park
+  // is not tracking error.
+  EXPECT_LE(r.max_error_deg, 0.1 + 2.0 * 360.0 / 4096.0);
+  // Parked like any fixed target: within the window + 2 LSB.
+  EXPECT_NEAR(r.final_position.az_deg, 180.0, 0.1 + 2.0 * 360.0 / 4096.0);
+  EXPECT_NEAR(r.final_position.el_deg, 0.0, 0.1 + 2.0 * 360.0 / 4096.0);
+}
+
+}  // namespace
+}  // namespace azt::sim

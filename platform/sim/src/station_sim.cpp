@@ -202,7 +202,8 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
             AzEl{wrapped_difference(ahead->az_deg, target->az_deg), ahead->el_deg - target->el_deg};
       }
     }
-    loop.tick(t, target, rate);
+    // Out of range: hold where the antenna is, or drive to the park position.
+    loop.tick(t, target ? target : setup.park_when_out_of_range, rate);
     loop.collect_faults(result.faults, t);
     if (!target) {
       previous.reset();
@@ -236,6 +237,8 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
   result.simulated_s = static_cast<double>(ticks) * setup.tick_s;
   result.hub = loop.decoder().counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
+  result.final_position = {control::wrap_360(loop.az().plant.shaft_deg()),
+                           loop.el().plant.shaft_deg()};
   return result;
 }
 
@@ -278,6 +281,8 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
   result.simulated_s = static_cast<double>(k) * setup.tick_s;
   result.hub = loop.decoder().counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
+  result.final_position = {control::wrap_360(loop.az().plant.shaft_deg()),
+                           loop.el().plant.shaft_deg()};
   return result;
 }
 

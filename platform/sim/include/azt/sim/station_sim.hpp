@@ -44,7 +44,10 @@ struct StationSimSetup {
   proto::HubFrameVersion frame_version = proto::HubFrameVersion::Crc8;
   LinkFaults link;
   std::vector<ScheduledFault> plant_faults;  ///< sorted by at_s
-  std::uint64_t seed = 1;                    ///< for the link faults
+  /// Where to go while the tracked target is outside the travel (below the horizon limit);
+  /// nullopt holds the antenna where it is (ModeController's OutOfRangePolicy).
+  std::optional<control::AzEl> park_when_out_of_range;
+  std::uint64_t seed = 1;  ///< for the link faults
 };
 
 /// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
@@ -68,6 +71,7 @@ struct SimResult {
   std::optional<double> slew_time_s;  ///< slew scenario: until both axes came to rest there
   double slew_min_time_s = 0.0;       ///< distance / max rate of the slower axis
   double simulated_s = 0.0;
+  control::AzEl final_position;     ///< the true shafts at the end of the run
   std::vector<std::string> faults;  ///< "az: stall at 12.3 s: …"
   /// The largest |duty| applied to an axis after its supervisor latched a fault (must be 0: the
   /// motors stop in the tick that detects it).
