@@ -24,7 +24,7 @@ struct SupervisorConfig {
   /// Tolerance above max_rate·Δt (backlash, quantization): keep it above two encoder steps, or
   /// every count of a coarse encoder looks like a jump.
   double jump_margin_deg = 0.2;
-  double jump_persist_s = 0.5;      ///< implausible readings for this long become a fault
+  double jump_persist_s = 0.5;  ///< implausible readings for this long become a fault
 
   static Result<SupervisorConfig> make(const SupervisorConfig& c);
 };
