@@ -95,8 +95,10 @@ TEST(AxisController, LeadsAMovingTargetByTheWindow) {
   ASSERT_GT(ctl.update(100.0 + 0.6, 100.0, rate, kTick), 0.0);
   // The goal is the target plus the window in the direction it moves: still short of it here …
   EXPECT_GT(ctl.update(100.6, 100.9, rate, kTick), 0.0);
-  // … and arrived within 1 LSB of target + 0.5°.
-  EXPECT_EQ(ctl.update(100.6, 101.1 - 0.5 * kLsb12, rate, kTick), 0.0);
+  // … still moving half a count short of target + 0.5° (a led goal is reached or passed) …
+  EXPECT_GT(ctl.update(100.6, 101.1 - 0.5 * kLsb12, rate, kTick), 0.0);
+  // … and arrived once the reading gets there.
+  EXPECT_EQ(ctl.update(100.6, 101.1 + 0.1 * kLsb12, rate, kTick), 0.0);
   EXPECT_FALSE(ctl.moving());
 }
 

@@ -40,8 +40,12 @@ Result<AxisControlConfig> AxisControlConfig::make(const AxisControlConfig& c) {
   return c;
 }
 
+bool AxisController::is_leading(double target_rate_deg_s) const {
+  return config_.lead && std::fabs(target_rate_deg_s) >= kMinLeadRateDegS;
+}
+
 double AxisController::goal_deg(double target_deg, double target_rate_deg_s) const {
-  if (!config_.lead || std::fabs(target_rate_deg_s) < kMinLeadRateDegS) return target_deg;
+  if (!is_leading(target_rate_deg_s)) return target_deg;
   return target_deg + sign(target_rate_deg_s) * config_.window_deg;
 }
 
@@ -70,14 +74,21 @@ double AxisController::update(double target_deg, double position_deg, double tar
     return 0.0;
   }
   const double error_deg = target_deg - position_deg;
+  const double to_goal_deg = goal_deg(target_deg, target_rate_deg_s) - position_deg;
   if (!moving_) {
     if (std::fabs(error_deg) <= config_.start_threshold_deg()) return slew_duty(0.0, dt_s);
     moving_ = true;
+    move_direction_ = sign(to_goal_deg);
     ++starts_;
   }
-  const double to_goal_deg = goal_deg(target_deg, target_rate_deg_s) - position_deg;
-  if (std::fabs(to_goal_deg) <= config_.lsb_deg) {
-    // Arrived: the approach speed is down to K·1 LSB, so cutting the duty now coasts < 1 LSB.
+  // A fixed goal is reached within 1 LSB: the approach speed is down to K·1 LSB there, so cutting
+  // the duty coasts < 1 LSB. A led goal is reached when the reading gets to it or past it: the
+  // target then has the whole window (plus up to a count of quantization) to cross, which is what
+  // makes a coarse encoder's moves longer than one count.
+  const bool leading = is_leading(target_rate_deg_s);
+  const bool arrived =
+      leading ? to_goal_deg * move_direction_ <= 0.0 : std::fabs(to_goal_deg) <= config_.lsb_deg;
+  if (arrived) {
     moving_ = false;
     duty_ = 0.0;
     return duty_;
@@ -89,9 +100,12 @@ double AxisController::update(double target_deg, double position_deg, double tar
   // Feed-forward of the target's own rate: without it a proportional approach lags a moving goal
   // by rate/K (≈ 1 LSB of a 16-bit encoder at the Moon's 15°/h) and never quite arrives.
   const double planned_deg = std::fabs(to_goal_deg) + takeup_left_deg_;
-  const double velocity =
-      std::clamp(direction_ * approach_speed_deg_s(error_deg, planned_deg) + target_rate_deg_s,
-                 -config_.max_rate_deg_s, config_.max_rate_deg_s);
+  // Crossing a led goal must not take forever: keep at least K·½ LSB of approach speed (it coasts
+  // an eighth of an LSB when cut).
+  const double floor_deg_s = leading ? config_.lsb_deg / (8.0 * config_.time_constant_s) : 0.0;
+  const double approach = std::max(approach_speed_deg_s(error_deg, planned_deg), floor_deg_s);
+  const double velocity = std::clamp(direction_ * approach + target_rate_deg_s,
+                                     -config_.max_rate_deg_s, config_.max_rate_deg_s);
   takeup_left_deg_ = std::max(0.0, takeup_left_deg_ - std::fabs(velocity) * dt_s);
   const double magnitude =
       config_.min_duty + (1.0 - config_.min_duty) * std::fabs(velocity) / config_.max_rate_deg_s;

@@ -32,9 +32,11 @@ struct AxisControlConfig {
 /// At rest the axis waits until |target − position| exceeds L2. It then runs — at full speed while
 /// the error exceeds L1 = 3°, at tracking speed inside — towards a goal, and ramps to a stop within
 /// 1 LSB of it. The seed's goal is the target itself, so a steadily moving target restarts the
-/// motor every L2 of travel. With `lead`, the goal is placed L2 − 1 LSB beyond the target in the
-/// direction the target is moving: the target then drifts across the whole window before the next
-/// start, halving the starts (relay contacts and gears wear per start) for the same maximum error.
+/// motor every L2 of travel. With `lead` and a moving target, the goal is placed one window beyond
+/// the target in the direction it moves, and the move ends when the reading reaches or passes it:
+/// the target then drifts across the whole window (and the count of quantization) before the next
+/// start, halving the starts (relay contacts and gears wear per start) for the same maximum error,
+/// and letting a coarse encoder's moves span more than one count.
 ///
 /// Deceleration is planned so the axis neither overshoots nor hunts: the commanded speed is the
 /// least of the zone speed, K·d with K = 1/(4τ) (critical damping of a first-order motor under
@@ -64,6 +66,7 @@ class AxisController {
   [[nodiscard]] const AxisControlConfig& config() const { return config_; }
 
  private:
+  [[nodiscard]] bool is_leading(double target_rate_deg_s) const;
   [[nodiscard]] double goal_deg(double target_deg, double target_rate_deg_s) const;
   [[nodiscard]] double approach_speed_deg_s(double error_deg, double distance_deg) const;
   double slew_duty(double wanted, double dt_s);
@@ -71,6 +74,7 @@ class AxisController {
   AxisControlConfig config_;
   double duty_ = 0.0;
   bool moving_ = false;
+  double move_direction_ = 0.0;   ///< sign of the goal distance when the present move started
   double direction_ = 0.0;        ///< of the present or last move: +1, −1, 0 before the first
   double takeup_left_deg_ = 0.0;  ///< play still to take up in the present direction
   std::uint64_t starts_ = 0;
