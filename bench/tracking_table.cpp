@@ -10,6 +10,7 @@
 #include "azt/astro/erfa_ephemeris.hpp"
 #include "azt/astro/leap_seconds.hpp"
 #include "azt/astro/target.hpp"
+#include "azt/sim/reference_station.hpp"
 #include "azt/sim/sky_track.hpp"
 #include "azt/sim/station_sim.hpp"
 #ifdef AZT_HAVE_SWISS
@@ -21,33 +22,6 @@ namespace {
 using azt::sim::StationSimSetup;
 
 constexpr double kHours = 6.0;
-
-StationSimSetup reference(int bits, double window_deg) {
-  StationSimSetup s;
-  s.az_plant.max_rate_deg_s = 1.5;
-  s.el_plant.max_rate_deg_s = 1.0;
-  s.az_plant.start_deg = 180.0;
-  s.el_plant.start_deg = 10.0;
-  s.el_plant.max_deg = 90.0;
-  for (auto* p : {&s.az_plant, &s.el_plant}) {
-    p->time_constant_s = 0.3;
-    p->backlash_deg = 0.05;
-    p->stiction_duty = 0.1;
-    p->encoder_bits = static_cast<std::uint8_t>(bits);
-  }
-  for (auto [c, p] :
-       {std::pair{&s.az_control, &s.az_plant}, std::pair{&s.el_control, &s.el_plant}}) {
-    c->window_deg = window_deg;
-    c->lsb_deg = 360.0 / std::ldexp(1.0, bits);
-    c->max_rate_deg_s = p->max_rate_deg_s;
-    c->time_constant_s = p->time_constant_s;
-    c->min_duty = p->stiction_duty;
-    c->backlash_deg = p->backlash_deg;
-  }
-  s.az_supervisor.max_rate_deg_s = 1.5;
-  s.el_supervisor.max_rate_deg_s = 1.0;
-  return s;
-}
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
@@ -83,7 +57,7 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int bits : {9, 12, 14, 16}) {
     for (double window : {0.0, 0.1, 0.5}) {
-      const StationSimSetup setup = reference(bits, window);
+      const StationSimSetup setup = azt::sim::reference_station(bits, window);
       const double t0 = cpu_seconds();
       const auto r =
           azt::sim::simulate_tracking(setup, azt::sim::make_sky_track(track), kHours * 3600.0);
@@ -91,7 +65,7 @@ int main(int argc, char** argv) {
       const double lsb = 360.0 / std::ldexp(1.0, bits);
       const double l2 = window + lsb;
       const double hours = kHours - r.acquired_s.value_or(0.0) / 3600.0;
-      StationSimSetup slew_setup = reference(bits, window);
+      StationSimSetup slew_setup = azt::sim::reference_station(bits, window);
       slew_setup.az_plant.start_deg = 90.0;
       const auto slew = azt::sim::simulate_slew(slew_setup, azt::control::AzEl{270.0, 10.0}, 600.0);
       std::printf(

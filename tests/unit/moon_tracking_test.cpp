@@ -10,6 +10,7 @@
 
 #include "azt/astro/erfa_ephemeris.hpp"
 #include "azt/astro/tabulated_ephemeris.hpp"
+#include "azt/sim/reference_station.hpp"
 #include "azt/sim/sky_track.hpp"
 #include "azt/sim/station_sim.hpp"
 
@@ -17,33 +18,6 @@ namespace azt::sim {
 namespace {
 
 constexpr double kHours = 6.0;
-
-StationSimSetup reference(int bits, double window_deg) {
-  StationSimSetup s;
-  s.az_plant.max_rate_deg_s = 1.5;
-  s.el_plant.max_rate_deg_s = 1.0;
-  s.az_plant.start_deg = 180.0;
-  s.el_plant.start_deg = 10.0;
-  s.el_plant.max_deg = 90.0;
-  for (AxisParams* p : {&s.az_plant, &s.el_plant}) {
-    p->time_constant_s = 0.3;
-    p->backlash_deg = 0.05;
-    p->stiction_duty = 0.1;
-    p->encoder_bits = static_cast<std::uint8_t>(bits);
-  }
-  for (auto [c, p] :
-       {std::pair{&s.az_control, &s.az_plant}, std::pair{&s.el_control, &s.el_plant}}) {
-    c->window_deg = window_deg;
-    c->lsb_deg = 360.0 / std::ldexp(1.0, bits);
-    c->max_rate_deg_s = p->max_rate_deg_s;
-    c->time_constant_s = p->time_constant_s;
-    c->min_duty = p->stiction_duty;
-    c->backlash_deg = p->backlash_deg;
-  }
-  s.az_supervisor.max_rate_deg_s = 1.5;
-  s.el_supervisor.max_rate_deg_s = 1.0;
-  return s;
-}
 
 class MoonTracking : public ::testing::TestWithParam<std::tuple<int, double>> {
  protected:
@@ -75,7 +49,7 @@ TEST_P(MoonTracking, MeetsTheReferenceTargets) {
   const auto [bits, window] = GetParam();
   const double lsb = 360.0 / std::ldexp(1.0, bits);
   const double l2 = window + lsb;
-  const SimResult r = simulate_tracking(reference(bits, window), moon(), kHours * 3600.0);
+  const SimResult r = simulate_tracking(reference_station(bits, window), moon(), kHours * 3600.0);
   ASSERT_TRUE(r.acquired_s.has_value());
   EXPECT_TRUE(r.faults.empty()) << r.faults.front();
   EXPECT_LE(r.max_error_deg, window + 2.0 * lsb);
@@ -83,7 +57,7 @@ TEST_P(MoonTracking, MeetsTheReferenceTargets) {
   EXPECT_LE(static_cast<double>(r.el.starts), r.el.travel_deg / l2);
   EXPECT_GT(r.az.travel_deg, 60.0);  // the Moon really moved across the sky
 
-  StationSimSetup slew_setup = reference(bits, window);
+  StationSimSetup slew_setup = reference_station(bits, window);
   slew_setup.az_plant.start_deg = 90.0;
   const SimResult slew = simulate_slew(slew_setup, control::AzEl{270.0, 10.0}, 600.0);
   ASSERT_TRUE(slew.slew_time_s.has_value());
