@@ -8,24 +8,8 @@ root=$(cd "$here/../.." && pwd)
 py=/usr/bin/python3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
-
-# expect_usage_error DESCRIPTION ARGS...: exit code 2, exactly one line on stderr, nothing on stdout.
-expect_usage_error() {
-  local what=$1; shift
-  "$bin" "$@" >"$tmp/out" 2>"$tmp/err"
-  local rc=$?
-  local lines; lines=$(wc -l <"$tmp/err")
-  if [ $rc -ne 2 ] || [ "$lines" -ne 1 ] || [ -s "$tmp/out" ]; then
-    bad "$what: rc=$rc, stderr lines=$lines: $(cat "$tmp/err")"
-  else
-    ok
-  fi
-}
+# shellcheck source=lib.sh
+source "$(dirname "$0")/lib.sh"
 
 # json_check DESCRIPTION PYTHON_EXPR ARGS...: runs azeltrack, evaluates the expression on `j`.
 json_check() {
@@ -116,5 +100,4 @@ expect_usage_error "simulate bad encoder bits" simulate --config "$tmp/bits.toml
 printf '[station]\ngrid = "FN06"\n[control]\nwindow_deg = 3\n' >"$tmp/window.toml"
 expect_usage_error "simulate window too large" simulate --config "$tmp/window.toml" --scenario slew --to-az 1 --to-el 1
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -7,24 +7,8 @@ bin=${1:?usage: hub_cli_test.sh AZELTRACK}
 py=/usr/bin/python3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*" >&2; }
-
-# expect_usage_error DESCRIPTION ARGS...: exit code 2, exactly one line on stderr, nothing on stdout.
-expect_usage_error() {
-  local what=$1; shift
-  "$bin" "$@" </dev/null >"$tmp/out" 2>"$tmp/err"
-  local rc=$?
-  local lines; lines=$(wc -l <"$tmp/err")
-  if [ $rc -ne 2 ] || [ "$lines" -ne 1 ] || [ -s "$tmp/out" ]; then
-    bad "$what: rc=$rc, stderr lines=$lines: $(cat "$tmp/err")"
-  else
-    ok
-  fi
-}
+# shellcheck source=lib.sh
+source "$(dirname "$0")/lib.sh"
 
 # expect_text DESCRIPTION EXPECTED ARGS...: stdout is exactly EXPECTED (one line), exit 0.
 expect_text() {
@@ -122,5 +106,4 @@ printf '03 cz\n' | "$bin" hub decode --hex >"$tmp/out" 2>"$tmp/err"
 rc=$?
 if [ $rc -eq 1 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ]; then ok; else bad "bad hex: rc=$rc $(cat "$tmp/err")"; fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish
