@@ -46,6 +46,7 @@ control::AxisControlConfig control_for(const ConfigSection& c, const sim::AxisPa
 control::SupervisorConfig supervisor_for(const sim::AxisParams& plant) {
   control::SupervisorConfig s;
   s.max_rate_deg_s = plant.max_rate_deg_s;
+  s.lsb_deg = 360.0 / std::ldexp(1.0, plant.encoder_bits);
   return s;
 }
 

@@ -97,6 +97,17 @@ TEST(Supervisor, ImplausibleJumpsAreRejectedThenBecomeAFault) {
   EXPECT_FALSE(s.check(1.0, 0.0, 0.0).allow_motion);
 }
 
+TEST(Supervisor, OneCountOfACoarseEncoderIsNotAJump) {
+  SupervisorConfig c = config();
+  c.lsb_deg = 360.0 / 512.0;  // 9 bits: 0.70° per count, more than max rate × tick + 0.2°
+  AxisSupervisor s(c);
+  ASSERT_TRUE(s.on_reading(0.0, 10.0));
+  EXPECT_TRUE(s.on_reading(0.05, 10.0 + c.lsb_deg));
+  AxisSupervisor fine(config());  // without the step size the same change is implausible
+  ASSERT_TRUE(fine.on_reading(0.0, 10.0));
+  EXPECT_FALSE(fine.on_reading(0.05, 10.0 + c.lsb_deg));
+}
+
 TEST(Supervisor, EmergencyStopLatches) {
   AxisSupervisor s(config());
   ASSERT_TRUE(s.on_reading(0.0, 10.0));

@@ -35,7 +35,7 @@ Result<SupervisorConfig> SupervisorConfig::make(const SupervisorConfig& c) {
   if (!positive(c.stale_s) || !positive(c.stall_window_s) || !positive(c.stall_min_move_deg) ||
       !positive(c.driven_duty) || c.driven_duty > 1.0 || !positive(c.runaway_deg) ||
       !positive(c.max_rate_deg_s) || !std::isfinite(c.jump_margin_deg) || c.jump_margin_deg < 0.0 ||
-      !positive(c.jump_persist_s)) {
+      !positive(c.jump_persist_s) || !std::isfinite(c.lsb_deg) || c.lsb_deg < 0.0) {
     return fail("supervisor limits must be positive and finite (driven_duty at most 1)");
   }
   return c;
@@ -45,7 +45,8 @@ bool AxisSupervisor::on_reading(double now_s, double position_deg) {
   if (!std::isfinite(position_deg)) return false;
   if (last_good_deg_) {
     const double dt_s = std::max(now_s - last_good_s_, 0.0);
-    const double plausible = config_.max_rate_deg_s * dt_s + config_.jump_margin_deg;
+    const double margin_deg = std::max(config_.jump_margin_deg, 2.0 * config_.lsb_deg);
+    const double plausible = config_.max_rate_deg_s * dt_s + margin_deg;
     if (std::fabs(position_deg - *last_good_deg_) > plausible) {
       if (!first_rejected_s_) first_rejected_s_ = now_s;
       if (now_s - *first_rejected_s_ >= config_.jump_persist_s && fault_ == FaultKind::None) {

@@ -32,6 +32,8 @@ StationSimSetup reference_station(int bits, double window_deg) {
   }
   s.az_supervisor.max_rate_deg_s = s.az_plant.max_rate_deg_s;
   s.el_supervisor.max_rate_deg_s = s.el_plant.max_rate_deg_s;
+  s.az_supervisor.lsb_deg = s.az_control.lsb_deg;
+  s.el_supervisor.lsb_deg = s.el_control.lsb_deg;
   return s;
 }
 

@@ -45,7 +45,7 @@ struct Axis {
   Axis(const AxisParams& p, control::AxisControlConfig c, control::SupervisorConfig s)
       : plant(p),
         controller((c.lsb_deg = lsb_deg(p), c)),
-        supervisor((s.jump_margin_deg = std::max(s.jump_margin_deg, 2.0 * lsb_deg(p)), s)) {}
+        supervisor((s.lsb_deg = lsb_deg(p), s)) {}
 };
 
 class StationLoop {

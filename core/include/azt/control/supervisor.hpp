@@ -21,9 +21,10 @@ struct SupervisorConfig {
   double driven_duty = 0.5;         ///< |duty| from which the axis counts as driven
   double runaway_deg = 0.5;         ///< driven towards the goal yet the distance grew this much
   double max_rate_deg_s = 1.5;      ///< fastest plausible axis speed
-  /// Tolerance above max_rate·Δt (backlash, quantization): keep it above two encoder steps, or
-  /// every count of a coarse encoder looks like a jump.
+  /// Tolerance above max_rate·Δt (backlash, quantization); never less than two encoder steps,
+  /// or every count of a coarse encoder would look like a jump.
   double jump_margin_deg = 0.2;
+  double lsb_deg = 0.0;         ///< one encoder step (360/2^bits); 0 if unknown
   double jump_persist_s = 0.5;  ///< implausible readings for this long become a fault
 
   static Result<SupervisorConfig> make(const SupervisorConfig& c);
