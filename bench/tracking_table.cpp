@@ -10,6 +10,7 @@
 #include "azt/astro/erfa_ephemeris.hpp"
 #include "azt/astro/leap_seconds.hpp"
 #include "azt/astro/target.hpp"
+#include "azt/proto/hub_frame.hpp"
 #include "azt/sim/reference_station.hpp"
 #include "azt/sim/sky_track.hpp"
 #include "azt/sim/station_sim.hpp"
@@ -62,7 +63,7 @@ int main(int argc, char** argv) {
       const auto r =
           azt::sim::simulate_tracking(setup, azt::sim::make_sky_track(track), kHours * 3600.0);
       const double cpu_per_hour = (cpu_seconds() - t0) / kHours;
-      const double lsb = 360.0 / std::ldexp(1.0, bits);
+      const double lsb = azt::proto::hub_resolution_deg(static_cast<std::uint8_t>(bits));
       const double l2 = window + lsb;
       const double hours = kHours - r.acquired_s.value_or(0.0) / 3600.0;
       StationSimSetup slew_setup = azt::sim::reference_station(bits, window);

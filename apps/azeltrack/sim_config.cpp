@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "azt/proto/hub_frame.hpp"
 #include "config_file.hpp"
 
 namespace azt::app {
@@ -37,7 +38,7 @@ control::AxisControlConfig control_for(const ConfigSection& c, const sim::AxisPa
   a.time_constant_s = plant.time_constant_s;
   a.min_duty = plant.stiction_duty;
   a.backlash_deg = plant.backlash_deg;
-  a.lsb_deg = 360.0 / std::ldexp(1.0, plant.encoder_bits);
+  a.lsb_deg = proto::hub_resolution_deg(plant.encoder_bits);
   auto ok = control::AxisControlConfig::make(a);
   if (!ok) c.fail("window_deg", ok.error().message);
   return a;
@@ -46,7 +47,7 @@ control::AxisControlConfig control_for(const ConfigSection& c, const sim::AxisPa
 control::SupervisorConfig supervisor_for(const sim::AxisParams& plant) {
   control::SupervisorConfig s;
   s.max_rate_deg_s = plant.max_rate_deg_s;
-  s.lsb_deg = 360.0 / std::ldexp(1.0, plant.encoder_bits);
+  s.lsb_deg = proto::hub_resolution_deg(plant.encoder_bits);
   return s;
 }
 

@@ -1,4 +1,5 @@
 #include "azt/sim/axis_plant.hpp"
+#include "azt/proto/hub_frame.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -122,7 +123,7 @@ std::uint16_t AxisPlant::encoder_raw() const {
   return static_cast<std::uint16_t>(raw);
 }
 
-double AxisPlant::lsb_deg() const { return 360.0 / std::ldexp(1.0, params_.encoder_bits); }
+double AxisPlant::lsb_deg() const { return proto::hub_resolution_deg(params_.encoder_bits); }
 
 void AxisPlant::inject(const AxisFault& fault) {
   switch (fault.kind) {

@@ -1,4 +1,5 @@
 #include "azt/sim/reference_station.hpp"
+#include "azt/proto/hub_frame.hpp"
 
 #include <cmath>
 #include <utility>
@@ -24,7 +25,7 @@ StationSimSetup reference_station(int bits, double window_deg) {
   for (auto [c, p] :
        {std::pair{&s.az_control, &s.az_plant}, std::pair{&s.el_control, &s.el_plant}}) {
     c->window_deg = window_deg;
-    c->lsb_deg = 360.0 / std::ldexp(1.0, bits);
+    c->lsb_deg = proto::hub_resolution_deg(p->encoder_bits);
     c->max_rate_deg_s = p->max_rate_deg_s;
     c->time_constant_s = p->time_constant_s;
     c->min_duty = p->stiction_duty;

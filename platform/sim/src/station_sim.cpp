@@ -13,7 +13,7 @@ namespace {
 
 using control::AzEl;
 
-double lsb_deg(const AxisParams& p) { return 360.0 / std::ldexp(1.0, p.encoder_bits); }
+double lsb_deg(const AxisParams& p) { return proto::hub_resolution_deg(p.encoder_bits); }
 
 /// Signed difference a − b wrapped to [−180, 180).
 double wrapped_difference(double a_deg, double b_deg) {
