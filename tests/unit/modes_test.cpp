@@ -48,5 +48,53 @@ TEST(Modes, ManualParkExternalAndStop) {
   EXPECT_FALSE(m.demand(AzEl{1, 1}).position.has_value());
 }
 
+TEST(Modes, AJogStopsWhenItsClientFallsSilentForOneSecond) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  ASSERT_TRUE(m.external_jog(Jog{1, 0}, "rotctld 127.0.0.1:4000", 10.0).ok());
+  EXPECT_EQ(m.mode(), Mode::External);
+  ASSERT_TRUE(m.demand(std::nullopt).jog.has_value());
+  EXPECT_FALSE(m.demand(std::nullopt).position.has_value());
+  // Another client's traffic is no keep-alive; the jogging client's is.
+  m.heard_from("rotctld 127.0.0.1:5000", 10.9);
+  m.heard_from("rotctld 127.0.0.1:4000", 10.6);
+  m.update(11.5);
+  EXPECT_EQ(m.mode(), Mode::External);
+  m.update(11.61);
+  EXPECT_EQ(m.mode(), Mode::Stop);
+  EXPECT_FALSE(m.demand(std::nullopt).jog.has_value());
+  EXPECT_NE(m.who().find("silent"), std::string::npos);
+}
+
+TEST(Modes, AJogNeedsADirection) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  EXPECT_FALSE(m.external_jog(Jog{0, 0}, "c", 0.0).ok());
+  EXPECT_FALSE(m.external_jog(Jog{2, 0}, "c", 0.0).ok());
+  EXPECT_EQ(m.mode(), Mode::Stop);
+}
+
+TEST(Modes, APositionTargetIsHeldWithoutKeepAlive) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  ASSERT_TRUE(m.external(AzEl{200, 20}, "gpredict").ok());
+  m.update(1e6);
+  EXPECT_EQ(m.mode(), Mode::External);
+  EXPECT_DOUBLE_EQ(m.fixed_target()->az_deg, 200);
+}
+
+TEST(Modes, AConsoleStopLocksOutProgramsUntilTheConsoleChoosesAgain) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  ASSERT_TRUE(m.external(AzEl{200, 20}, "gpredict").ok());
+  m.stop(true);
+  EXPECT_TRUE(m.external_locked());
+  EXPECT_FALSE(m.external(AzEl{210, 20}, "gpredict").ok());
+  EXPECT_FALSE(m.external_jog(Jog{1, 0}, "gpredict", 0.0).ok());
+  EXPECT_EQ(m.mode(), Mode::Stop);
+  m.track("Moon");
+  EXPECT_FALSE(m.external_locked());
+  EXPECT_TRUE(m.external(AzEl{210, 20}, "gpredict").ok());
+  // A program's own STOP does not lock anyone out.
+  m.stop();
+  EXPECT_TRUE(m.external(AzEl{211, 20}, "gpredict").ok());
+}
+
 }  // namespace
 }  // namespace azt::control

@@ -30,6 +30,8 @@ Result<AzEl> ModeController::checked(AzEl position) {
 }
 
 void ModeController::track(std::string target_name) {
+  external_locked_ = false;
+  jog_.reset();
   mode_ = Mode::Track;
   who_ = std::move(target_name);
 }
@@ -37,6 +39,8 @@ void ModeController::track(std::string target_name) {
 Result<Mode> ModeController::manual(AzEl position) {
   auto p = checked(position);
   if (!p) return p.error();
+  external_locked_ = false;
+  jog_.reset();
   mode_ = Mode::Manual;
   fixed_ = *p;
   who_ = "manual";
@@ -45,6 +49,8 @@ Result<Mode> ModeController::manual(AzEl position) {
 
 Result<Mode> ModeController::park(int slot) {
   if (slot < 1 || slot > kParkSlots) return fail("park slot must be 1 to 4");
+  external_locked_ = false;
+  jog_.reset();
   mode_ = Mode::Park;
   park_slot_ = slot;
   fixed_ = slots_[static_cast<std::size_t>(slot - 1)].position;
@@ -53,39 +59,81 @@ Result<Mode> ModeController::park(int slot) {
 }
 
 Result<Mode> ModeController::external(AzEl position, std::string client) {
+  if (external_locked_) return fail("refused: STOP was pressed on the console");
   auto p = checked(position);
   if (!p) return p.error();
+  jog_.reset();
   mode_ = Mode::External;
   fixed_ = *p;
   who_ = std::move(client);
   return mode_;
 }
 
-void ModeController::stop() {
-  mode_ = Mode::Stop;
-  who_ = "stop";
+Result<Mode> ModeController::external_jog(Jog jog, std::string client, double now_s) {
+  if (external_locked_) return fail("refused: STOP was pressed on the console");
+  if (jog.az < -1 || jog.az > 1 || jog.el < -1 || jog.el > 1 || (jog.az == 0 && jog.el == 0)) {
+    return fail("a move needs a direction on at least one axis");
+  }
+  mode_ = Mode::External;
+  jog_ = jog;
+  jog_heard_s_ = now_s;
+  who_ = std::move(client);
+  return mode_;
 }
+
+void ModeController::heard_from(std::string_view client, double now_s) {
+  if (jog_ && client == who_) jog_heard_s_ = now_s;
+}
+
+void ModeController::update(double now_s) {
+  if (jog_ && now_s - jog_heard_s_ > kJogKeepAliveS) {
+    jog_.reset();
+    mode_ = Mode::Stop;
+    who_ = "move stopped: " + who_ + " silent for 1 s";
+  }
+}
+
+void ModeController::stop(bool from_console) {
+  jog_.reset();
+  mode_ = Mode::Stop;
+  who_ = from_console ? "console" : "stop";
+  external_locked_ = from_console;
+}
+
+std::optional<AzEl> ModeController::fixed_target() const {
+  if (mode_ == Mode::Manual || mode_ == Mode::Park || (mode_ == Mode::External && !jog_)) {
+    return fixed_;
+  }
+  return std::nullopt;
+}
+
+namespace {
+Demand hold_or_go(std::optional<AzEl> position, std::string reason) {
+  return Demand{position, std::move(reason), std::nullopt};
+}
+}  // namespace
 
 Demand ModeController::demand(const std::optional<AzEl>& sky) const {
   switch (mode_) {
     case Mode::Stop:
-      return Demand{std::nullopt, "stopped"};
+      return Demand{std::nullopt, "stopped: " + who_, std::nullopt};
     case Mode::Manual:
     case Mode::Park:
     case Mode::External:
-      return Demand{fixed_, std::string(to_string(mode_)) + " " + who_};
+      if (jog_) return Demand{std::nullopt, "EXT move by " + who_, jog_};
+      return hold_or_go(fixed_, std::string(to_string(mode_)) + " " + who_);
     case Mode::Track:
       break;
   }
-  if (!sky) return Demand{std::nullopt, "holding: no position for " + who_};
+  if (!sky) return hold_or_go(std::nullopt, "holding: no position for " + who_);
   if (sky->el_deg < min_el_deg_) {
     if (policy_ == OutOfRangePolicy::Park) {
-      return Demand{slots_[0].position,
-                    who_ + " below the horizon limit: parked at " + slots_[0].name};
+      return hold_or_go(slots_[0].position,
+                        who_ + " below the horizon limit: parked at " + slots_[0].name);
     }
-    return Demand{std::nullopt, "holding: " + who_ + " below the horizon limit"};
+    return hold_or_go(std::nullopt, "holding: " + who_ + " below the horizon limit");
   }
-  return Demand{*sky, "tracking " + who_};
+  return hold_or_go(*sky, "tracking " + who_);
 }
 
 }  // namespace azt::control

@@ -34,69 +34,65 @@ struct Accumulator {
   }
 };
 
-/// One axis: its plant, controller and supervisor, and what the loop knows of it.
-struct Axis {
-  AxisPlant plant;
-  control::AxisController controller;
-  control::AxisSupervisor supervisor;
-  double mount_deg = 0.0;  ///< last accepted reading, in mount degrees
-  bool fault_reported = false;
+control::StationControlConfig control_config(const StationSimSetup& setup) {
+  control::StationControlConfig c;
+  c.az_control = setup.az_control;
+  c.el_control = setup.el_control;
+  c.az_control.lsb_deg = lsb_deg(setup.az_plant);
+  c.el_control.lsb_deg = lsb_deg(setup.el_plant);
+  c.az_supervisor = setup.az_supervisor;
+  c.el_supervisor = setup.el_supervisor;
+  c.az_range = setup.az_range;
+  c.el_range = setup.el_range;
+  c.tick_s = setup.tick_s;
+  return c;
+}
 
-  Axis(const AxisParams& p, control::AxisControlConfig c, control::SupervisorConfig s)
-      : plant(p),
-        controller((c.lsb_deg = lsb_deg(p), c)),
-        supervisor((s.lsb_deg = lsb_deg(p), s)) {}
-};
-
+/// The station's own controller driving two plants through a simulated EncoderHub link.
 class StationLoop {
  public:
   explicit StationLoop(const StationSimSetup& setup)
       : setup_(setup),
-        az_(setup.az_plant, setup.az_control, setup.az_supervisor),
-        el_(setup.el_plant, setup.el_control, setup.el_supervisor),
+        az_plant_(setup.az_plant),
+        el_plant_(setup.el_plant),
+        station_(control_config(setup), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}),
         decoder_(accept_for(setup.frame_version)),
-        rng_(setup.seed) {
-    az_.mount_deg = setup.az_plant.start_deg;
-    el_.mount_deg = setup.el_plant.start_deg;
-  }
+        rng_(setup.seed) {}
 
   /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
   void tick(double t_s, const std::optional<AzEl>& demand, const AzEl& rate_deg_s) {
     inject_due_faults(t_s);
     transmit_frame(t_s);
-    drive(az_, t_s,
-          demand
-              ? std::optional(control::plan_azimuth(az_.mount_deg, demand->az_deg, setup_.az_range))
-              : std::nullopt,
-          rate_deg_s.az_deg);
-    drive(el_, t_s,
-          demand ? control::plan_elevation(demand->el_deg, setup_.el_range) : std::nullopt,
-          rate_deg_s.el_deg);
-    for (const Axis* axis : {&az_, &el_}) {
-      if (axis->supervisor.fault() != control::FaultKind::None) {
-        max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(axis->controller.duty()));
+    control::Demand d;
+    d.position = demand;
+    const control::Duties duties = station_.tick(t_s, d, rate_deg_s);
+    for (const auto& axis : {station_.az(), station_.el()}) {
+      if (axis.fault != control::FaultKind::None) {
+        max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(axis.duty));
       }
     }
     const double dt = setup_.tick_s / setup_.plant_substeps;
     for (int i = 0; i < setup_.plant_substeps; ++i) {
-      az_.plant.step(az_.controller.duty(), dt);
-      el_.plant.step(el_.controller.duty(), dt);
+      az_plant_.step(duties.az, dt);
+      el_plant_.step(duties.el, dt);
     }
   }
 
   [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
-  Axis& az() { return az_; }
-  Axis& el() { return el_; }
+  [[nodiscard]] const AxisPlant& az_plant() const { return az_plant_; }
+  [[nodiscard]] const AxisPlant& el_plant() const { return el_plant_; }
+  [[nodiscard]] const control::StationController& station() const { return station_; }
   [[nodiscard]] const proto::HubDecoder& decoder() const { return decoder_; }
 
   void collect_faults(std::vector<std::string>& out, double t_s) {
-    for (auto* axis : {&az_, &el_}) {
-      const auto kind = axis->supervisor.fault();
-      if (kind != control::FaultKind::None && !axis->fault_reported) {
-        axis->fault_reported = true;
-        out.push_back(std::string(axis == &az_ ? "az" : "el") + ": " +
-                      std::string(control::to_string(kind)) + " at " + std::to_string(t_s) +
-                      " s: " + axis->supervisor.reason());
+    const std::pair<const char*, control::AxisStatus> axes[] = {{"az", station_.az()},
+                                                                {"el", station_.el()}};
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto& [name, axis] = axes[i];
+      if (axis.fault != control::FaultKind::None && !fault_reported_[i]) {
+        fault_reported_[i] = true;
+        out.push_back(std::string(name) + ": " + std::string(control::to_string(axis.fault)) +
+                      " at " + std::to_string(t_s) + " s: " + axis.reason);
       }
     }
   }
@@ -106,7 +102,7 @@ class StationLoop {
     for (; next_fault_ < setup_.plant_faults.size() && setup_.plant_faults[next_fault_].at_s <= t_s;
          ++next_fault_) {
       const ScheduledFault& f = setup_.plant_faults[next_fault_];
-      (f.azimuth ? az_ : el_).plant.inject(f.fault);
+      (f.azimuth ? az_plant_ : el_plant_).inject(f.fault);
     }
   }
 
@@ -125,8 +121,8 @@ class StationLoop {
       link_started_ = true;
     }
     if (u(rng_) < setup_.link.frame_loss) return;
-    const proto::HubReading reading{az_.plant.encoder_bits(), el_.plant.encoder_bits(),
-                                    az_.plant.encoder_raw(), el_.plant.encoder_raw()};
+    const proto::HubReading reading{az_plant_.encoder_bits(), el_plant_.encoder_bits(),
+                                    az_plant_.encoder_raw(), el_plant_.encoder_raw()};
     std::array<std::uint8_t, proto::kHubMaxFrameBytes> frame{};
     const std::size_t n =
         proto::encode_hub_frame(reading, setup_.frame_version, frame.data(), frame.size());
@@ -134,48 +130,31 @@ class StationLoop {
       std::uint8_t byte = frame[i];
       if (u(rng_) < setup_.link.byte_corruption) byte = static_cast<std::uint8_t>(rng_() & 0xFF);
       proto::HubFrame decoded{};
-      if (decoder_.push(byte, decoded) == proto::HubFrameStatus::Ok) accept(t_s, decoded.reading);
+      if (decoder_.push(byte, decoded) == proto::HubFrameStatus::Ok) {
+        const proto::HubReading& r = decoded.reading;
+        station_.on_encoder_reading(t_s, proto::hub_raw_to_deg(r.az_raw, r.az_bits),
+                                    proto::hub_raw_to_deg(r.el_raw, r.el_bits));
+      }
     }
-  }
-
-  void accept(double t_s, const proto::HubReading& r) {
-    const double az_deg = proto::hub_raw_to_deg(r.az_raw, r.az_bits);
-    const double el_deg = proto::hub_raw_to_deg(r.el_raw, r.el_bits);
-    // The encoder turns once per revolution: the mount angle is the equivalent nearest the last
-    // one (overlap rotators). Elevation encoders read 0–360 too: above 180 is below the horizon.
-    const double az_mount = control::plan_azimuth(az_.mount_deg, az_deg, setup_.az_range);
-    const double el_mount = el_deg > 270.0 ? el_deg - 360.0 : el_deg;
-    if (az_.supervisor.on_reading(t_s, az_mount)) az_.mount_deg = az_mount;
-    if (el_.supervisor.on_reading(t_s, el_mount)) el_.mount_deg = el_mount;
-  }
-
-  void drive(Axis& axis, double t_s, std::optional<double> target_deg, double rate_deg_s) const {
-    if (!target_deg) {
-      // Holding: let any move finish its soft stop at the present position.
-      target_deg = axis.mount_deg;
-      rate_deg_s = 0.0;
-    }
-    const double duty =
-        axis.controller.update(*target_deg, axis.mount_deg, rate_deg_s, setup_.tick_s);
-    const auto verdict = axis.supervisor.check(t_s, duty, *target_deg - axis.mount_deg);
-    if (!verdict.allow_motion) axis.controller.halt();
   }
 
   const StationSimSetup& setup_;
-  Axis az_;
-  Axis el_;
+  AxisPlant az_plant_;
+  AxisPlant el_plant_;
+  control::StationController station_;
   proto::HubDecoder decoder_;
   std::mt19937_64 rng_;
   bool link_started_ = false;
+  std::array<bool, 2> fault_reported_{};
   std::size_t next_fault_ = 0;  ///< plant_faults are sorted by time
   double max_duty_after_fault_ = 0.0;
 };
 
-AxisMetrics finish_axis(const Accumulator& acc, const Axis& axis, double hours, double travel) {
+AxisMetrics finish_axis(const Accumulator& acc, std::uint64_t starts, double hours, double travel) {
   AxisMetrics m;
   m.rms_error_deg = acc.rms();
   m.max_error_deg = acc.max_abs;
-  m.starts = axis.controller.starts();
+  m.starts = starts;
   m.starts_per_hour = hours > 0.0 ? static_cast<double>(m.starts) / hours : 0.0;
   m.travel_deg = travel;
   return m;
@@ -209,8 +188,8 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
       previous.reset();
       continue;
     }
-    const double e_az = wrapped_difference(target->az_deg, loop.az().plant.shaft_deg());
-    const double e_el = target->el_deg - loop.el().plant.shaft_deg();
+    const double e_az = wrapped_difference(target->az_deg, loop.az_plant().shaft_deg());
+    const double e_el = target->el_deg - loop.el_plant().shaft_deg();
     if (!result.acquired_s) {
       const double az_ok = setup.az_control.window_deg + l2_slack * lsb_deg(setup.az_plant);
       const double el_ok = setup.el_control.window_deg + l2_slack * lsb_deg(setup.el_plant);
@@ -228,8 +207,8 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
     }
   }
   const double hours = tracked_s / 3600.0;
-  result.az = finish_axis(az_err, loop.az(), hours, az_travel);
-  result.el = finish_axis(el_err, loop.el(), hours, el_travel);
+  result.az = finish_axis(az_err, loop.station().starts_az(), hours, az_travel);
+  result.el = finish_axis(el_err, loop.station().starts_el(), hours, el_travel);
   Accumulator pooled{az_err.sum_sq + el_err.sum_sq, std::max(az_err.max_abs, el_err.max_abs),
                      az_err.n + el_err.n};
   result.rms_error_deg = pooled.rms();
@@ -237,8 +216,8 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
   result.simulated_s = static_cast<double>(ticks) * setup.tick_s;
   result.hub = loop.decoder().counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
-  result.final_position = {control::wrap_360(loop.az().plant.shaft_deg()),
-                           loop.el().plant.shaft_deg()};
+  result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),
+                           loop.el_plant().shaft_deg()};
   return result;
 }
 
@@ -261,28 +240,28 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
     loop.tick(t, to, AzEl{});
     loop.collect_faults(result.faults, t);
     const double az_shaft =
-        control::plan_azimuth(az_target, loop.az().plant.shaft_deg(), setup.az_range);
+        control::plan_azimuth(az_target, loop.az_plant().shaft_deg(), setup.az_range);
     result.az.overshoot_deg = std::max(result.az.overshoot_deg, (az_shaft - az_target) * az_dir);
     result.el.overshoot_deg =
-        std::max(result.el.overshoot_deg, (loop.el().plant.shaft_deg() - to.el_deg) * el_dir);
-    const bool at_rest = !loop.az().controller.moving() && !loop.el().controller.moving() &&
-                         std::fabs(loop.az().plant.motor_rate_deg_s()) < 1e-3 &&
-                         std::fabs(loop.el().plant.motor_rate_deg_s()) < 1e-3 && t > 0.0;
+        std::max(result.el.overshoot_deg, (loop.el_plant().shaft_deg() - to.el_deg) * el_dir);
+    const bool at_rest = !loop.station().az().moving && !loop.station().el().moving &&
+                         std::fabs(loop.az_plant().motor_rate_deg_s()) < 1e-3 &&
+                         std::fabs(loop.el_plant().motor_rate_deg_s()) < 1e-3 && t > 0.0;
     if (at_rest && rest_since < 0.0) rest_since = t;
     if (!at_rest) rest_since = -1.0;
     if (rest_since >= 0.0 && t - rest_since >= 2.0) break;  // settled for 2 s
   }
   if (rest_since >= 0.0) result.slew_time_s = rest_since;
-  result.az.max_error_deg = std::fabs(wrapped_difference(to.az_deg, loop.az().plant.shaft_deg()));
-  result.el.max_error_deg = std::fabs(to.el_deg - loop.el().plant.shaft_deg());
+  result.az.max_error_deg = std::fabs(wrapped_difference(to.az_deg, loop.az_plant().shaft_deg()));
+  result.el.max_error_deg = std::fabs(to.el_deg - loop.el_plant().shaft_deg());
   result.max_error_deg = std::max(result.az.max_error_deg, result.el.max_error_deg);
-  result.az.starts = loop.az().controller.starts();
-  result.el.starts = loop.el().controller.starts();
+  result.az.starts = loop.station().starts_az();
+  result.el.starts = loop.station().starts_el();
   result.simulated_s = static_cast<double>(k) * setup.tick_s;
   result.hub = loop.decoder().counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
-  result.final_position = {control::wrap_360(loop.az().plant.shaft_deg()),
-                           loop.el().plant.shaft_deg()};
+  result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),
+                           loop.el_plant().shaft_deg()};
   return result;
 }
 

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "azt/util/result.hpp"
 
@@ -28,10 +29,18 @@ struct ParkSlot {
   AzEl position;
 };
 
+/// A continuous move per axis: −1, 0 (hold that axis), +1. Azimuth +1 is clockwise, elevation
+/// +1 is up. The axes run towards the end of their travel until stopped.
+struct Jog {
+  int az = 0;
+  int el = 0;
+};
+
 /// Where the antenna should point now, and why.
 struct Demand {
   std::optional<AzEl> position;  ///< nullopt: do not move (STOP, or holding)
   std::string reason;            ///< for the status line: "tracking Moon", "holding: Moon set"
+  std::optional<Jog> jog;        ///< a continuous move (EXT `M`); `position` is then nullopt
 };
 
 /// Which mode is active and what it asks for. Pure: the tracker feeds it the sky position of the
@@ -39,6 +48,7 @@ struct Demand {
 class ModeController {
  public:
   static constexpr int kParkSlots = 4;
+  static constexpr double kJogKeepAliveS = 1.0;
 
   ModeController(std::array<ParkSlot, kParkSlots> slots, OutOfRangePolicy policy, double min_el_deg)
       : slots_(std::move(slots)), policy_(policy), min_el_deg_(min_el_deg) {}
@@ -47,7 +57,19 @@ class ModeController {
   Result<Mode> manual(AzEl position);
   Result<Mode> park(int slot);  ///< 1..4
   Result<Mode> external(AzEl position, std::string client);
-  void stop();
+  /// A continuous move from a PC program. It needs a keep-alive: when `client` has not been
+  /// heard from for kJogKeepAliveS the move stops (reference R11: rotctld itself never stops).
+  Result<Mode> external_jog(Jog jog, std::string client, double now_s);
+  /// Any traffic from a PC program (a `p` poll counts).
+  void heard_from(std::string_view client, double now_s);
+  /// Applies the jog dead-man; call once per tick.
+  void update(double now_s);
+  /// STOP. From the console it is latched against PC programs: their targets are refused until
+  /// the console chooses a mode again (the user's STOP must not be undone by a polling program).
+  void stop(bool from_console = false);
+  [[nodiscard]] bool external_locked() const { return external_locked_; }
+  /// The position targets set by MAN, PARK and EXT (nullopt in TRACK and STOP, and while jogging).
+  [[nodiscard]] std::optional<AzEl> fixed_target() const;
 
   [[nodiscard]] Mode mode() const { return mode_; }
   [[nodiscard]] const std::string& who() const { return who_; }
@@ -65,6 +87,9 @@ class ModeController {
   std::string who_ = "start-up";
   AzEl fixed_;  ///< MAN / PARK / EXT position
   int park_slot_ = 0;
+  std::optional<Jog> jog_;  ///< EXT continuous move
+  double jog_heard_s_ = 0.0;
+  bool external_locked_ = false;
 };
 
 }  // namespace azt::control

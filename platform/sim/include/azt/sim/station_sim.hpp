@@ -9,6 +9,7 @@
 #include "azt/control/axis_controller.hpp"
 #include "azt/control/axis_geometry.hpp"
 #include "azt/control/modes.hpp"
+#include "azt/control/station_controller.hpp"
 #include "azt/control/supervisor.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "azt/sim/axis_plant.hpp"

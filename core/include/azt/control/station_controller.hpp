@@ -1,0 +1,86 @@
+#pragma once
+// Both axes of one station: readings in, motor duties out, once per control tick.
+//
+// The daemon and the simulation run the same object, so what the simulation measures is what the
+// station does. It owns an AxisController and an AxisSupervisor per axis and turns a Demand (a sky
+// position, a continuous move, or nothing) into mount targets through the travel planner.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "azt/control/axis_controller.hpp"
+#include "azt/control/axis_geometry.hpp"
+#include "azt/control/modes.hpp"
+#include "azt/control/supervisor.hpp"
+
+namespace azt::control {
+
+struct StationControlConfig {
+  AxisControlConfig az_control;  ///< lsb_deg is the encoder step of the axis
+  AxisControlConfig el_control;
+  SupervisorConfig az_supervisor;  ///< lsb_deg is set from the controller's
+  SupervisorConfig el_supervisor;
+  AzimuthRange az_range;
+  ElevationRange el_range;
+  double tick_s = 0.05;
+};
+
+/// What the station knows of one axis.
+struct AxisStatus {
+  double mount_deg = 0.0;  ///< last accepted reading, mount degrees
+  double duty = 0.0;
+  bool moving = false;
+  FaultKind fault = FaultKind::None;
+  std::string reason;  ///< the supervisor's words when faulted
+};
+
+struct Duties {
+  double az = 0.0;
+  double el = 0.0;
+};
+
+class StationController {
+ public:
+  /// `start_mount` is where the axes are believed to be before the first reading (it resolves
+  /// the overlap side of a single-turn azimuth encoder).
+  StationController(const StationControlConfig& config, AzEl start_mount);
+
+  /// Encoder angles 0..360 as read at `now_s`. Azimuth is placed on the mount (the equivalent
+  /// angle nearest the last one); elevation above 270 is below the horizon.
+  void on_encoder_reading(double now_s, double az_deg, double el_deg);
+
+  /// One control tick: the duties to apply until the next. `rate` is the target's sky rate
+  /// (deg/s), used as feed-forward while tracking.
+  Duties tick(double now_s, const Demand& demand, const AzEl& rate_deg_s);
+
+  /// The sky position (azimuth 0..360), or nullopt while a reading is stale or an axis is faulted.
+  [[nodiscard]] std::optional<AzEl> sky_position(double now_s) const;
+  [[nodiscard]] AxisStatus az() const { return status(az_); }
+  [[nodiscard]] AxisStatus el() const { return status(el_); }
+  [[nodiscard]] bool faulted() const;
+  [[nodiscard]] std::uint64_t starts_az() const { return az_.controller.starts(); }
+  [[nodiscard]] std::uint64_t starts_el() const { return el_.controller.starts(); }
+  [[nodiscard]] const StationControlConfig& config() const { return config_; }
+
+  /// Stops both motors now (E-stop or shutdown) and latches an E-stop fault.
+  void emergency_stop(double now_s);
+  /// Clears latched faults (the operator's explicit reset).
+  void clear_faults();
+
+ private:
+  struct Axis {
+    AxisController controller;
+    AxisSupervisor supervisor;
+    double mount_deg;
+  };
+  static AxisStatus status(const Axis& axis);
+  double drive(Axis& axis, double now_s, std::optional<double> target_deg, double rate_deg_s) const;
+  [[nodiscard]] std::optional<double> jog_target(int direction, bool azimuth) const;
+
+  StationControlConfig config_;
+  Axis az_;
+  Axis el_;
+};
+
+}  // namespace azt::control

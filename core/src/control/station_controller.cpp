@@ -1,0 +1,93 @@
+#include "azt/control/station_controller.hpp"
+
+#include <cmath>
+
+namespace azt::control {
+namespace {
+
+SupervisorConfig with_lsb(SupervisorConfig s, const AxisControlConfig& c) {
+  s.lsb_deg = c.lsb_deg;
+  return s;
+}
+
+}  // namespace
+
+StationController::StationController(const StationControlConfig& config, AzEl start_mount)
+    : config_(config),
+      az_{AxisController(config.az_control),
+          AxisSupervisor(with_lsb(config.az_supervisor, config.az_control)), start_mount.az_deg},
+      el_{AxisController(config.el_control),
+          AxisSupervisor(with_lsb(config.el_supervisor, config.el_control)), start_mount.el_deg} {}
+
+void StationController::on_encoder_reading(double now_s, double az_deg, double el_deg) {
+  const double az_mount = plan_azimuth(az_.mount_deg, az_deg, config_.az_range);
+  const double el_mount = el_deg > 270.0 ? el_deg - 360.0 : el_deg;
+  if (az_.supervisor.on_reading(now_s, az_mount)) az_.mount_deg = az_mount;
+  if (el_.supervisor.on_reading(now_s, el_mount)) el_.mount_deg = el_mount;
+}
+
+std::optional<double> StationController::jog_target(int direction, bool azimuth) const {
+  if (direction == 0) return std::nullopt;
+  if (azimuth) return direction > 0 ? config_.az_range.max_deg : config_.az_range.min_deg;
+  return direction > 0 ? config_.el_range.max_deg : config_.el_range.min_deg;
+}
+
+Duties StationController::tick(double now_s, const Demand& demand, const AzEl& rate_deg_s) {
+  std::optional<double> az_target;
+  std::optional<double> el_target;
+  AzEl rate = rate_deg_s;
+  if (demand.position) {
+    az_target = plan_azimuth(az_.mount_deg, demand.position->az_deg, config_.az_range);
+    el_target = plan_elevation(demand.position->el_deg, config_.el_range);
+  } else if (demand.jog) {
+    // A continuous move runs to the end of the travel at full speed; the controller's
+    // deceleration zone stops it there if nobody stops it first.
+    az_target = jog_target(demand.jog->az, true);
+    el_target = jog_target(demand.jog->el, false);
+    rate = AzEl{};
+  }
+  return Duties{drive(az_, now_s, az_target, rate.az_deg),
+                drive(el_, now_s, el_target, rate.el_deg)};
+}
+
+double StationController::drive(Axis& axis, double now_s, std::optional<double> target_deg,
+                                double rate_deg_s) const {
+  if (!target_deg) {
+    // Holding: let any move finish its soft stop at the present position.
+    target_deg = axis.mount_deg;
+    rate_deg_s = 0.0;
+  }
+  const double duty =
+      axis.controller.update(*target_deg, axis.mount_deg, rate_deg_s, config_.tick_s);
+  const auto verdict = axis.supervisor.check(now_s, duty, *target_deg - axis.mount_deg);
+  if (!verdict.allow_motion) axis.controller.halt();
+  return axis.controller.duty();
+}
+
+std::optional<AzEl> StationController::sky_position(double now_s) const {
+  if (faulted() || az_.supervisor.stale(now_s) || el_.supervisor.stale(now_s)) return std::nullopt;
+  return AzEl{wrap_360(az_.mount_deg), el_.mount_deg};
+}
+
+bool StationController::faulted() const {
+  return az_.supervisor.fault() != FaultKind::None || el_.supervisor.fault() != FaultKind::None;
+}
+
+AxisStatus StationController::status(const Axis& axis) {
+  return AxisStatus{axis.mount_deg, axis.controller.duty(), axis.controller.moving(),
+                    axis.supervisor.fault(), axis.supervisor.reason()};
+}
+
+void StationController::emergency_stop(double now_s) {
+  for (Axis* axis : {&az_, &el_}) {
+    axis->supervisor.emergency_stop(now_s);
+    axis->controller.halt();
+  }
+}
+
+void StationController::clear_faults() {
+  az_.supervisor.clear();
+  el_.supervisor.clear();
+}
+
+}  // namespace azt::control
