@@ -53,16 +53,15 @@ class StationLoop {
  public:
   explicit StationLoop(const StationSimSetup& setup)
       : setup_(setup),
-        az_plant_(setup.az_plant),
-        el_plant_(setup.el_plant),
-        station_(control_config(setup), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}),
-        decoder_(accept_for(setup.frame_version)),
-        rng_(setup.seed) {}
+        antenna_(setup.az_plant, setup.el_plant, setup.frame_version, setup.link, setup.seed),
+        station_(control_config(setup), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}) {}
 
   /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
   void tick(double t_s, const std::optional<AzEl>& demand, const AzEl& rate_deg_s) {
     inject_due_faults(t_s);
-    transmit_frame(t_s);
+    if (const auto reading = antenna_.transmit_frame()) {
+      station_.on_encoder_reading(t_s, reading->az_deg, reading->el_deg);
+    }
     control::Demand d;
     d.position = demand;
     const control::Duties duties = station_.tick(t_s, d, rate_deg_s);
@@ -71,18 +70,14 @@ class StationLoop {
         max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(axis.duty));
       }
     }
-    const double dt = setup_.tick_s / setup_.plant_substeps;
-    for (int i = 0; i < setup_.plant_substeps; ++i) {
-      az_plant_.step(duties.az, dt);
-      el_plant_.step(duties.el, dt);
-    }
+    antenna_.step(duties.az, duties.el, setup_.tick_s, setup_.plant_substeps);
   }
 
   [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
-  [[nodiscard]] const AxisPlant& az_plant() const { return az_plant_; }
-  [[nodiscard]] const AxisPlant& el_plant() const { return el_plant_; }
+  [[nodiscard]] const AxisPlant& az_plant() const { return antenna_.az(); }
+  [[nodiscard]] const AxisPlant& el_plant() const { return antenna_.el(); }
   [[nodiscard]] const control::StationController& station() const { return station_; }
-  [[nodiscard]] const proto::HubDecoder& decoder() const { return decoder_; }
+  [[nodiscard]] const proto::HubDecoder& decoder() const { return antenna_.decoder(); }
 
   void collect_faults(std::vector<std::string>& out, double t_s) {
     const std::pair<const char*, control::AxisStatus> axes[] = {{"az", station_.az()},
@@ -102,49 +97,13 @@ class StationLoop {
     for (; next_fault_ < setup_.plant_faults.size() && setup_.plant_faults[next_fault_].at_s <= t_s;
          ++next_fault_) {
       const ScheduledFault& f = setup_.plant_faults[next_fault_];
-      (f.azimuth ? az_plant_ : el_plant_).inject(f.fault);
-    }
-  }
-
-  static proto::HubAccept accept_for(proto::HubFrameVersion v) {
-    return v == proto::HubFrameVersion::Crc8 ? proto::HubAccept::Crc8Only
-                                             : proto::HubAccept::SeedOnly;
-  }
-
-  void transmit_frame(double t_s) {
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    if (!link_started_) {
-      // Our hub firmware sends a delimiter at boot, so the first frame is not taken for the tail
-      // of an earlier one.
-      proto::HubFrame unused{};
-      decoder_.push(0x00, unused);
-      link_started_ = true;
-    }
-    if (u(rng_) < setup_.link.frame_loss) return;
-    const proto::HubReading reading{az_plant_.encoder_bits(), el_plant_.encoder_bits(),
-                                    az_plant_.encoder_raw(), el_plant_.encoder_raw()};
-    std::array<std::uint8_t, proto::kHubMaxFrameBytes> frame{};
-    const std::size_t n =
-        proto::encode_hub_frame(reading, setup_.frame_version, frame.data(), frame.size());
-    for (std::size_t i = 0; i < n; ++i) {
-      std::uint8_t byte = frame[i];
-      if (u(rng_) < setup_.link.byte_corruption) byte = static_cast<std::uint8_t>(rng_() & 0xFF);
-      proto::HubFrame decoded{};
-      if (decoder_.push(byte, decoded) == proto::HubFrameStatus::Ok) {
-        const proto::HubReading& r = decoded.reading;
-        station_.on_encoder_reading(t_s, proto::hub_raw_to_deg(r.az_raw, r.az_bits),
-                                    proto::hub_raw_to_deg(r.el_raw, r.el_bits));
-      }
+      antenna_.inject(f.azimuth, f.fault);
     }
   }
 
   const StationSimSetup& setup_;
-  AxisPlant az_plant_;
-  AxisPlant el_plant_;
+  SimAntenna antenna_;
   control::StationController station_;
-  proto::HubDecoder decoder_;
-  std::mt19937_64 rng_;
-  bool link_started_ = false;
   std::array<bool, 2> fault_reported_{};
   std::size_t next_fault_ = 0;  ///< plant_faults are sorted by time
   double max_duty_after_fault_ = 0.0;

@@ -13,14 +13,9 @@
 #include "azt/control/supervisor.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "azt/sim/axis_plant.hpp"
+#include "azt/sim/sim_antenna.hpp"
 
 namespace azt::sim {
-
-/// Frame-level faults of the simulated EncoderHub link (probabilities per frame / per byte).
-struct LinkFaults {
-  double frame_loss = 0.0;       ///< a whole frame never arrives
-  double byte_corruption = 0.0;  ///< each byte replaced by a random one
-};
 
 /// A plant fault that starts at a given simulated time.
 struct ScheduledFault {

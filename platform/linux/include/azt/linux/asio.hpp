@@ -1,0 +1,6 @@
+#pragma once
+// The one way to include Boost.Asio: Boost 1.74's headers use std::exchange without including
+// <utility>, which g++ 12 in C++20 mode does not pull in by itself (DESIGN.md "Traps").
+#include <utility>
+
+#include <boost/asio.hpp>

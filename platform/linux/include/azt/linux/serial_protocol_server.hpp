@@ -1,0 +1,55 @@
+#pragma once
+// A serial-line protocol server (GS-232, EasyComm, SPID) on a real serial device or on a
+// pseudo-terminal that azeltrack creates and links at a configured path, so a PC program (or
+// Hamlib's rotctl) opens that path as if it were the controller's COM port.
+//
+// Device syntax: "pty:/run/azeltrack/gs232b" (pseudo-terminal, symlink there) or a device path
+// ("/dev/ttyUSB0"; opened exclusively, raw 8N1 at the configured baud).
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "azt/linux/asio.hpp"
+#include "azt/proto/rotator_service.hpp"
+#include "azt/util/result.hpp"
+
+namespace azt::linux_os {
+
+class SerialProtocolServer {
+ public:
+  using Log = std::function<void(const std::string& event)>;
+
+  /// Opens the device (or creates the pseudo-terminal and its link). Errors name the device and
+  /// the reason: missing, busy (another program has it open exclusively), not a tty, bad baud.
+  static Result<std::unique_ptr<SerialProtocolServer>> open(
+      boost::asio::io_context& io, const std::string& device, unsigned baud,
+      std::unique_ptr<proto::ProtocolSession> session, Log log);
+  ~SerialProtocolServer();
+  SerialProtocolServer(const SerialProtocolServer&) = delete;
+  SerialProtocolServer& operator=(const SerialProtocolServer&) = delete;
+
+  /// The path clients open: the link of a pseudo-terminal, or the device itself.
+  [[nodiscard]] const std::string& path() const { return path_; }
+  void close();
+
+ private:
+  SerialProtocolServer(boost::asio::io_context& io, std::unique_ptr<proto::ProtocolSession> s,
+                       Log log);
+  void read();
+  void write(std::string bytes);
+
+  boost::asio::posix::stream_descriptor stream_;
+  int keep_slave_fd_ = -1;  ///< our own open slave end: reads never fail with EIO between clients
+  std::string path_;
+  std::string link_;  ///< the symlink we created, removed on close
+  std::unique_ptr<proto::ProtocolSession> session_;
+  Log log_;
+  std::array<char, 1024> buffer_{};
+  std::string pending_;
+  bool writing_ = false;
+  std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
+};
+
+}  // namespace azt::linux_os

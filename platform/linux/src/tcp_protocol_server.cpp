@@ -1,0 +1,188 @@
+#include "azt/linux/tcp_protocol_server.hpp"
+
+#include <algorithm>
+#include <array>
+#include <deque>
+
+namespace azt::linux_os {
+
+namespace asio = boost::asio;
+using asio::ip::tcp;
+
+/// One client: reads feed the session; replies are queued and written one at a time.
+class TcpProtocolServer::Connection : public std::enable_shared_from_this<Connection> {
+ public:
+  Connection(tcp::socket socket, std::unique_ptr<proto::ProtocolSession> session,
+             std::string client, ConnectionLog log, std::size_t max_pending,
+             std::shared_ptr<std::size_t> live)
+      : socket_(std::move(socket)),
+        session_(std::move(session)),
+        client_(std::move(client)),
+        log_(std::move(log)),
+        max_pending_(max_pending),
+        live_(std::move(live)) {
+    ++*live_;
+  }
+  ~Connection() { --*live_; }
+  Connection(const Connection&) = delete;
+  Connection& operator=(const Connection&) = delete;
+
+  void start() { read(); }
+
+  void close(const std::string& why) {
+    if (closed_) return;
+    closed_ = true;
+    boost::system::error_code ignored;
+    socket_.shutdown(tcp::socket::shutdown_both, ignored);
+    socket_.close(ignored);
+    if (log_) log_(client_, "disconnected: " + why);
+  }
+
+ private:
+  void read() {
+    socket_.async_read_some(
+        asio::buffer(buffer_), [self = shared_from_this()](boost::system::error_code ec,
+                                                           std::size_t n) { self->on_read(ec, n); });
+  }
+
+  void on_read(boost::system::error_code ec, std::size_t n) {
+    if (closed_) return;
+    if (ec) {
+      close(ec == asio::error::eof ? "closed by the client" : ec.message());
+      return;
+    }
+    std::string reply = session_->feed(std::string_view(buffer_.data(), n));
+    if (!reply.empty()) queue(std::move(reply));
+    if (closed_) return;
+    if (session_->finished()) {
+      finishing_ = true;
+      if (pending_.empty()) close("client quit");
+      return;
+    }
+    read();
+  }
+
+  void queue(std::string bytes) {
+    pending_bytes_ += bytes.size();
+    if (pending_bytes_ > max_pending_) {
+      // A client that sends but never reads would grow the queue without bound (slowloris).
+      close("not reading its replies (" + std::to_string(pending_bytes_) + " bytes queued)");
+      return;
+    }
+    pending_.push_back(std::move(bytes));
+    if (pending_.size() == 1) write();
+  }
+
+  void write() {
+    asio::async_write(socket_, asio::buffer(pending_.front()),
+                      [self = shared_from_this()](boost::system::error_code ec, std::size_t) {
+                        self->on_written(ec);
+                      });
+  }
+
+  void on_written(boost::system::error_code ec) {
+    if (closed_) return;
+    if (ec) {
+      close(ec.message());
+      return;
+    }
+    pending_bytes_ -= pending_.front().size();
+    pending_.pop_front();
+    if (!pending_.empty()) {
+      write();
+    } else if (finishing_) {
+      close("client quit");
+    }
+  }
+
+  tcp::socket socket_;
+  std::unique_ptr<proto::ProtocolSession> session_;
+  std::string client_;
+  ConnectionLog log_;
+  std::size_t max_pending_;
+  std::shared_ptr<std::size_t> live_;
+  std::array<char, 4096> buffer_{};
+  std::deque<std::string> pending_;
+  std::size_t pending_bytes_ = 0;
+  bool finishing_ = false;
+  bool closed_ = false;
+};
+
+TcpProtocolServer::TcpProtocolServer(asio::io_context& io, std::string name,
+                                     SessionFactory factory, ConnectionLog log,
+                                     TcpServerLimits limits)
+    : acceptor_(io),
+      name_(std::move(name)),
+      factory_(std::move(factory)),
+      log_(std::move(log)),
+      limits_(limits),
+      live_(std::make_shared<std::size_t>(0)) {}
+
+TcpProtocolServer::~TcpProtocolServer() { close(); }
+
+Result<std::unique_ptr<TcpProtocolServer>> TcpProtocolServer::open(
+    asio::io_context& io, const std::string& name, const std::string& bind_address,
+    unsigned short port, SessionFactory factory, ConnectionLog log, TcpServerLimits limits) {
+  std::unique_ptr<TcpProtocolServer> server(
+      new TcpProtocolServer(io, name, std::move(factory), std::move(log), limits));
+  boost::system::error_code ec;
+  const auto address = asio::ip::make_address(bind_address, ec);
+  if (ec) return fail(name + ": bind address '" + bind_address + "' is not an IP address");
+  const tcp::endpoint endpoint(address, port);
+  const auto where = name + " on " + bind_address + ":" + std::to_string(port);
+  if (server->acceptor_.open(endpoint.protocol(), ec); ec) {
+    return fail(where + ": " + ec.message());
+  }
+  server->acceptor_.set_option(tcp::acceptor::reuse_address(true), ec);
+  if (server->acceptor_.bind(endpoint, ec); ec) return fail(where + ": " + ec.message());
+  if (server->acceptor_.listen(asio::socket_base::max_listen_connections, ec); ec) {
+    return fail(where + ": " + ec.message());
+  }
+  server->accept_next();
+  return server;
+}
+
+unsigned short TcpProtocolServer::port() const {
+  boost::system::error_code ec;
+  const auto endpoint = acceptor_.local_endpoint(ec);
+  return ec ? 0 : endpoint.port();
+}
+
+std::size_t TcpProtocolServer::clients() const { return *live_; }
+
+void TcpProtocolServer::close() {
+  boost::system::error_code ignored;
+  acceptor_.close(ignored);
+  for (auto& weak : connections_) {
+    if (auto c = weak.lock()) c->close("server stopping");
+  }
+  connections_.clear();
+}
+
+void TcpProtocolServer::accept_next() {
+  acceptor_.async_accept([this](boost::system::error_code ec, tcp::socket socket) {
+    if (ec == asio::error::operation_aborted || !acceptor_.is_open()) return;
+    if (!ec) {
+      boost::system::error_code peer_ec;
+      const auto peer = socket.remote_endpoint(peer_ec);
+      const std::string client =
+          name_ + " " +
+          (peer_ec ? std::string("?") : peer.address().to_string() + ":" + std::to_string(peer.port()));
+      if (*live_ >= limits_.max_clients) {
+        if (log_) log_(client, "refused: " + std::to_string(limits_.max_clients) + " clients connected");
+        socket.close(peer_ec);
+      } else {
+        socket.set_option(tcp::no_delay(true), peer_ec);
+        auto connection = std::make_shared<Connection>(std::move(socket), factory_(client), client,
+                                                       log_, limits_.max_pending_output, live_);
+        std::erase_if(connections_, [](const auto& w) { return w.expired(); });
+        connections_.push_back(connection);
+        if (log_) log_(client, "connected");
+        connection->start();
+      }
+    }
+    accept_next();
+  });
+}
+
+}  // namespace azt::linux_os

@@ -1,0 +1,64 @@
+#include "azt/linux/udp_datagram_server.hpp"
+
+namespace azt::linux_os {
+
+namespace asio = boost::asio;
+using asio::ip::udp;
+
+UdpDatagramServer::UdpDatagramServer(asio::io_context& io, std::string name,
+                                     unsigned short reply_port, Handler handler)
+    : socket_(io), name_(std::move(name)), reply_port_(reply_port), handler_(std::move(handler)) {}
+
+UdpDatagramServer::~UdpDatagramServer() { close(); }
+
+Result<std::unique_ptr<UdpDatagramServer>> UdpDatagramServer::open(
+    asio::io_context& io, const std::string& name, const std::string& bind_address,
+    unsigned short port, unsigned short reply_port, Handler handler) {
+  std::unique_ptr<UdpDatagramServer> server(
+      new UdpDatagramServer(io, name, reply_port, std::move(handler)));
+  boost::system::error_code ec;
+  const auto address = asio::ip::make_address(bind_address, ec);
+  if (ec) return fail(name + ": bind address '" + bind_address + "' is not an IP address");
+  const udp::endpoint endpoint(address, port);
+  const auto where = name + " on " + bind_address + ":" + std::to_string(port) + "/udp";
+  if (server->socket_.open(endpoint.protocol(), ec); ec) return fail(where + ": " + ec.message());
+  if (server->socket_.bind(endpoint, ec); ec) return fail(where + ": " + ec.message());
+  server->receive();
+  return server;
+}
+
+unsigned short UdpDatagramServer::port() const {
+  boost::system::error_code ec;
+  const auto endpoint = socket_.local_endpoint(ec);
+  return ec ? 0 : endpoint.port();
+}
+
+void UdpDatagramServer::close() {
+  *alive_ = false;
+  boost::system::error_code ignored;
+  socket_.close(ignored);
+}
+
+void UdpDatagramServer::receive() {
+  socket_.async_receive_from(
+      asio::buffer(buffer_), sender_,
+      [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
+        if (!*alive) return;
+        if (!ec) {
+          const std::string client = name_ + " " + sender_.address().to_string() + ":" +
+                                     std::to_string(sender_.port());
+          std::string reply = handler_(std::string_view(buffer_.data(), n), client);
+          if (!reply.empty()) {
+            udp::endpoint to = sender_;
+            if (reply_port_ != 0) to.port(reply_port_);
+            boost::system::error_code send_ec;
+            // Datagrams are small and the socket is non-blocking-safe for them; a dropped reply
+            // is what UDP means anyway.
+            socket_.send_to(asio::buffer(reply), to, 0, send_ec);
+          }
+        }
+        receive();
+      });
+}
+
+}  // namespace azt::linux_os
