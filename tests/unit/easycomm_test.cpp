@@ -118,7 +118,7 @@ TEST(EasyComm, Rejects) {
                                              "AZ12,5"};
   for (auto line : bad) EXPECT_FALSE(parse_easycomm(line).ok()) << "'" << line << "'";
   EXPECT_FALSE(parse_easycomm(std::string(200, 'A')).ok());
-  EasyCommLimits wide{-180.0, 540.0, -10.0, 190.0};
+  TargetLimits wide{-180.0, 540.0, -10.0, 190.0};
   EXPECT_TRUE(parse_easycomm("AZ-170.0 EL-5.5", EasyCommVersion::Two, wide).ok());
 }
 

@@ -81,7 +81,7 @@ TEST(Gs232, RejectsJunkAndOutOfRange) {
       "W123 04x", "P",       "P90",       "?",         "M010 020 030", "Q",        "\x01"};
   for (auto line : bad) EXPECT_FALSE(parse_gs232(line).ok()) << "'" << line << "'";
   EXPECT_FALSE(parse_gs232(std::string(100, 'C')).ok());
-  Gs232Limits narrow{0, 360, 0, 90};
+  TargetLimits narrow{0.0, 360.0, 0.0, 90.0};
   EXPECT_FALSE(parse_gs232("W361 000", narrow).ok());
   EXPECT_FALSE(parse_gs232("W100 091", narrow).ok());
   EXPECT_TRUE(parse_gs232("W360 090", narrow).ok());

@@ -32,12 +32,12 @@ using azt::proto::parse_rotctld_line;
 using azt::proto::RotctldCommand;
 using azt::proto::RotctldCommandKind;
 using azt::proto::RotctldError;
-using azt::proto::RotctldLimits;
+using azt::proto::TargetLimits;
 
 /// Hamlib's dummy rotator limits (reference §3: az −180…450, el 0…90).
-const RotctldLimits kDummyLimits{};
+const TargetLimits kDummyLimits{};
 
-RotctldCommand parse_ok(std::string_view line, const RotctldLimits& limits = kDummyLimits) {
+RotctldCommand parse_ok(std::string_view line, const TargetLimits& limits = kDummyLimits) {
   auto result = parse_rotctld_line(line, limits);
   if (const auto* error = std::get_if<RotctldError>(&result)) {
     ADD_FAILURE() << "'" << line << "' failed: " << error->message;
@@ -46,7 +46,7 @@ RotctldCommand parse_ok(std::string_view line, const RotctldLimits& limits = kDu
   return std::get<RotctldCommand>(result);
 }
 
-RotctldError parse_error(std::string_view line, const RotctldLimits& limits = kDummyLimits) {
+RotctldError parse_error(std::string_view line, const TargetLimits& limits = kDummyLimits) {
   auto result = parse_rotctld_line(line, limits);
   if (std::holds_alternative<RotctldCommand>(result)) {
     ADD_FAILURE() << "'" << line << "' parsed but should fail";
@@ -59,7 +59,7 @@ RotctldError parse_error(std::string_view line, const RotctldLimits& limits = kD
 /// (az_deg, el_deg) and every command succeeding. Mirrors how apps/ will use the codec.
 struct Session {
   LineAssembler lines;
-  RotctldLimits limits;
+  TargetLimits limits;
   double az_deg = 0.0;
   double el_deg = 0.0;
   bool closed = false;
@@ -135,7 +135,7 @@ TEST(Rotctld, DumpStatePlainMatchesRotctlM1Capture) {
 
 TEST(Rotctld, DumpStateReportsConfiguredLimits) {
   Session s;
-  s.limits = RotctldLimits{0.0, 360.0, -5.0, 180.0};
+  s.limits = TargetLimits{0.0, 360.0, -5.0, 180.0};
   EXPECT_EQ(s.one("\\dump_state\n"),
             "1\n1\nmin_az=0.000000\nmax_az=360.000000\nmin_el=-5.000000\nmax_el=180.000000\n"
             "south_zero=0\nrot_type=AzEl\ndone\n");

@@ -101,7 +101,7 @@ const Entry* find_entry(std::string_view token) {
 }
 
 Result<EasyCommToken> parse_token(std::string_view token, const Entry& entry,
-                                  const EasyCommLimits& limits) {
+                                  const TargetLimits& limits) {
   EasyCommToken out{entry.op};
   const std::string_view rest = token.substr(entry.text.size());
   switch (entry.args) {
@@ -125,9 +125,9 @@ Result<EasyCommToken> parse_token(std::string_view token, const Entry& entry,
   const auto angle = parse_angle(rest);
   if (!angle) return fail("EasyComm: malformed angle '" + std::string(rest) + "'");
   const bool az = entry.set_op == EasyCommOp::SetAz;
-  const double lo = az ? limits.az_min_deg : limits.el_min_deg;
-  const double hi = az ? limits.az_max_deg : limits.el_max_deg;
-  if (*angle < lo || *angle > hi) return fail("EasyComm: target out of range");
+  if (!(az ? limits.accepts_az(*angle) : limits.accepts_el(*angle))) {
+    return fail("EasyComm: target out of range");
+  }
   out.op = entry.set_op;
   out.angle_deg = *angle;
   return out;
@@ -162,7 +162,7 @@ void append_int(std::string& out, long value) {
 }  // namespace
 
 Result<EasyCommLine> parse_easycomm(std::string_view line, EasyCommVersion version,
-                                    const EasyCommLimits& limits) {
+                                    const TargetLimits& limits) {
   if (line.size() > kEasyCommMaxLineChars) return fail("EasyComm: line too long");
   std::vector<std::string_view> words;
   if (!split(line, words)) return fail("EasyComm: too many commands on one line");

@@ -54,7 +54,7 @@ std::optional<int> three_digits(std::string_view text) {
 }
 
 Result<Gs232Command> parse_args(const Entry& entry, std::string_view rest,
-                                const Gs232Limits& limits) {
+                                const TargetLimits& limits) {
   Gs232Command cmd{entry.op};
   switch (entry.args) {
     case Args::None:
@@ -72,8 +72,7 @@ Result<Gs232Command> parse_args(const Entry& entry, std::string_view rest,
   }
   const auto az = three_digits(rest.substr(0, 3));
   if (!az) return fail("GS-232: azimuth must be three digits");
-  if (*az < limits.az_min_deg || *az > limits.az_max_deg)
-    return fail("GS-232: azimuth out of range");
+  if (!limits.accepts_az(*az)) return fail("GS-232: azimuth out of range");
   cmd.az_deg = *az;
   rest.remove_prefix(3);
   if (entry.args == Args::Az) {
@@ -83,9 +82,7 @@ Result<Gs232Command> parse_args(const Entry& entry, std::string_view rest,
   if (rest.size() != 4 || rest[0] != ' ') return fail("GS-232: expected 'Waaa eee'");
   const auto el = three_digits(rest.substr(1));
   if (!el) return fail("GS-232: elevation must be three digits");
-  if (*el < limits.el_min_deg || *el > limits.el_max_deg) {
-    return fail("GS-232: elevation out of range");
-  }
+  if (!limits.accepts_el(*el)) return fail("GS-232: elevation out of range");
   cmd.el_deg = *el;
   return cmd;
 }
@@ -145,7 +142,7 @@ std::string position_reply(Gs232Op op, long az, long el, const Gs232ReplyOptions
 
 }  // namespace
 
-Result<Gs232Command> parse_gs232(std::string_view line, const Gs232Limits& limits) {
+Result<Gs232Command> parse_gs232(std::string_view line, const TargetLimits& limits) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   if (line.size() > kGs232MaxLineChars) return fail("GS-232: line too long");
   if (line.empty()) return Gs232Command{Gs232Op::Empty};

@@ -180,17 +180,14 @@ std::optional<MoveDirection> parse_direction(std::string_view text) {
   return std::nullopt;
 }
 
-bool within(double value, double low, double high) { return value >= low && value <= high; }
-
 /// Fills the kind-specific fields; returns an error message or an empty view.
-std::string_view fill_args(RotctldCommand& command, const Args& args, const RotctldLimits& limits) {
+std::string_view fill_args(RotctldCommand& command, const Args& args, const TargetLimits& limits) {
   switch (command.kind) {
     case RotctldCommandKind::SetPos: {
       const auto az = parse_angle(args.values[0]);
       const auto el = parse_angle(args.values[1]);
       if (!az || !el) return "set_pos needs two finite numbers";
-      if (!within(*az, limits.min_az_deg, limits.max_az_deg) ||
-          !within(*el, limits.min_el_deg, limits.max_el_deg)) {
+      if (!limits.accepts_az(*az) || !limits.accepts_el(*el)) {
         return "set_pos target outside the rotator's limits";
       }
       command.az_deg = *az;
@@ -250,7 +247,7 @@ std::string extended_reply(const RotctldCommand& command,
 
 }  // namespace
 
-RotctldParseResult parse_rotctld_line(std::string_view line, const RotctldLimits& limits) {
+RotctldParseResult parse_rotctld_line(std::string_view line, const TargetLimits& limits) {
   if (line.size() > kMaxLineBytes) {
     return make_error(kRprtInvalid, {}, {}, "line too long");
   }
@@ -316,13 +313,13 @@ std::string format_get_info(const RotctldCommand& command, std::string_view info
   return extended_reply(command, std::array<std::string, 1>{"Info: " + text});
 }
 
-std::string format_dump_state(const RotctldCommand& command, const RotctldLimits& limits) {
+std::string format_dump_state(const RotctldCommand& command, const TargetLimits& limits) {
   // Layout from rotctl_parse.c dump_state (reference §8.1), "%f" = 6 decimals; checked against
   // rotctld -m 1 of Hamlib 4.5.4. The extended form renames some keys but keeps rot_type/done.
-  const std::string min_az = fixed(limits.min_az_deg, 6);
-  const std::string max_az = fixed(limits.max_az_deg, 6);
-  const std::string min_el = fixed(limits.min_el_deg, 6);
-  const std::string max_el = fixed(limits.max_el_deg, 6);
+  const std::string min_az = fixed(limits.az_min_deg, 6);
+  const std::string max_az = fixed(limits.az_max_deg, 6);
+  const std::string min_el = fixed(limits.el_min_deg, 6);
+  const std::string max_el = fixed(limits.el_max_deg, 6);
   if (!command.mode.extended) {
     std::string reply = std::string(kProtocolVersion) + '\n' + std::string(kReportedModel) + '\n';
     reply += "min_az=" + min_az + "\nmax_az=" + max_az + "\nmin_el=" + min_el +

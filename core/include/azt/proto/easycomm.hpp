@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "azt/proto/line_assembler.hpp"
+#include "azt/proto/target_limits.hpp"
 #include "azt/util/result.hpp"
 
 namespace azt::proto {
@@ -65,13 +66,9 @@ struct EasyCommLine {
   bool operator==(const EasyCommLine&) const = default;
 };
 
-/// The range a target must lie in; anything outside makes the whole line an error.
-struct EasyCommLimits {
-  double az_min_deg = 0.0;
-  double az_max_deg = 450.0;
-  double el_min_deg = 0.0;
-  double el_max_deg = 180.0;
-};
+/// The default range of parse_easycomm (az 0..450, el 0..180: the SatNOGS and K3NG controllers'
+/// travel). A target outside the range makes the whole line an error.
+inline constexpr TargetLimits kEasyCommControllerLimits{0.0, 450.0, 0.0, 180.0};
 
 inline constexpr std::size_t kEasyCommMaxLineChars = 128;
 inline constexpr std::size_t kEasyCommMaxTokens = 8;
@@ -81,7 +78,7 @@ inline constexpr std::size_t kEasyCommMaxTokens = 8;
 /// set line are errors; nothing of an erroneous line is applied.
 Result<EasyCommLine> parse_easycomm(std::string_view line,
                                     EasyCommVersion version = EasyCommVersion::Two,
-                                    const EasyCommLimits& limits = {});
+                                    const TargetLimits& limits = kEasyCommControllerLimits);
 
 /// What the queries report.
 struct EasyCommState {

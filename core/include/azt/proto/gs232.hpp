@@ -19,6 +19,7 @@
 #include <string_view>
 
 #include "azt/proto/line_assembler.hpp"
+#include "azt/proto/target_limits.hpp"
 #include "azt/util/result.hpp"
 
 namespace azt::proto {
@@ -60,20 +61,18 @@ struct Gs232Command {
   bool operator==(const Gs232Command&) const = default;
 };
 
-/// The range a target must lie in; anything outside is a parse error ("?>").
-struct Gs232Limits {
-  int az_min_deg = 0;
-  int az_max_deg = 450;
-  int el_min_deg = 0;
-  int el_max_deg = 180;
-};
+/// What a real GS-232 controller takes (az 0..450 on a 450° rotator, el 0..180 on a G-5500 with
+/// flip-over): the default range of parse_gs232. Targets outside the range are parse errors ("?>");
+/// the whole-degree targets are compared as doubles.
+inline constexpr TargetLimits kGs232ControllerLimits{0.0, 450.0, 0.0, 180.0};
 
 /// Longest command line kept (timed-step lists are not supported, so lines are short).
 inline constexpr std::size_t kGs232MaxLineChars = 64;
 
 /// Parses one line without its CR (a stray trailing CR is tolerated). Strict: unknown commands,
 /// wrong digit counts, out-of-range targets and trailing junk are errors.
-Result<Gs232Command> parse_gs232(std::string_view line, const Gs232Limits& limits = {});
+Result<Gs232Command> parse_gs232(std::string_view line,
+                                 const TargetLimits& limits = kGs232ControllerLimits);
 
 struct Gs232ReplyOptions {
   Gs232Variant variant = Gs232Variant::B;

@@ -27,6 +27,8 @@
 #include <string_view>
 #include <variant>
 
+#include "azt/proto/target_limits.hpp"
+
 namespace azt::proto {
 
 /// Hamlib error codes as sent on the wire (include/hamlib/rig.h, sent negated; reference §8.1).
@@ -36,15 +38,6 @@ inline constexpr int kRprtNotImplemented = -4;  ///< RIG_ENIMPL: not implemented
 inline constexpr int kRprtIo = -6;              ///< RIG_EIO: I/O error (e.g. position unreadable)
 inline constexpr int kRprtRejected = -9;        ///< RIG_ERJCTED: command rejected (e.g. faulted)
 inline constexpr int kRprtLimit = -21;          ///< RIG_ELIMIT: limit exceeded (Hamlib ≥ 4.6)
-
-/// The rotator's travel as announced by `\dump_state` and enforced on `P` (degrees; azimuth
-/// clockwise from north, elevation up from the horizon).
-struct RotctldLimits {
-  double min_az_deg = -180.0;
-  double max_az_deg = 450.0;
-  double min_el_deg = 0.0;
-  double max_el_deg = 90.0;
-};
 
 /// How a reply is framed. Plain is Hamlib's default mode; extended echoes the command first and
 /// ends with `RPRT n`. `separator` is '\n' for the `+` prefix, otherwise the prefix character.
@@ -104,7 +97,8 @@ struct RotctldError {
 using RotctldParseResult = std::variant<RotctldCommand, RotctldError>;
 
 /// Parses one line (without its terminator). Pure and locale-free.
-RotctldParseResult parse_rotctld_line(std::string_view line, const RotctldLimits& limits);
+/// `limits` is the travel enforced on `P` (and announced by `\dump_state`).
+RotctldParseResult parse_rotctld_line(std::string_view line, const TargetLimits& limits);
 
 /// `RPRT code` for a command without output (P, S, K, M, R) or for a failed command.
 std::string format_rprt(int code, const ResponseMode& mode, std::string_view echo);
@@ -118,7 +112,7 @@ std::string format_get_pos(const RotctldCommand& command, double az_deg, double 
 /// The `_` reply: the info text (one line; line breaks in it are replaced by spaces).
 std::string format_get_info(const RotctldCommand& command, std::string_view info);
 /// The `\dump_state` reply that netrotctl (`rotctl -m 2`) parses on connect.
-std::string format_dump_state(const RotctldCommand& command, const RotctldLimits& limits);
+std::string format_dump_state(const RotctldCommand& command, const TargetLimits& limits);
 
 /// What LineAssembler hands to its callback.
 enum class LineStatus {
