@@ -35,7 +35,11 @@ const toml::node* ConfigSection::node(std::string_view key) const {
 bool ConfigSection::has(std::string_view key) const { return node(key) != nullptr; }
 
 void ConfigSection::fail(std::string_view key, const std::string& what) const {
-  file_.fail("[" + name_ + "]." + std::string(key) + " " + what);
+  const toml::node* n = node(key);
+  const auto line =
+      n != nullptr ? n->source().begin.line : (table_ != nullptr ? table_->source().begin.line : 0);
+  file_.fail((line > 0 ? "line " + std::to_string(line) + ": " : std::string()) + "[" + name_ +
+             "]." + std::string(key) + " " + what);
 }
 
 std::optional<double> ConfigSection::number(std::string_view key) const {
@@ -92,8 +96,9 @@ ConfigFile ConfigFile::load(const std::string& path) {
   }
   ConfigFile file(path, std::move(root));
   for (const auto& [key, value] : file.root_) {
-    if (!allowed_key(key.str(),
-                     {"station", "sky", "atmosphere", "control", "geometry", "park", "sim"})) {
+    if (!allowed_key(key.str(), {"schema_version", "station", "sky", "atmosphere", "control",
+                                 "geometry", "park", "sim", "target", "antenna", "hamlib",
+                                 "rotctld", "serial", "pstrotator", "log"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }
@@ -104,6 +109,20 @@ ConfigSection ConfigFile::section(std::string_view name,
                                   std::initializer_list<std::string_view> allowed) const {
   const std::string n(name);
   return ConfigSection(*this, checked_table(*this, root_.get(name), n, allowed), n);
+}
+
+std::vector<ConfigSection> ConfigFile::section_array(
+    std::string_view name, std::initializer_list<std::string_view> allowed) const {
+  std::vector<ConfigSection> out;
+  const toml::node* n = root_.get(name);
+  if (n == nullptr) return out;
+  const toml::array* a = n->as_array();
+  if (a == nullptr) fail("[[" + std::string(name) + "]] must be an array of tables");
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const std::string item = std::string(name) + "#" + std::to_string(i + 1);
+    out.emplace_back(*this, checked_table(*this, a->get(i), item, allowed), item);
+  }
+  return out;
 }
 
 void ConfigFile::fail(const std::string& what) const {

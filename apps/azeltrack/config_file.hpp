@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace azt::app {
 
@@ -55,6 +56,10 @@ class ConfigFile {
                                       std::initializer_list<std::string_view> allowed) const;
   [[nodiscard]] const toml::table& root() const { return root_; }
   [[nodiscard]] const std::string& path() const { return path_; }
+  /// An array of tables (`[[serial]]`), each checked against the allowed keys; items are named
+  /// "serial#1", "serial#2" … in errors.
+  [[nodiscard]] std::vector<ConfigSection> section_array(
+      std::string_view name, std::initializer_list<std::string_view> allowed) const;
   [[noreturn]] void fail(const std::string& what) const;
 
  private:

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
       "  azeltrack locator FN06HE                               centre of a locator square\n"
       "  azeltrack watch --config examples/station.toml         live sky view (scripts/run)\n"
       "  azeltrack simulate --scenario moon --hours 6           the controller on the sim antenna\n"
+      "  azeltrack serve --config examples/sim.toml            the daemon (scripts/run)\n"
       "  azeltrack hub encode --az-bits 12 --el-bits 12 --az-raw 2048 --el-raw 100\n"
       "Exit codes: 0 success, 1 failure, 2 bad arguments.");
   const azt::app::Runner sky = azt::app::add_sky_command(app);
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
   const azt::app::Runner watch = azt::app::add_watch_command(app);
   const azt::app::Runner simulate = azt::app::add_simulate_command(app);
   const azt::app::Runner hub = azt::app::add_hub_command(app);
+  const azt::app::Runner serve = azt::app::add_serve_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
@@ -55,6 +57,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("watch")) return watch();
     if (app.got_subcommand("simulate")) return simulate();
     if (app.got_subcommand("hub")) return hub();
+    if (app.got_subcommand("serve")) return serve();
   } catch (const azt::app::UsageError& e) {
     azt::app::print_error(e.what());
     return azt::app::kExitUsage;

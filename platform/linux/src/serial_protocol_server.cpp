@@ -19,6 +19,8 @@ std::string errno_text() { return std::strerror(errno); }
 
 Result<speed_t> termios_speed(unsigned baud) {
   switch (baud) {
+    case 600:
+      return speed_t{B600};
     case 1200:
       return speed_t{B1200};
     case 2400:
@@ -37,7 +39,7 @@ Result<speed_t> termios_speed(unsigned baud) {
       return speed_t{B115200};
     default:
       return fail("baud " + std::to_string(baud) +
-                  " is not one of 1200 2400 4800 9600 19200 38400 57600 115200");
+                  " is not one of 600 1200 2400 4800 9600 19200 38400 57600 115200");
   }
 }
 
@@ -171,19 +173,20 @@ void SerialProtocolServer::close() {
 }
 
 void SerialProtocolServer::read() {
-  stream_.async_read_some(
-      asio::buffer(buffer_), [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
-        if (!*alive) return;
-        if (ec) {
-          // A real device that went away (USB unplugged): report once and stop reading; the
-          // daemon keeps running and the other servers are unaffected.
-          if (log_) log_("read failed, server stopped: " + ec.message());
-          return;
-        }
-        std::string reply = session_->feed(std::string_view(buffer_.data(), n));
-        if (!reply.empty()) write(std::move(reply));
-        read();
-      });
+  stream_.async_read_some(asio::buffer(buffer_),
+                          [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
+                            if (!*alive) return;
+                            if (ec) {
+                              // A real device that went away (USB unplugged): report once and stop
+                              // reading; the daemon keeps running and the other servers are
+                              // unaffected.
+                              if (log_) log_("read failed, server stopped: " + ec.message());
+                              return;
+                            }
+                            std::string reply = session_->feed(std::string_view(buffer_.data(), n));
+                            if (!reply.empty()) write(std::move(reply));
+                            read();
+                          });
 }
 
 void SerialProtocolServer::write(std::string bytes) {

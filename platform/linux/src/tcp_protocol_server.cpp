@@ -40,9 +40,9 @@ class TcpProtocolServer::Connection : public std::enable_shared_from_this<Connec
 
  private:
   void read() {
-    socket_.async_read_some(
-        asio::buffer(buffer_), [self = shared_from_this()](boost::system::error_code ec,
-                                                           std::size_t n) { self->on_read(ec, n); });
+    socket_.async_read_some(asio::buffer(buffer_),
+                            [self = shared_from_this()](boost::system::error_code ec,
+                                                        std::size_t n) { self->on_read(ec, n); });
   }
 
   void on_read(boost::system::error_code ec, std::size_t n) {
@@ -108,9 +108,8 @@ class TcpProtocolServer::Connection : public std::enable_shared_from_this<Connec
   bool closed_ = false;
 };
 
-TcpProtocolServer::TcpProtocolServer(asio::io_context& io, std::string name,
-                                     SessionFactory factory, ConnectionLog log,
-                                     TcpServerLimits limits)
+TcpProtocolServer::TcpProtocolServer(asio::io_context& io, std::string name, SessionFactory factory,
+                                     ConnectionLog log, TcpServerLimits limits)
     : acceptor_(io),
       name_(std::move(name)),
       factory_(std::move(factory)),
@@ -167,9 +166,11 @@ void TcpProtocolServer::accept_next() {
       const auto peer = socket.remote_endpoint(peer_ec);
       const std::string client =
           name_ + " " +
-          (peer_ec ? std::string("?") : peer.address().to_string() + ":" + std::to_string(peer.port()));
+          (peer_ec ? std::string("?")
+                   : peer.address().to_string() + ":" + std::to_string(peer.port()));
       if (*live_ >= limits_.max_clients) {
-        if (log_) log_(client, "refused: " + std::to_string(limits_.max_clients) + " clients connected");
+        if (log_)
+          log_(client, "refused: " + std::to_string(limits_.max_clients) + " clients connected");
         socket.close(peer_ec);
       } else {
         socket.set_option(tcp::no_delay(true), peer_ec);

@@ -45,8 +45,8 @@ void UdpDatagramServer::receive() {
       [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
         if (!*alive) return;
         if (!ec) {
-          const std::string client = name_ + " " + sender_.address().to_string() + ":" +
-                                     std::to_string(sender_.port());
+          const std::string client =
+              name_ + " " + sender_.address().to_string() + ":" + std::to_string(sender_.port());
           std::string reply = handler_(std::string_view(buffer_.data(), n), client);
           if (!reply.empty()) {
             udp::endpoint to = sender_;

@@ -32,12 +32,9 @@ using ConnectionLog = std::function<void(const std::string& client, const std::s
 class TcpProtocolServer {
  public:
   /// Binds and listens; an error names the address and the reason (address in use, …).
-  static Result<std::unique_ptr<TcpProtocolServer>> open(boost::asio::io_context& io,
-                                                         const std::string& name,
-                                                         const std::string& bind_address,
-                                                         unsigned short port,
-                                                         SessionFactory factory, ConnectionLog log,
-                                                         TcpServerLimits limits = {});
+  static Result<std::unique_ptr<TcpProtocolServer>> open(
+      boost::asio::io_context& io, const std::string& name, const std::string& bind_address,
+      unsigned short port, SessionFactory factory, ConnectionLog log, TcpServerLimits limits = {});
   ~TcpProtocolServer();
   TcpProtocolServer(const TcpProtocolServer&) = delete;
   TcpProtocolServer& operator=(const TcpProtocolServer&) = delete;

@@ -20,12 +20,9 @@ class UdpDatagramServer {
   /// Returns the reply datagram, or an empty string for none. `client` names the sender.
   using Handler = std::function<std::string(std::string_view datagram, const std::string& client)>;
 
-  static Result<std::unique_ptr<UdpDatagramServer>> open(boost::asio::io_context& io,
-                                                         const std::string& name,
-                                                         const std::string& bind_address,
-                                                         unsigned short port,
-                                                         unsigned short reply_port,
-                                                         Handler handler);
+  static Result<std::unique_ptr<UdpDatagramServer>> open(
+      boost::asio::io_context& io, const std::string& name, const std::string& bind_address,
+      unsigned short port, unsigned short reply_port, Handler handler);
   ~UdpDatagramServer();
   UdpDatagramServer(const UdpDatagramServer&) = delete;
   UdpDatagramServer& operator=(const UdpDatagramServer&) = delete;

@@ -1,0 +1,41 @@
+#pragma once
+// The antenna behind the daemon: the simulated one (plants, hub link and the station's own
+// controller), or an existing rotator controller driven through Hamlib.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "azt/control/modes.hpp"
+#include "azt/proto/rotator_service.hpp"
+#include "daemon_config.hpp"
+
+namespace azt::app {
+
+class AntennaBackend {
+ public:
+  AntennaBackend() = default;
+  AntennaBackend(const AntennaBackend&) = delete;
+  AntennaBackend& operator=(const AntennaBackend&) = delete;
+  virtual ~AntennaBackend() = default;
+
+  /// One control tick at `now_s` (monotonic seconds): move towards `demand`. `rate` is the
+  /// target's sky rate (deg/s) for feed-forward.
+  virtual void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) = 0;
+  /// nullopt while the position is unknown (stale sensors, lost link).
+  [[nodiscard]] virtual std::optional<proto::PositionReport> position(double now_s) const = 0;
+  /// Motors off now (shutdown, fatal paths).
+  virtual void stop_now(double now_s) = 0;
+  /// Latched faults in words (empty when healthy).
+  [[nodiscard]] virtual std::vector<std::string> faults() const = 0;
+  virtual void clear_faults() = 0;
+  [[nodiscard]] virtual std::string describe() const = 0;
+};
+
+/// The simulated antenna of the [sim] tables, in real time.
+std::unique_ptr<AntennaBackend> make_sim_backend(const DaemonConfig& config);
+/// A Hamlib rotator ([hamlib]); throws UsageError naming the model/device when it cannot open.
+std::unique_ptr<AntennaBackend> make_hamlib_backend(const DaemonConfig& config);
+
+}  // namespace azt::app

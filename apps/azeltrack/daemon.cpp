@@ -1,0 +1,273 @@
+#include "daemon.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "antenna_backend.hpp"
+#include "azt/linux/asio.hpp"
+#include "azt/linux/serial_protocol_server.hpp"
+#include "azt/linux/systemd_notify.hpp"
+#include "azt/linux/tcp_protocol_server.hpp"
+#include "azt/linux/udp_datagram_server.hpp"
+#include "azt/proto/pstrotator.hpp"
+#include "azt/proto/sessions.hpp"
+#include "cli_error.hpp"
+#include "sky_follower.hpp"
+#include "sky_setup.hpp"
+#include "station_service.hpp"
+#include "tick_stats.hpp"
+
+namespace azt::app {
+namespace {
+
+namespace asio = boost::asio;
+using SteadyClock = std::chrono::steady_clock;
+
+/// At most `burst` lines per key per minute; the rest are counted and summarised, so a client
+/// reconnecting in a loop cannot flood the journal.
+class RateLimitedLog {
+ public:
+  void info(const std::string& key, const std::string& line, double now_s) {
+    auto& b = buckets_[key];
+    if (now_s - b.window_start_s > 60.0) {
+      if (b.suppressed > 0) spdlog::info("{}: {} similar messages suppressed", key, b.suppressed);
+      b = Bucket{now_s, 0, 0};
+    }
+    if (++b.sent <= kBurst) {
+      spdlog::info("{}", line);
+    } else {
+      ++b.suppressed;
+    }
+  }
+
+ private:
+  static constexpr int kBurst = 10;
+  struct Bucket {
+    double window_start_s = -1e9;
+    int sent = 0;
+    int suppressed = 0;
+  };
+  std::map<std::string, Bucket> buckets_;
+};
+
+std::unique_ptr<proto::ProtocolSession> serial_session(const SerialServerConfig& c,
+                                                       proto::RotatorService& service,
+                                                       const proto::TargetLimits& limits) {
+  const std::string client = c.protocol + " " + c.device;
+  if (c.protocol == "gs232a" || c.protocol == "gs232b") {
+    return proto::make_gs232_session(
+        service, client, c.protocol == "gs232a" ? proto::Gs232Variant::A : proto::Gs232Variant::B,
+        limits);
+  }
+  if (c.protocol == "easycomm1" || c.protocol == "easycomm2") {
+    return proto::make_easycomm_session(
+        service, client,
+        c.protocol == "easycomm1" ? proto::EasyCommVersion::One : proto::EasyCommVersion::Two,
+        limits);
+  }
+  proto::SpidConfig spid;
+  spid.dialect =
+      c.protocol == "rot1prog" ? proto::SpidDialect::Rot1Prog : proto::SpidDialect::Rot2Prog;
+  return proto::make_spid_session(service, client, spid);
+}
+
+class Daemon {
+ public:
+  Daemon(const DaemonConfig& config, const DaemonOptions& options)
+      : config_(config),
+        options_(options),
+        start_(SteadyClock::now()),
+        ephemeris_(open_ephemeris(config.sim.station.sky.ephemeris)),
+        sky_(*ephemeris_, config.sim.station),
+        modes_(config.park, config.out_of_range, config.sim.setup.el_range.min_deg),
+        antenna_(config.backend == "hamlib" ? make_hamlib_backend(config)
+                                            : make_sim_backend(config)),
+        service_(
+            modes_, *antenna_, config.target_limits(), config.sim.setup.el_range,
+            "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
+                config.sim.station.sky.grid,
+            [this] { return now_s(); },
+            [this](const std::string& line) { log_.info("control", line, now_s()); }),
+        signals_(io_, SIGINT, SIGTERM),
+        timer_(io_),
+        period_(std::chrono::duration_cast<SteadyClock::duration>(
+            std::chrono::duration<double>(config.sim.setup.tick_s))) {}
+
+  int run() {
+    start_target();
+    open_servers();
+    signals_.async_wait([this](boost::system::error_code ec, int signal) {
+      if (!ec) shutdown(signal == SIGINT ? "SIGINT" : "SIGTERM");
+    });
+    if (options_.run_for_s > 0.0) {
+      auto stop_timer = std::make_shared<asio::steady_timer>(io_);
+      stop_timer->expires_after(std::chrono::duration_cast<SteadyClock::duration>(
+          std::chrono::duration<double>(options_.run_for_s)));
+      stop_timer->async_wait([this, stop_timer](boost::system::error_code ec) {
+        if (!ec) shutdown("--run-for elapsed");
+      });
+    }
+    deadline_ = SteadyClock::now() + period_;
+    arm_tick();
+    spdlog::info("serving: {}; tick {:.0f} Hz", antenna_->describe(),
+                 1.0 / config_.sim.setup.tick_s);
+    notifier_.ready("tracking " + modes_.who());
+    io_.run();
+    spdlog::info("stopped; tick {}", stats_.summary());
+    return 0;
+  }
+
+ private:
+  double now_s() const {
+    return std::chrono::duration<double>(SteadyClock::now() - start_).count();
+  }
+
+  void start_target() {
+    if (config_.start_target == "stop") return;
+    const auto target = sky_.find(config_.start_target);
+    if (!target) {
+      throw UsageError("[target].name '" + config_.start_target +
+                       "' is not a configured target (sun, moon, or a [sky] source)");
+    }
+    sky_.follow(*target);
+    modes_.track(target->name);
+  }
+
+  void open_servers() {
+    const auto limits = config_.target_limits();
+    if (config_.rotctld.port != 0) {
+      auto server = linux_os::TcpProtocolServer::open(
+          io_, "rotctld", config_.rotctld.bind, config_.rotctld.port,
+          [this, limits](const std::string& client) {
+            return proto::make_rotctld_session(service_, client, limits);
+          },
+          [this](const std::string& client, const std::string& event) {
+            log_.info("rotctld", client + " " + event, now_s());
+          });
+      if (!server) throw UsageError("[rotctld]: " + server.error().message);
+      spdlog::info("rotctld protocol on {}:{} (rotctl -m 2 -r {}:{})", config_.rotctld.bind,
+                   server.value()->port(), config_.rotctld.bind, server.value()->port());
+      rotctld_ = std::move(server).value();
+    }
+    for (std::size_t i = 0; i < config_.serial.size(); ++i) {
+      const SerialServerConfig& c = config_.serial[i];
+      auto server = linux_os::SerialProtocolServer::open(
+          io_, c.device, c.baud, serial_session(c, service_, limits),
+          [this, c](const std::string& event) {
+            log_.info(c.device, c.protocol + " " + c.device + ": " + event, now_s());
+          });
+      if (!server) {
+        throw UsageError("[[serial]] #" + std::to_string(i + 1) + " (" + c.protocol +
+                         "): " + server.error().message);
+      }
+      spdlog::info("{} on {}", c.protocol, server.value()->path());
+      serial_.push_back(std::move(server).value());
+    }
+    if (config_.pstrotator.port != 0) {
+      auto server = linux_os::UdpDatagramServer::open(
+          io_, "pstrotator", config_.pstrotator.bind, config_.pstrotator.port,
+          config_.pstrotator_reply_port,
+          [this, limits](std::string_view datagram, const std::string& client) {
+            return proto::handle_pstrotator_datagram(datagram, service_, client, limits);
+          });
+      if (!server) throw UsageError("[pstrotator]: " + server.error().message);
+      spdlog::info("PstRotator UDP on {}:{} (replies to port {})", config_.pstrotator.bind,
+                   server.value()->port(), config_.pstrotator_reply_port);
+      pstrotator_ = std::move(server).value();
+    }
+  }
+
+  void arm_tick() {
+    timer_.expires_at(deadline_);
+    timer_.async_wait([this](boost::system::error_code ec) {
+      if (ec || stopping_) return;
+      const auto woke = SteadyClock::now();
+      stats_.add(std::chrono::duration<double>(woke - deadline_).count());
+      tick();
+      // Absolute deadlines: a late tick does not delay the next one. After a stall longer than
+      // a period (suspend, debugger) skip ahead instead of running a burst of ticks.
+      deadline_ += period_;
+      if (SteadyClock::now() > deadline_) {
+        stats_.overrun();
+        deadline_ = SteadyClock::now() + period_;
+      }
+      arm_tick();
+    });
+  }
+
+  void tick() {
+    const double now = now_s();
+    modes_.update(now);
+    std::optional<SkyFix> fix;
+    if (modes_.mode() == control::Mode::Track) {
+      const double unix_s =
+          std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+              .count();
+      fix = sky_.at(unix_s);
+    }
+    const control::Demand demand = modes_.demand(fix ? std::optional(fix->position) : std::nullopt);
+    antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
+    report_faults();
+    notifier_.watchdog();
+  }
+
+  void report_faults() {
+    const auto faults = antenna_->faults();
+    if (faults != last_faults_) {
+      for (const auto& f : faults) spdlog::warn("fault: {}", f);
+      if (faults.empty() && !last_faults_.empty()) spdlog::info("faults cleared");
+      last_faults_ = faults;
+    }
+  }
+
+  void shutdown(const std::string& why) {
+    if (stopping_) return;
+    stopping_ = true;
+    notifier_.stopping();
+    // Motors first, then the servers: nothing may move after this line.
+    antenna_->stop_now(now_s());
+    spdlog::info("{}: motors stopped, shutting down", why);
+    if (rotctld_) rotctld_->close();
+    for (auto& s : serial_) s->close();
+    if (pstrotator_) pstrotator_->close();
+    boost::system::error_code ignored;
+    timer_.cancel();
+    signals_.cancel(ignored);
+    io_.stop();
+  }
+
+  const DaemonConfig& config_;
+  DaemonOptions options_;
+  SteadyClock::time_point start_;
+  asio::io_context io_;
+  std::unique_ptr<astro::Ephemeris> ephemeris_;
+  SkyFollower sky_;
+  control::ModeController modes_;
+  std::unique_ptr<AntennaBackend> antenna_;
+  RateLimitedLog log_;
+  StationService service_;
+  asio::signal_set signals_;
+  asio::steady_timer timer_;
+  SteadyClock::duration period_;
+  SteadyClock::time_point deadline_;
+  TickStats stats_;
+  linux_os::SystemdNotifier notifier_;
+  std::unique_ptr<linux_os::TcpProtocolServer> rotctld_;
+  std::vector<std::unique_ptr<linux_os::SerialProtocolServer>> serial_;
+  std::unique_ptr<linux_os::UdpDatagramServer> pstrotator_;
+  std::vector<std::string> last_faults_;
+  bool stopping_ = false;
+};
+
+}  // namespace
+
+int run_daemon(const DaemonConfig& config, const DaemonOptions& options) {
+  Daemon daemon(config, options);
+  return daemon.run();
+}
+
+}  // namespace azt::app

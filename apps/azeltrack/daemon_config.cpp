@@ -1,0 +1,153 @@
+#include "daemon_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cli_error.hpp"
+#include "config_file.hpp"
+
+namespace azt::app {
+namespace {
+
+unsigned short read_port(const ConfigSection& s, std::string_view key, unsigned short fallback) {
+  const auto port = s.integer(key);
+  if (!port) return fallback;
+  if (*port < 0 || *port > 65535) s.fail(key, "must be 0 to 65535 (0 disables)");
+  return static_cast<unsigned short>(*port);
+}
+
+NetServerConfig read_net(const ConfigSection& s, NetServerConfig fallback) {
+  fallback.bind = s.text("bind").value_or(fallback.bind);
+  fallback.port = read_port(s, "port", fallback.port);
+  return fallback;
+}
+
+std::vector<SerialServerConfig> read_serial(const ConfigFile& file) {
+  std::vector<SerialServerConfig> out;
+  for (const ConfigSection& s : file.section_array("serial", {"protocol", "device", "baud"})) {
+    SerialServerConfig c;
+    c.protocol = s.text("protocol").value_or("");
+    constexpr std::array<std::string_view, 6> kKnown = {"gs232a",    "gs232b", "easycomm1",
+                                                        "easycomm2", "spid",   "rot1prog"};
+    if (std::find(kKnown.begin(), kKnown.end(), c.protocol) == kKnown.end()) {
+      s.fail("protocol", "must be gs232a, gs232b, easycomm1, easycomm2, spid or rot1prog");
+    }
+    c.device = s.text("device").value_or("");
+    if (c.device.empty()) s.fail("device", "is required: \"pty:/path\" or a serial device path");
+    const auto baud = s.integer("baud").value_or(9600);
+    if (baud < 600 || baud > 115200) s.fail("baud", "must be 600 to 115200");
+    c.baud = static_cast<unsigned>(baud);
+    for (const auto& other : out) {
+      if (other.device == c.device) s.fail("device", "is used by two [[serial]] servers");
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+linux_os::HamlibConfig read_hamlib(const ConfigSection& s) {
+  linux_os::HamlibConfig h;
+  const auto model = s.integer("model").value_or(h.model);
+  if (model < 1 || model > 100000) s.fail("model", "must be a Hamlib rotator model (rotctl -l)");
+  h.model = static_cast<int>(model);
+  h.device = s.text("device").value_or("");
+  const auto baud = s.integer("baud").value_or(0);
+  if (baud < 0 || baud > 1000000) s.fail("baud", "must be 0 (backend default) or a serial speed");
+  h.baud = static_cast<int>(baud);
+  h.poll_s = s.number("poll_s").value_or(h.poll_s);
+  if (h.poll_s < 0.05 || h.poll_s > 5.0) s.fail("poll_s", "must be 0.05 to 5 seconds");
+  h.min_move_deg = s.number("min_move_deg").value_or(h.min_move_deg);
+  if (h.min_move_deg < 0.0 || h.min_move_deg > 10.0) s.fail("min_move_deg", "must be 0 to 10");
+  return h;
+}
+
+/// Four slots: the configured [[park]] entries in order, the rest from defaults inside the travel.
+std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
+    const ConfigFile& file, const sim::StationSimSetup& setup) {
+  const double el_low = setup.el_range.min_deg;
+  const double el_high = std::min(90.0, setup.el_range.max_deg);
+  const control::AzEl first = setup.park_when_out_of_range.value_or(control::AzEl{180.0, el_low});
+  std::array<control::ParkSlot, control::ModeController::kParkSlots> slots = {{
+      {"park", first},
+      {"stow", {180.0, el_high}},
+      {"north", {0.0, el_low}},
+      {"service", {90.0, el_low}},
+  }};
+  const auto entries = file.section_array("park", {"name", "az_deg", "el_deg"});
+  if (entries.size() > slots.size()) file.fail("at most 4 [[park]] slots");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const ConfigSection& s = entries[i];
+    control::ParkSlot slot{
+        s.text("name").value_or("park " + std::to_string(i + 1)),
+        {s.number("az_deg").value_or(180.0), s.number("el_deg").value_or(el_low)}};
+    if (slot.position.az_deg < 0.0 || slot.position.az_deg >= 360.0) {
+      s.fail("az_deg", "must be 0 to 360");
+    }
+    if (!control::plan_elevation(slot.position.el_deg, setup.el_range)) {
+      s.fail("el_deg", "must be inside [geometry] el_min_deg..el_max_deg");
+    }
+    slots[i] = slot;
+  }
+  return slots;
+}
+
+void read_schema(const ConfigFile& file) {
+  const toml::node* n = file.root().get("schema_version");
+  if (n == nullptr) return;
+  const auto v = n->value<std::int64_t>();
+  if (!n->is_integer() || !v) file.fail("schema_version must be an integer");
+  if (*v < 1 || *v > kSchemaVersion) {
+    file.fail("schema_version " + std::to_string(*v) + " is not supported by this azeltrack (" +
+              std::to_string(kSchemaVersion) + " is): refusing to guess");
+  }
+}
+
+}  // namespace
+
+proto::TargetLimits DaemonConfig::target_limits() const {
+  proto::TargetLimits l;
+  l.az_min_deg = std::min(-180.0, sim.setup.az_range.min_deg);
+  l.az_max_deg = std::max(450.0, sim.setup.az_range.max_deg);
+  l.el_min_deg = sim.setup.el_range.min_deg;
+  l.el_max_deg = sim.setup.el_range.max_deg;
+  return l;
+}
+
+DaemonConfig daemon_config_from(const ConfigFile& file) {
+  read_schema(file);
+  DaemonConfig c;
+  c.sim = sim_config_from(file);
+  const ConfigSection target = file.section("target", {"name"});
+  c.start_target = target.text("name").value_or("moon");
+  const ConfigSection antenna = file.section("antenna", {"backend"});
+  c.backend = antenna.text("backend").value_or("sim");
+  if (c.backend != "sim" && c.backend != "hamlib") {
+    antenna.fail("backend", "must be \"sim\" or \"hamlib\"");
+  }
+  const ConfigSection hamlib =
+      file.section("hamlib", {"model", "device", "baud", "poll_s", "min_move_deg"});
+  c.hamlib = read_hamlib(hamlib);
+  if (c.backend == "hamlib" && !hamlib.present()) {
+    antenna.fail("backend", "is \"hamlib\" but there is no [hamlib] table");
+  }
+  c.rotctld = read_net(file.section("rotctld", {"bind", "port"}), c.rotctld);
+  const ConfigSection pst = file.section("pstrotator", {"bind", "port", "reply_port"});
+  c.pstrotator = read_net(pst, c.pstrotator);
+  c.pstrotator_reply_port =
+      read_port(pst, "reply_port", c.pstrotator.port == 0 ? 0 : c.pstrotator.port + 1);
+  c.serial = read_serial(file);
+  c.park = read_park(file, c.sim.setup);
+  if (c.sim.setup.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
+  const ConfigSection log = file.section("log", {"level"});
+  c.log_level = log.text("level").value_or("info");
+  if (c.log_level != "debug" && c.log_level != "info" && c.log_level != "warn") {
+    log.fail("level", "must be debug, info or warn");
+  }
+  return c;
+}
+
+DaemonConfig load_daemon_config(const std::string& path) {
+  return daemon_config_from(ConfigFile::load(path));
+}
+
+}  // namespace azt::app

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "azt/control/modes.hpp"
+#include "azt/linux/hamlib_rotator.hpp"
+#include "azt/proto/target_limits.hpp"
+#include "sim_config.hpp"
+
+namespace azt::app {
+
+/// The configuration schema this build writes and reads. Files without `schema_version` are
+/// version 1 (the layout of the first releases); newer versions are refused, not guessed.
+inline constexpr int kSchemaVersion = 1;
+
+struct SerialServerConfig {
+  std::string protocol;  ///< gs232a | gs232b | easycomm1 | easycomm2 | spid | rot1prog
+  std::string device;    ///< "pty:/path" or a device path
+  unsigned baud = 9600;
+};
+
+struct NetServerConfig {
+  std::string bind = "127.0.0.1";
+  unsigned short port = 0;  ///< 0: disabled
+};
+
+/// Everything `serve` reads (README "Configuration").
+struct DaemonConfig {
+  SimConfig sim;                      ///< station, sky, control, geometry, and the simulated plant
+  std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
+  std::string backend = "sim";        ///< [antenna] backend: sim | hamlib
+  linux_os::HamlibConfig hamlib;
+  NetServerConfig rotctld{"127.0.0.1", 4533};
+  std::vector<SerialServerConfig> serial;
+  NetServerConfig pstrotator{"127.0.0.1", 12000};
+  unsigned short pstrotator_reply_port = 12001;  ///< 0: reply to the sender's port
+  std::array<control::ParkSlot, control::ModeController::kParkSlots> park;
+  control::OutOfRangePolicy out_of_range = control::OutOfRangePolicy::Hold;
+  std::string log_level = "info";
+  bool jog_enabled = true;
+
+  /// The targets PC programs may send: the travel in sky terms, azimuth in any convention
+  /// clients use (−180..450).
+  [[nodiscard]] proto::TargetLimits target_limits() const;
+};
+
+/// Parses and validates; throws UsageError naming the key and its line.
+DaemonConfig daemon_config_from(const ConfigFile& file);
+DaemonConfig load_daemon_config(const std::string& path);
+
+/// The commented configuration a first run writes: the simulated antenna tracking the Moon,
+/// every server on 127.0.0.1.
+std::string default_config_text();
+
+}  // namespace azt::app
