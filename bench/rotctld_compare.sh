@@ -3,7 +3,7 @@
 # against `azeltrack serve`, driven by bench/rotctld_load. Builds nothing.
 #
 # Usage: bench/rotctld_compare.sh BUILD_DIR
-#   BUILD_DIR must hold bench/rotctld_load; apps/azeltrack/azeltrack is optional (skipped with
+#   BUILD_DIR must hold bench/rotctld_load; azeltrack is optional (skipped with
 #   "azeltrack serve not available" when missing, without `serve`, or not listening within 5 s).
 #   BENCH_SECONDS (default 5) sets the measured seconds per load, after a 1 s warm-up.
 # Per server: 1 and 50 closed-loop clients, then RSS and thread count with 200 idle connections
@@ -17,7 +17,7 @@ if [[ $# -ne 1 ]]; then
 fi
 build_dir=$1
 load="$build_dir/bench/rotctld_load"
-azeltrack="$build_dir/apps/azeltrack/azeltrack"
+azeltrack="$build_dir/azeltrack"
 run_s=${BENCH_SECONDS:-5}
 idle_clients=200
 start_timeout_tenths=50
@@ -194,13 +194,16 @@ fi
 serve_re='(^|[^[:alnum:]_-])serve([^[:alnum:]_-]|$)'
 if [[ $azeltrack_help =~ $serve_re ]]; then
   config="$tmp/azeltrack.toml"
-  printf '[rotctld]\nbind = "127.0.0.1"\nport = %s\n[pstrotator]\nport = 0\n' \
+  # The simulated antenna tracking the Moon, so the control tick does real work under the load.
+  printf '[station]\ngrid = "FN06HE"\n[target]\nname = "moon"\n[rotctld]\nbind = "127.0.0.1"\nport = %s\n[pstrotator]\nport = 0\n' \
     "$port_azeltrack" >"$config"
   "$azeltrack" serve --config "$config" >"$tmp/azeltrack.log" 2>&1 &
   azeltrack_pid=$!
   children+=("$azeltrack_pid")
   if wait_for_port "$azeltrack_pid" "$port_azeltrack"; then
     bench_server "azeltrack serve" "$azeltrack_pid" "$port_azeltrack"
+    # The daemon logs its control-tick lateness over the whole run (all loads) when it stops.
+    result["azeltrack serve",tick]=$(grep -o 'late p50.*overruns' "$tmp/azeltrack.log" || echo "?")
   else
     if kill -0 "$azeltrack_pid" 2>/dev/null; then
       echo "azeltrack serve not available (not listening on port $port_azeltrack within 5 s)"
@@ -250,3 +253,4 @@ row "VmRSS after start, kB" rss_start
 row "VmRSS with $idle_clients idle + 1 active client, kB" rss_idle
 row "threads with $idle_clients idle + 1 active client" threads_idle
 row "after SIGTERM" exit
+row "control tick (20 Hz) lateness over the run" tick

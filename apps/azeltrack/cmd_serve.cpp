@@ -8,6 +8,7 @@
 #include "azt/linux/atomic_file.hpp"
 #include "cli_error.hpp"
 #include "commands.hpp"
+#include "config_store.hpp"
 #include "daemon.hpp"
 
 namespace azt::app {
@@ -23,10 +24,11 @@ std::string default_config_path() {
   return std::string(home != nullptr ? home : ".") + "/.config/azeltrack/azeltrack.toml";
 }
 
-/// A first run writes the commented default (the simulated antenna) and uses it.
+/// A first run writes the commented default (the simulated antenna) and uses it. A missing file
+/// with a backup beside it is not a first run: ConfigStore recovers the backup.
 void write_default_if_missing(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::exists(path, ec)) return;
+  if (std::filesystem::exists(path, ec) || std::filesystem::exists(path + ".bak", ec)) return;
   const std::filesystem::path p(path);
   if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
   auto written = linux_os::write_file_atomically(path, default_config_text());
@@ -56,10 +58,11 @@ Runner add_serve_command(CLI::App& app) {
   return [opts] {
     if (opts->config_path.empty()) opts->config_path = default_config_path();
     write_default_if_missing(opts->config_path);
-    const DaemonConfig config = load_daemon_config(opts->config_path);
-    set_log_level(config.log_level);
-    spdlog::info("configuration {}", opts->config_path);
-    return run_daemon(config, *opts);
+    const ConfigStore store = ConfigStore::open(opts->config_path);
+    // Loudly: a fallback to the backup means the primary file was corrupt.
+    for (const auto& notice : store.notices()) spdlog::warn("{}", notice);
+    set_log_level(store.config().log_level);
+    return run_daemon(store.config(), *opts);
   };
 }
 

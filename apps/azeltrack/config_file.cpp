@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "azt/linux/atomic_file.hpp"
 #include "cli_error.hpp"
 
 namespace azt::app {
@@ -86,15 +87,26 @@ ConfigSection ConfigSection::child(std::string_view key,
 }
 
 ConfigFile ConfigFile::load(const std::string& path) {
+  auto text = linux_os::read_file(path);
+  if (!text) throw UsageError("config " + text.error().message);
+  return parse(*text, path);
+}
+
+ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
   toml::table root;
   try {
-    root = toml::parse_file(path);
+    root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
     throw UsageError("config " + path + ":" + std::to_string(where.line) + ":" +
                      std::to_string(where.column) + ": " + std::string(e.description()));
   }
   ConfigFile file(path, std::move(root));
+  try {
+    file.migration_ = migrate_config(file.root_);
+  } catch (const UsageError& e) {
+    file.fail(e.what());
+  }
   for (const auto& [key, value] : file.root_) {
     if (!allowed_key(key.str(), {"schema_version", "station", "sky", "atmosphere", "control",
                                  "geometry", "park", "sim", "target", "antenna", "hamlib",

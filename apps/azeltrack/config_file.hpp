@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "config_migrations.hpp"
+
 namespace azt::app {
 
 class ConfigFile;
@@ -50,12 +52,16 @@ class ConfigFile {
   /// top-level key is not a table azeltrack knows (one file serves every subcommand: station,
   /// sky, atmosphere, control, geometry, park, sim).
   static ConfigFile load(const std::string& path);
+  /// The same from text already read; `path` names the file in errors. Older schema versions are
+  /// migrated in memory (migration() says how); a newer one is refused.
+  static ConfigFile parse(std::string_view text, const std::string& path);
 
   /// A top-level table, checked against its allowed keys.
   [[nodiscard]] ConfigSection section(std::string_view name,
                                       std::initializer_list<std::string_view> allowed) const;
   [[nodiscard]] const toml::table& root() const { return root_; }
   [[nodiscard]] const std::string& path() const { return path_; }
+  [[nodiscard]] const MigrationReport& migration() const { return migration_; }
   /// An array of tables (`[[serial]]`), each checked against the allowed keys; items are named
   /// "serial#1", "serial#2" … in errors.
   [[nodiscard]] std::vector<ConfigSection> section_array(
@@ -66,6 +72,7 @@ class ConfigFile {
   ConfigFile(std::string path, toml::table root) : path_(std::move(path)), root_(std::move(root)) {}
   std::string path_;
   toml::table root_;
+  MigrationReport migration_;
 };
 
 }  // namespace azt::app

@@ -113,7 +113,7 @@ class Daemon {
     }
     deadline_ = SteadyClock::now() + period_;
     arm_tick();
-    spdlog::info("serving: {}; tick {:.0f} Hz", antenna_->describe(),
+    spdlog::info("serving {} with {}; tick {:.0f} Hz", options_.config_path, antenna_->describe(),
                  1.0 / config_.sim.setup.tick_s);
     notifier_.ready("tracking " + modes_.who());
     io_.run();

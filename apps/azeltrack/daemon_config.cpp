@@ -91,17 +91,6 @@ std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
   return slots;
 }
 
-void read_schema(const ConfigFile& file) {
-  const toml::node* n = file.root().get("schema_version");
-  if (n == nullptr) return;
-  const auto v = n->value<std::int64_t>();
-  if (!n->is_integer() || !v) file.fail("schema_version must be an integer");
-  if (*v < 1 || *v > kSchemaVersion) {
-    file.fail("schema_version " + std::to_string(*v) + " is not supported by this azeltrack (" +
-              std::to_string(kSchemaVersion) + " is): refusing to guess");
-  }
-}
-
 }  // namespace
 
 proto::TargetLimits DaemonConfig::target_limits() const {
@@ -114,7 +103,6 @@ proto::TargetLimits DaemonConfig::target_limits() const {
 }
 
 DaemonConfig daemon_config_from(const ConfigFile& file) {
-  read_schema(file);
   DaemonConfig c;
   c.sim = sim_config_from(file);
   const ConfigSection target = file.section("target", {"name"});

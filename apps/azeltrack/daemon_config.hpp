@@ -11,10 +11,6 @@
 
 namespace azt::app {
 
-/// The configuration schema this build writes and reads. Files without `schema_version` are
-/// version 1 (the layout of the first releases); newer versions are refused, not guessed.
-inline constexpr int kSchemaVersion = 1;
-
 struct SerialServerConfig {
   std::string protocol;  ///< gs232a | gs232b | easycomm1 | easycomm2 | spid | rot1prog
   std::string device;    ///< "pty:/path" or a device path

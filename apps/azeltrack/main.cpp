@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
       "  azeltrack watch --config examples/station.toml         live sky view (scripts/run)\n"
       "  azeltrack simulate --scenario moon --hours 6           the controller on the sim antenna\n"
       "  azeltrack serve --config examples/sim.toml            the daemon (scripts/run)\n"
+      "  azeltrack config set --config my.toml control.window_deg 0.2   validated, atomic\n"
       "  azeltrack hub encode --az-bits 12 --el-bits 12 --az-raw 2048 --el-raw 100\n"
       "Exit codes: 0 success, 1 failure, 2 bad arguments.");
   const azt::app::Runner sky = azt::app::add_sky_command(app);
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   const azt::app::Runner simulate = azt::app::add_simulate_command(app);
   const azt::app::Runner hub = azt::app::add_hub_command(app);
   const azt::app::Runner serve = azt::app::add_serve_command(app);
+  const azt::app::Runner config = azt::app::add_config_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
@@ -58,6 +60,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("simulate")) return simulate();
     if (app.got_subcommand("hub")) return hub();
     if (app.got_subcommand("serve")) return serve();
+    if (app.got_subcommand("config")) return config();
   } catch (const azt::app::UsageError& e) {
     azt::app::print_error(e.what());
     return azt::app::kExitUsage;

@@ -218,6 +218,15 @@ TEST_F(EasyCommFixture, ActivityForEveryLineEvenBadOnes) {
   EXPECT_EQ(service.calls, (Calls{"activity e", "activity e"}));
 }
 
+// Found by fuzz/easycomm_session_fuzz.cpp: an overlong line ended without any activity().
+TEST_F(EasyCommFixture, OverlongLineIsActivityWithoutReply) {
+  EXPECT_EQ(two->feed(std::string(kEasyCommMaxLineChars + 1, 'A') + "\nAZ\n"), "AZ123.4\n");
+  EXPECT_EQ(service.calls, (Calls{"activity e", "activity e"}));
+  EXPECT_EQ(two->feed(std::string(kEasyCommMaxLineChars + 5, 'A')), "");
+  EXPECT_EQ(two->feed("\r\n"), "");  // CR ends the overlong line, LF is an empty line
+  EXPECT_EQ(service.calls.size(), 4U);
+}
+
 // --- SPID (§8.4) --------------------------------------------------------------------------------
 
 const std::string kStatusFrame = bytes({0x57, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x1F, 0x20});

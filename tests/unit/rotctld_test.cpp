@@ -280,6 +280,14 @@ TEST(Rotctld, NonFiniteAndJunkAnswerRprtMinus1) {
   EXPECT_EQ(s.one(";p 1\n"), "get_pos: 1;RPRT -1\n");
 }
 
+// Found by fuzz/rotctld_session_fuzz.cpp: ",M \0" echoed the NUL byte in "move: \0,RPRT -1".
+TEST(Rotctld, ExtendedEchoOfJunkIsPrintable) {
+  Session s;
+  EXPECT_EQ(s.one(std::string(",M \0\n", 5)), "move: ?,RPRT -1\n");
+  EXPECT_EQ(s.one("+P 1\x1b[2J 2\n"), "set_pos: 1?[2J 2\nRPRT -1\n");
+  EXPECT_EQ(s.one("+S \xc3\xa9\n"), "stop: ??\nRPRT -1\n");
+}
+
 TEST(Rotctld, OutOfRangeTargetsAnswerRprtMinus1) {
   Session s;
   EXPECT_EQ(s.one("P 500 0\n"), "RPRT -1\n");  // reference vector is -21 for Hamlib 4.6

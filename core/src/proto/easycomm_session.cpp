@@ -109,9 +109,17 @@ class EasyCommSession final : public ProtocolSession {
   std::string feed(std::string_view bytes) override {
     std::string out;
     for (const char byte : bytes) {
-      if (const auto line = lines_.push(byte)) {
+      const auto overlong_before = lines_.overlong_lines();
+      const auto line = lines_.push(byte);
+      dropping_ = dropping_ || lines_.overlong_lines() != overlong_before;
+      if (line) {
         service_.activity(client_);
         out += answer(*line);
+      } else if (dropping_ && (byte == '\r' || byte == '\n')) {
+        // The end of an overlong line: traffic like any other line, but EasyComm has no error
+        // reply for it.
+        dropping_ = false;
+        service_.activity(client_);
       }
     }
     return out;
@@ -165,6 +173,7 @@ class EasyCommSession final : public ProtocolSession {
   EasyCommVersion version_;
   TargetLimits limits_;
   BoundedLineAssembler lines_ = make_easycomm_assembler();
+  bool dropping_ = false;  ///< inside an overlong line, waiting for its CR or LF
 };
 
 }  // namespace

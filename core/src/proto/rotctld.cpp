@@ -141,12 +141,14 @@ Args split_args(std::string_view text) {
   }
 }
 
+/// The ERP echo. Argument bytes outside printable ASCII are echoed as '?' so a reply never carries
+/// a NUL or an escape sequence back to the client (only lines that fail to parse can hold them).
 std::string make_echo(const CommandSpec& spec, const Args& args) {
   std::string echo(spec.long_name.empty() ? std::string_view("quit") : spec.long_name);
   echo += ':';
   for (std::size_t i = 0; i < args.count; ++i) {
     echo += ' ';
-    echo += args.values[i];
+    for (const char c : args.values[i]) echo += (c >= ' ' && c <= '~') ? c : '?';
   }
   return echo;
 }

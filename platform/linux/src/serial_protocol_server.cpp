@@ -184,12 +184,12 @@ void SerialProtocolServer::read() {
                               return;
                             }
                             std::string reply = session_->feed(std::string_view(buffer_.data(), n));
-                            if (!reply.empty()) write(std::move(reply));
+                            if (!reply.empty()) write(reply);
                             read();
                           });
 }
 
-void SerialProtocolServer::write(std::string bytes) {
+void SerialProtocolServer::write(const std::string& bytes) {
   // A serial peer that stops reading must not grow memory: keep at most 4 KiB unsent.
   if (pending_.size() + bytes.size() > 4096) pending_.clear();
   pending_ += bytes;

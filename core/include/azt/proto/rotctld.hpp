@@ -21,6 +21,8 @@
 //   - An out-of-range `P` target is answered with `RPRT -1` (EINVAL), as Hamlib ≤ 4.5 does (Hamlib
 //     4.6 answers -21, ELIMIT); every non-zero code is an error to Gpredict and netrotctl.
 //   - Empty lines and `#` comment lines get no reply, as in Hamlib.
+//   - The ERP echo shows argument bytes outside printable ASCII as `?` (Hamlib echoes them raw), so
+//     no reply carries a NUL or an escape sequence; only lines that fail to parse hold such bytes.
 
 #include <cstddef>
 #include <string>

@@ -38,7 +38,7 @@ class SerialProtocolServer {
   SerialProtocolServer(boost::asio::io_context& io, std::unique_ptr<proto::ProtocolSession> s,
                        Log log);
   void read();
-  void write(std::string bytes);
+  void write(const std::string& bytes);
 
   boost::asio::posix::stream_descriptor stream_;
   int keep_slave_fd_ = -1;  ///< our own open slave end: reads never fail with EIO between clients
