@@ -1,4 +1,4 @@
-// `azeltrack serve`: the daemon (README "Running the daemon").
+// `azeltrack serve`: the daemon (docs/daemon.md).
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 

@@ -14,7 +14,7 @@
 namespace azt::app {
 
 /// The daemon's configuration file as the one place settings change at runtime (README
-/// "Configuration that survives anything").
+/// "Configuration", docs/daemon.md "Configuration").
 ///
 /// Loading: a primary that cannot be read or is not TOML (a torn or zeroed file) falls back to
 /// `FILE.bak` with a warning in notices(); a primary that is valid TOML but has a bad value is

@@ -92,7 +92,8 @@ class Daemon {
                 config.sim.station.sky.grid,
             [this] { return now_s(); },
             [this](const std::string& line) { log_.info("control", line, now_s()); }),
-        signals_(io_, SIGINT, SIGTERM),
+        // SIGHUP too: a closed terminal must stop the motors, not kill the process mid-move.
+        signals_(io_, SIGINT, SIGTERM, SIGHUP),
         timer_(io_),
         period_(std::chrono::duration_cast<SteadyClock::duration>(
             std::chrono::duration<double>(config.sim.setup.tick_s))) {}
@@ -101,7 +102,9 @@ class Daemon {
     start_target();
     open_servers();
     signals_.async_wait([this](boost::system::error_code ec, int signal) {
-      if (!ec) shutdown(signal == SIGINT ? "SIGINT" : "SIGTERM");
+      if (!ec) {
+        shutdown(signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "SIGHUP");
+      }
     });
     if (options_.run_for_s > 0.0) {
       auto stop_timer = std::make_shared<asio::steady_timer>(io_);

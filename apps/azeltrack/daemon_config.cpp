@@ -5,6 +5,7 @@
 
 #include "cli_error.hpp"
 #include "config_file.hpp"
+#include "station_config.hpp"
 
 namespace azt::app {
 namespace {
@@ -107,6 +108,11 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.sim = sim_config_from(file);
   const ConfigSection target = file.section("target", {"name"});
   c.start_target = target.text("name").value_or("moon");
+  if (c.start_target != "stop" && !find_station_target(c.sim.station, c.start_target)) {
+    target.fail("name", "'" + c.start_target +
+                            "' is not a target of this station: sun, moon, a [sky] source, or "
+                            "\"stop\"");
+  }
   const ConfigSection antenna = file.section("antenna", {"backend"});
   c.backend = antenna.text("backend").value_or("sim");
   if (c.backend != "sim" && c.backend != "hamlib") {

@@ -11,12 +11,6 @@
 namespace azt::app {
 namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
 /// Unix seconds to a UTC Julian date (the day count is exact in two parts).
 astro::UtcInstant utc_from_unix(double unix_s) {
   const double days = std::floor(unix_s / 86400.0);
@@ -27,18 +21,7 @@ astro::UtcInstant utc_from_unix(double unix_s) {
 }  // namespace
 
 std::optional<astro::Target> SkyFollower::find(const std::string& name) const {
-  const std::string wanted = lower(name);
-  for (const auto& t : station_.targets) {
-    if (lower(t.name) == wanted) return t;
-    if (t.kind == astro::Target::Kind::Moon && wanted == "moon") return t;
-    if (t.kind == astro::Target::Kind::Sun && wanted == "sun") return t;
-  }
-  for (const auto& t : station_.targets) {
-    std::string compact = lower(t.name);
-    compact.erase(std::remove(compact.begin(), compact.end(), ' '), compact.end());
-    if (compact == wanted) return t;
-  }
-  return std::nullopt;
+  return find_station_target(station_, name);
 }
 
 void SkyFollower::follow(const astro::Target& target) {

@@ -1,5 +1,7 @@
 #include "station_config.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "azt/astro/bands.hpp"
@@ -103,6 +105,27 @@ StationConfig station_config_from(const ConfigFile& file) {
 
 StationConfig load_station_config(const std::string& path) {
   return station_config_from(ConfigFile::load(path));
+}
+
+std::optional<astro::Target> find_station_target(const StationConfig& station,
+                                                 const std::string& name) {
+  const auto lower = [](std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+  };
+  const std::string wanted = lower(name);
+  for (const auto& t : station.targets) {
+    if (lower(t.name) == wanted) return t;
+    if (t.kind == astro::Target::Kind::Moon && wanted == "moon") return t;
+    if (t.kind == astro::Target::Kind::Sun && wanted == "sun") return t;
+  }
+  for (const auto& t : station.targets) {
+    std::string compact = lower(t.name);
+    compact.erase(std::remove(compact.begin(), compact.end(), ' '), compact.end());
+    if (compact == wanted) return t;
+  }
+  return std::nullopt;
 }
 
 }  // namespace azt::app

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,5 +24,10 @@ StationConfig station_config_from(const ConfigFile& file);
 /// Reads and validates a TOML configuration file. Unknown keys, wrong types and out-of-range
 /// values are errors naming the key; throws UsageError.
 StationConfig load_station_config(const std::string& path);
+
+/// A target of the station by name, case-blind: "sun", "moon", a source's name or alias, with or
+/// without spaces ("casa", "Cassiopeia A").
+std::optional<astro::Target> find_station_target(const StationConfig& station,
+                                                 const std::string& name);
 
 }  // namespace azt::app

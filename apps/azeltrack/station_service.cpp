@@ -35,6 +35,7 @@ ServiceStatus StationService::goto_position(std::string_view client, double az_d
       !limits_.accepts_el(el_deg) || !control::plan_elevation(el_deg, el_range_)) {
     return ServiceStatus::Invalid;
   }
+  if (faulted()) return ServiceStatus::Rejected;
   auto r = modes_.external(control::AzEl{control::wrap_360(az_deg), el_deg}, std::string(client));
   if (!r) return modes_.external_locked() ? ServiceStatus::Rejected : ServiceStatus::Invalid;
   announce(client, "EXT position target");
@@ -59,6 +60,7 @@ ServiceStatus StationService::goto_axis(std::string_view client, proto::Axis axi
 }
 
 ServiceStatus StationService::move(std::string_view client, proto::AxisMotion motion) {
+  if (faulted()) return ServiceStatus::Rejected;
   auto r = modes_.external_jog(control::Jog{motion.az, motion.el}, std::string(client), now_());
   if (!r) return modes_.external_locked() ? ServiceStatus::Rejected : ServiceStatus::Invalid;
   announce(client, "EXT continuous move (stops after 1 s without traffic)");
@@ -85,7 +87,7 @@ void StationService::stop(std::string_view client, std::optional<proto::Axis> ax
 }
 
 ServiceStatus StationService::park(std::string_view client) {
-  if (modes_.external_locked()) return ServiceStatus::Rejected;
+  if (modes_.external_locked() || faulted()) return ServiceStatus::Rejected;
   auto r = modes_.park(1);
   if (!r) return ServiceStatus::Invalid;
   announce(client, "PARK");

@@ -34,6 +34,9 @@ class StationService final : public proto::RotatorService {
 
  private:
   void announce(std::string_view client, const std::string& what);
+  /// A latched fault refuses every motion request until an operator clears it; a client must not
+  /// be told "RPRT 0" for a move that cannot happen.
+  [[nodiscard]] bool faulted() const { return !antenna_.faults().empty(); }
 
   control::ModeController& modes_;
   AntennaBackend& antenna_;

@@ -195,6 +195,15 @@ TEST_F(ConfigStoreTest, FutureSchemaIsRefused) {
   EXPECT_NE(open_error().find("schema_version must be"), std::string::npos);
 }
 
+TEST_F(ConfigStoreTest, StartTargetsAreFoundByNameOrAlias) {
+  write(path_, kValid);
+  ConfigStore store = ConfigStore::open(path_);
+  for (const char* name :
+       {"\"moon\"", "\"Sun\"", "\"Cassiopeia A\"", "\"cassiopeiaa\"", "\"stop\""}) {
+    EXPECT_TRUE(store.set("target.name", name).ok()) << name;
+  }
+}
+
 TEST_F(ConfigStoreTest, TwoWritersNeverLoseEachOthersChanges) {
   write(path_, kValid);
   ConfigStore a = ConfigStore::open(path_);

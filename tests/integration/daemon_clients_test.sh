@@ -250,4 +250,15 @@ rc=$?
 [ $rc -eq 0 ] && grep -q '^\[antenna\]' "$tmp/new/azeltrack.toml" && ok ||
   bad "first run: rc=$rc $(tail -3 "$tmp/first.log")"
 
+# 9. SIGHUP (a closed terminal) stops the motors and exits cleanly too.
+rport3=$(free_port)
+write_config "$tmp/hup.toml" "$rport3" 0
+start_daemon "$tmp/hup.toml" "$tmp/hup.log" "$rport3" && {
+  kill -HUP "$daemon_pid"
+  wait "$daemon_pid"
+  rc=$?
+  [ $rc -eq 0 ] && grep -q 'SIGHUP: motors stopped' "$tmp/hup.log" && ok ||
+    bad "SIGHUP: rc=$rc $(tail -2 "$tmp/hup.log")"
+}
+
 finish

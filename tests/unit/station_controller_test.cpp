@@ -54,6 +54,20 @@ TEST(StationController, DrivesBothAxesToAPositionDemand) {
   EXPECT_FALSE(rig.station.faulted());
 }
 
+// Found by bench/rotctld_compare.sh (rotctld clients hammering P with targets 10–20° apart): the
+// supervisor compared the distance to a goal that kept jumping away and latched "runaway".
+TEST(StationController, TargetsJumpingAroundNeverLookLikeAFault) {
+  Rig rig;
+  Demand go;
+  for (int i = 0; i < 200; ++i) {
+    // a new target every 0.1 s, alternately further ahead and behind on both axes
+    const double step = (i % 2 == 0 ? 1.0 : -1.0) * (5.0 + (i % 7));
+    go.position = AzEl{wrap_360(rig.setup.az_plant.start_deg + 10.0 + step), 30.0 + step};
+    rig.run(go, 0.1);
+    ASSERT_FALSE(rig.station.faulted()) << "after target " << i;
+  }
+}
+
 TEST(StationController, AJogRunsTowardsTheTravelEndAndHoldingStopsIt) {
   Rig rig;
   Demand jog;

@@ -59,7 +59,7 @@ double StationController::drive(Axis& axis, double now_s, std::optional<double> 
   }
   const double duty =
       axis.controller.update(*target_deg, axis.mount_deg, rate_deg_s, config_.tick_s);
-  const auto verdict = axis.supervisor.check(now_s, duty, *target_deg - axis.mount_deg);
+  const auto verdict = axis.supervisor.check(now_s, duty);
   if (!verdict.allow_motion) axis.controller.halt();
   return axis.controller.duty();
 }

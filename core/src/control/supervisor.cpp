@@ -72,7 +72,7 @@ void AxisSupervisor::latch(FaultKind kind, std::string reason) {
   driven_since_s_.reset();
 }
 
-void AxisSupervisor::watch_motion(double now_s, double duty, double distance_to_goal_deg) {
+void AxisSupervisor::watch_motion(double now_s, double duty) {
   const double direction = duty > 0.0 ? 1.0 : -1.0;
   if (std::fabs(duty) < config_.driven_duty ||
       (driven_since_s_ && direction != driven_direction_)) {
@@ -82,18 +82,19 @@ void AxisSupervisor::watch_motion(double now_s, double duty, double distance_to_
   if (!driven_since_s_) {
     driven_since_s_ = now_s;
     driven_start_deg_ = *last_good_deg_;
-    driven_min_distance_deg_ = std::fabs(distance_to_goal_deg);
+    driven_best_progress_deg_ = 0.0;
     driven_direction_ = direction;
     return;
   }
   const double elapsed_s = now_s - *driven_since_s_;
-  // Against the closest approach so far: a motor that reverses mid-move is caught as soon as the
-  // distance has grown by runaway_deg, not only once it exceeds where the window started.
-  driven_min_distance_deg_ = std::min(driven_min_distance_deg_, std::fabs(distance_to_goal_deg));
-  if (std::fabs(distance_to_goal_deg) - driven_min_distance_deg_ > config_.runaway_deg) {
-    latch(FaultKind::Runaway, "driven towards the goal for " + format_number(elapsed_s) +
-                                  " s but the distance grew by more than " +
-                                  format_number(config_.runaway_deg) + " deg (motor reversed?)");
+  // Against the best progress so far: a motor that reverses mid-move is caught as soon as it has
+  // gone back by runaway_deg, not only once it is behind where the stretch started.
+  const double progress_deg = driven_direction_ * (*last_good_deg_ - driven_start_deg_);
+  driven_best_progress_deg_ = std::max(driven_best_progress_deg_, progress_deg);
+  if (driven_best_progress_deg_ - progress_deg > config_.runaway_deg) {
+    latch(FaultKind::Runaway, "driven one way for " + format_number(elapsed_s) +
+                                  " s but moved more than " + format_number(config_.runaway_deg) +
+                                  " deg the other way (motor reversed?)");
     return;
   }
   if (elapsed_s < config_.stall_window_s) return;
@@ -106,10 +107,10 @@ void AxisSupervisor::watch_motion(double now_s, double duty, double distance_to_
   // Healthy: start a new observation window from here.
   driven_since_s_ = now_s;
   driven_start_deg_ = *last_good_deg_;
-  driven_min_distance_deg_ = std::fabs(distance_to_goal_deg);
+  driven_best_progress_deg_ = 0.0;
 }
 
-SupervisorVerdict AxisSupervisor::check(double now_s, double duty, double distance_to_goal_deg) {
+SupervisorVerdict AxisSupervisor::check(double now_s, double duty) {
   SupervisorVerdict verdict;
   if (fault_ != FaultKind::None) return verdict;
   if (stale(now_s)) {
@@ -117,7 +118,7 @@ SupervisorVerdict AxisSupervisor::check(double now_s, double duty, double distan
     return verdict;
   }
   verdict.position_deg = last_good_deg_;
-  watch_motion(now_s, duty, distance_to_goal_deg);
+  watch_motion(now_s, duty);
   verdict.allow_motion = fault_ == FaultKind::None;
   return verdict;
 }

@@ -38,8 +38,8 @@ struct SupervisorVerdict {
 
 /// The safety state machine of one axis (pure: time is a parameter, in seconds of a monotonic
 /// clock). Per tick, in this order: offer the new reading (if one arrived) with on_reading(),
-/// then call check() with the duty the controller wants and its distance to the goal. A fault
-/// detected in check() forbids motion in the same tick.
+/// then call check() with the duty the controller wants. A fault detected in check() forbids
+/// motion in the same tick.
 class AxisSupervisor {
  public:
   explicit AxisSupervisor(const SupervisorConfig& config) : config_(config) {}
@@ -48,7 +48,10 @@ class AxisSupervisor {
   /// (the last good position stays in use).
   bool on_reading(double now_s, double position_deg);
 
-  SupervisorVerdict check(double now_s, double duty, double distance_to_goal_deg);
+  /// Runaway is judged on the shaft's own motion against the driven direction, never on the
+  /// distance to the goal: a goal that jumps further away (a new target from a PC program) must
+  /// not look like a reversed motor.
+  SupervisorVerdict check(double now_s, double duty);
 
   /// The E-stop input went active: latches.
   void emergency_stop(double now_s);
@@ -63,7 +66,7 @@ class AxisSupervisor {
 
  private:
   void latch(FaultKind kind, std::string reason);
-  void watch_motion(double now_s, double duty, double distance_to_goal_deg);
+  void watch_motion(double now_s, double duty);
 
   SupervisorConfig config_;
   FaultKind fault_ = FaultKind::None;
@@ -71,11 +74,11 @@ class AxisSupervisor {
   std::optional<double> last_good_deg_;
   double last_good_s_ = 0.0;
   std::optional<double> first_rejected_s_;
-  // Motion watch: start of the present driven stretch, the position then, and the closest the
-  // axis has come to its goal since.
+  // Motion watch: start of the present driven stretch, the position then, and the furthest the
+  // axis has moved in the driven direction since (degrees, positive = the commanded way).
   std::optional<double> driven_since_s_;
   double driven_start_deg_ = 0.0;
-  double driven_min_distance_deg_ = 0.0;
+  double driven_best_progress_deg_ = 0.0;
   double driven_direction_ = 0.0;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
-// PstRotator UDP, server side: azeltrack stands in for PstRotator for Hamlib rotctl -m 3 and the
-// many scripts that speak its `<PST>` datagrams (reference/rotator-controllers-and-protocols.md
+// PstRotator UDP, server side: azeltrack stands in for PstRotator for Hamlib's PstRotator backend
+// (rot_pstrotator.c; not in Debian 12's Hamlib 4.5.4) and the many scripts that speak its `<PST>`
+// datagrams (reference/rotator-controllers-and-protocols.md
 // §8.6; Hamlib rigs/dummy/rot_pstrotator.c).
 //
 // One datagram is one command: `<PST>` ... `</PST>` (tag names case-insensitive, whitespace
