@@ -29,7 +29,9 @@ class SimBackend final : public AntennaBackend {
  public:
   explicit SimBackend(const sim::StationSimSetup& s)
       : antenna_(s.az_plant, s.el_plant, s.frame_version, s.link, s.seed),
-        station_(station_config(s), control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg}) {}
+        station_(station_config(s), control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg}) {
+    station_.set_corrections(s.corrections);
+  }
 
   void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) override {
     if (last_s_) {

@@ -1,7 +1,9 @@
 #include "sim_config.hpp"
 
 #include <cmath>
+#include <vector>
 
+#include "azt/control/corrections.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "config_file.hpp"
 
@@ -92,6 +94,31 @@ void read_link(const ConfigSection& s, sim::StationSimSetup& setup) {
   if (auto seed = s.integer("seed")) setup.seed = static_cast<std::uint64_t>(*seed);
 }
 
+/// [corrections]: the seed's Offset screen, the ± / UP / DWN running totals and the tilt table.
+control::PositionCorrections read_corrections(const ConfigSection& s) {
+  control::PositionCorrections c;
+  auto offsets = control::AxisOffsets::make(s.number("az_offset_deg").value_or(0.0),
+                                            s.number("el_offset_deg").value_or(0.0));
+  if (!offsets) s.fail("az_offset_deg", "/ el_offset_deg: " + offsets.error().message);
+  c.offsets = *offsets;
+  auto user = control::UserCorrections::from_deg(s.number("az_user_deg").value_or(0.0),
+                                                 s.number("el_user_deg").value_or(0.0));
+  if (!user) s.fail("az_user_deg", "/ el_user_deg: " + user.error().message);
+  c.user = *user;
+  if (const toml::array* tilt = s.array("tilt_el_deg")) {
+    std::vector<double> entries;
+    for (const auto& node : *tilt) {
+      const auto v = node.value<double>();
+      if (!v) s.fail("tilt_el_deg", "must hold numbers");
+      entries.push_back(*v);
+    }
+    auto table = control::TiltTable::make(entries);
+    if (!table) s.fail("tilt_el_deg", table.error().message);
+    c.tilt = *table;
+  }
+  return c;
+}
+
 }  // namespace
 
 SimConfig sim_config_from(const ConfigFile& file) {
@@ -131,6 +158,9 @@ SimConfig sim_config_from(const ConfigFile& file) {
   const double tick_hz = control.number("tick_hz").value_or(20.0);
   if (tick_hz < 1.0 || tick_hz > 200.0) control.fail("tick_hz", "must be 1 to 200");
   setup.tick_s = 1.0 / tick_hz;
+  setup.corrections =
+      read_corrections(file.section("corrections", {"az_offset_deg", "el_offset_deg", "az_user_deg",
+                                                    "el_user_deg", "tilt_el_deg"}));
   return config;
 }
 

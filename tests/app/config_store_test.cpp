@@ -195,6 +195,38 @@ TEST_F(ConfigStoreTest, FutureSchemaIsRefused) {
   EXPECT_NE(open_error().find("schema_version must be"), std::string::npos);
 }
 
+TEST_F(ConfigStoreTest, CorrectionsAndTheTiltTableAreSettings) {
+  std::string tilt = "[";
+  for (int i = 0; i < 60; ++i) tilt += (i > 0 ? ", " : "") + std::to_string(i % 5 * 0.1);
+  tilt += "]";
+  write(path_, kValid + "[corrections]\naz_offset_deg = -3.4\nel_user_deg = 0.25\ntilt_el_deg = " +
+                   tilt + "\n");
+  ConfigStore store = ConfigStore::open(path_);
+  const auto& c = store.config().sim.setup.corrections;
+  EXPECT_DOUBLE_EQ(c.offsets.az_deg, -3.4);
+  EXPECT_EQ(c.user.el_steps(), 25);
+  EXPECT_DOUBLE_EQ(c.tilt.entries_deg()[7], 0.2);
+  const std::string sixty_one = tilt.substr(0, tilt.size() - 1) + ", 0.5]";
+  EXPECT_FALSE(store.set("corrections.tilt_el_deg", sixty_one).ok());
+  // one entry edited, as the tilt-table screen does, survives a reload
+  ASSERT_TRUE(store
+                  .update([](toml::table& root) {
+                    (*root["corrections"]["tilt_el_deg"].as_array())
+                        .replace(root["corrections"]["tilt_el_deg"].as_array()->begin() + 3, 1.25);
+                  })
+                  .ok());
+  EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().sim.setup.corrections.tilt.entries_deg()[3],
+                   1.25);
+  for (const char* bad : {"[1.0, 2.0]", "6.0"}) {
+    const auto r = store.set("corrections.tilt_el_deg", bad);
+    ASSERT_FALSE(r.ok()) << bad;
+    EXPECT_NE(r.error().message.find("tilt_el_deg"), std::string::npos) << r.error().message;
+  }
+  const auto r = store.set("corrections.el_user_deg", "12.0");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().message.find("el_user_deg"), std::string::npos) << r.error().message;
+}
+
 TEST_F(ConfigStoreTest, StartTargetsAreFoundByNameOrAlias) {
   write(path_, kValid);
   ConfigStore store = ConfigStore::open(path_);

@@ -68,6 +68,29 @@ TEST(StationController, TargetsJumpingAroundNeverLookLikeAFault) {
   }
 }
 
+// The seed's UP button: +0.50° of elevation correction makes the antenna point 0.50° higher while
+// the read-back position stays on the target; an offset change of several degrees is a
+// calibration, not an encoder jump, and moves the shaft by it without a fault.
+TEST(StationController, CorrectionsChangedAtRuntimeMoveTheAntennaByTheChange) {
+  Rig rig;
+  Demand go;
+  go.position = AzEl{wrap_360(rig.setup.az_plant.start_deg + 10.0), 30.0};
+  rig.run(go, 60.0);
+  const double el_before = rig.el.shaft_deg();
+  PositionCorrections c;
+  ASSERT_TRUE(c.user.nudge_el(50));
+  rig.station.set_corrections(c);
+  rig.run(go, 30.0);
+  EXPECT_NEAR(rig.el.shaft_deg() - el_before, 0.50, 0.12);
+  ASSERT_TRUE(rig.station.sky_position(rig.t).has_value());
+  EXPECT_NEAR(rig.station.sky_position(rig.t)->el_deg, 30.0, 0.12);
+  c.offsets = *AxisOffsets::make(0.0, 3.4);  // the encoder reads 3.4° low
+  rig.station.set_corrections(c);
+  rig.run(go, 30.0);
+  EXPECT_FALSE(rig.station.faulted()) << rig.station.el().reason;
+  EXPECT_NEAR(rig.el.shaft_deg() - el_before, 0.50 - 3.4, 0.12);
+}
+
 TEST(StationController, AJogRunsTowardsTheTravelEndAndHoldingStopsIt) {
   Rig rig;
   Demand jog;

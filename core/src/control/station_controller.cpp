@@ -20,10 +20,28 @@ StationController::StationController(const StationControlConfig& config, AzEl st
           AxisSupervisor(with_lsb(config.el_supervisor, config.el_control)), start_mount.el_deg} {}
 
 void StationController::on_encoder_reading(double now_s, double az_deg, double el_deg) {
-  const double az_mount = plan_azimuth(az_.mount_deg, az_deg, config_.az_range);
-  const double el_mount = el_deg > 270.0 ? el_deg - 360.0 : el_deg;
+  last_encoder_ = AzEl{az_deg, el_deg};
+  const CorrectedPosition corrected = apply_corrections(az_deg, el_deg, corrections_);
+  const double az_mount = plan_azimuth(az_.mount_deg, corrected.az_deg, config_.az_range);
+  const double el_mount = corrected.el_deg > 270.0 ? corrected.el_deg - 360.0 : corrected.el_deg;
   if (az_.supervisor.on_reading(now_s, az_mount)) az_.mount_deg = az_mount;
   if (el_.supervisor.on_reading(now_s, el_mount)) el_.mount_deg = el_mount;
+}
+
+void StationController::set_corrections(const PositionCorrections& corrections) {
+  if (last_encoder_) {
+    const auto before =
+        apply_corrections(last_encoder_->az_deg, last_encoder_->el_deg, corrections_);
+    const auto after = apply_corrections(last_encoder_->az_deg, last_encoder_->el_deg, corrections);
+    // The shortest way round: an azimuth change never adds a turn of cable wrap.
+    const double az_delta = std::remainder(after.az_deg - before.az_deg, 360.0);
+    const double el_delta = after.el_deg - before.el_deg;
+    az_.mount_deg += az_delta;
+    el_.mount_deg += el_delta;
+    az_.supervisor.rebase(az_delta);
+    el_.supervisor.rebase(el_delta);
+  }
+  corrections_ = corrections;
 }
 
 std::optional<double> StationController::jog_target(int direction, bool azimuth) const {

@@ -123,6 +123,11 @@ SupervisorVerdict AxisSupervisor::check(double now_s, double duty) {
   return verdict;
 }
 
+void AxisSupervisor::rebase(double delta_deg) {
+  if (last_good_deg_) *last_good_deg_ += delta_deg;
+  driven_start_deg_ += delta_deg;
+}
+
 void AxisSupervisor::emergency_stop(double /*now_s*/) {
   latch(FaultKind::EStop, "emergency stop input active");
 }

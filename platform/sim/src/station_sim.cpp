@@ -54,7 +54,9 @@ class StationLoop {
   explicit StationLoop(const StationSimSetup& setup)
       : setup_(setup),
         antenna_(setup.az_plant, setup.el_plant, setup.frame_version, setup.link, setup.seed),
-        station_(control_config(setup), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}) {}
+        station_(control_config(setup), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}) {
+    station_.set_corrections(setup.corrections);
+  }
 
   /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
   void tick(double t_s, const std::optional<AzEl>& demand, const AzEl& rate_deg_s) {

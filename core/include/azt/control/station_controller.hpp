@@ -11,6 +11,7 @@
 
 #include "azt/control/axis_controller.hpp"
 #include "azt/control/axis_geometry.hpp"
+#include "azt/control/corrections.hpp"
 #include "azt/control/modes.hpp"
 #include "azt/control/supervisor.hpp"
 
@@ -46,9 +47,16 @@ class StationController {
   /// the overlap side of a single-turn azimuth encoder).
   StationController(const StationControlConfig& config, AzEl start_mount);
 
-  /// Encoder angles 0..360 as read at `now_s`. Azimuth is placed on the mount (the equivalent
-  /// angle nearest the last one); elevation above 270 is below the horizon.
+  /// Encoder angles 0..360 as read at `now_s`. The position corrections are applied first (offset,
+  /// user correction, tilt: corrections.hpp); then azimuth is placed on the mount (the equivalent
+  /// angle nearest the last one) and elevation above 270 is below the horizon.
   void on_encoder_reading(double now_s, double az_deg, double el_deg);
+
+  /// New corrections take effect at once: the present position is re-expressed under them (the
+  /// supervisors are told it is a calibration, not a jump), so the controller moves the antenna by
+  /// the change, as the seed's ± / UP / DWN buttons do.
+  void set_corrections(const PositionCorrections& corrections);
+  [[nodiscard]] const PositionCorrections& corrections() const { return corrections_; }
 
   /// One control tick: the duties to apply until the next. `rate` is the target's sky rate
   /// (deg/s), used as feed-forward while tracking.
@@ -81,6 +89,8 @@ class StationController {
   StationControlConfig config_;
   Axis az_;
   Axis el_;
+  PositionCorrections corrections_;
+  std::optional<AzEl> last_encoder_;  ///< the last raw encoder angles, to re-express on a change
 };
 
 }  // namespace azt::control

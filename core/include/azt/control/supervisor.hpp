@@ -53,6 +53,10 @@ class AxisSupervisor {
   /// not look like a reversed motor.
   SupervisorVerdict check(double now_s, double duty);
 
+  /// The reading's calibration changed by `delta_deg` (a new offset or correction): shift what was
+  /// remembered of past readings so the change is not taken for a jump or for motion.
+  void rebase(double delta_deg);
+
   /// The E-stop input went active: latches.
   void emergency_stop(double now_s);
 

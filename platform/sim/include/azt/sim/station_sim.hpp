@@ -43,6 +43,8 @@ struct StationSimSetup {
   /// Where to go while the tracked target is outside the travel (below the horizon limit);
   /// nullopt holds the antenna where it is (ModeController's OutOfRangePolicy).
   std::optional<control::AzEl> park_when_out_of_range;
+  /// The Offset / ± / UP / DWN / tilt settings, applied to every reading ([corrections]).
+  control::PositionCorrections corrections;
   std::uint64_t seed = 1;  ///< for the link faults
 };
 
