@@ -1,4 +1,6 @@
 #pragma once
+
+#include "azt/control/corrections.hpp"
 // The antenna behind the daemon: the simulated one (plants, hub link and the station's own
 // controller), or an existing rotator controller driven through Hamlib.
 
@@ -30,6 +32,9 @@ class AntennaBackend {
   /// Latched faults in words (empty when healthy).
   [[nodiscard]] virtual std::vector<std::string> faults() const = 0;
   virtual void clear_faults() = 0;
+  /// The Offset / ± / UP / DWN / tilt settings, applied to every reading from now on. False when
+  /// this backend cannot apply them (a Hamlib rotator closes its own loop).
+  virtual bool set_corrections(const control::PositionCorrections& corrections) = 0;
   [[nodiscard]] virtual std::string describe() const = 0;
 };
 

@@ -58,11 +58,11 @@ Runner add_serve_command(CLI::App& app) {
   return [opts] {
     if (opts->config_path.empty()) opts->config_path = default_config_path();
     write_default_if_missing(opts->config_path);
-    const ConfigStore store = ConfigStore::open(opts->config_path);
+    ConfigStore store = ConfigStore::open(opts->config_path);
     // Loudly: a fallback to the backup means the primary file was corrupt.
     for (const auto& notice : store.notices()) spdlog::warn("{}", notice);
     set_log_level(store.config().log_level);
-    return run_daemon(store.config(), *opts);
+    return run_daemon(store, *opts);
   };
 }
 

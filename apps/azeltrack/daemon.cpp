@@ -16,6 +16,7 @@
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
 #include "cli_error.hpp"
+#include "console_server.hpp"
 #include "sky_follower.hpp"
 #include "sky_setup.hpp"
 #include "station_service.hpp"
@@ -26,6 +27,10 @@ namespace {
 
 namespace asio = boost::asio;
 using SteadyClock = std::chrono::steady_clock;
+
+double unix_now_s() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
 
 /// At most `burst` lines per key per minute; the rest are counted and summarised, so a client
 /// reconnecting in a loop cannot flood the journal.
@@ -77,26 +82,27 @@ std::unique_ptr<proto::ProtocolSession> serial_session(const SerialServerConfig&
 
 class Daemon {
  public:
-  Daemon(const DaemonConfig& config, const DaemonOptions& options)
-      : config_(config),
+  Daemon(ConfigStore& store, const DaemonOptions& options)
+      : config_(store.config()),
+        store_(store),
         options_(options),
         start_(SteadyClock::now()),
-        ephemeris_(open_ephemeris(config.sim.station.sky.ephemeris)),
-        sky_(*ephemeris_, config.sim.station),
-        modes_(config.park, config.out_of_range, config.sim.setup.el_range.min_deg),
-        antenna_(config.backend == "hamlib" ? make_hamlib_backend(config)
-                                            : make_sim_backend(config)),
+        ephemeris_(open_ephemeris(config_.sim.station.sky.ephemeris)),
+        sky_(*ephemeris_, config_.sim.station),
+        modes_(config_.park, config_.out_of_range, config_.sim.setup.el_range.min_deg),
+        antenna_(config_.backend == "hamlib" ? make_hamlib_backend(config_)
+                                             : make_sim_backend(config_)),
         service_(
-            modes_, *antenna_, config.target_limits(), config.sim.setup.el_range,
+            modes_, *antenna_, config_.target_limits(), config_.sim.setup.el_range,
             "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
-                config.sim.station.sky.grid,
+                config_.sim.station.sky.grid,
             [this] { return now_s(); },
             [this](const std::string& line) { log_.info("control", line, now_s()); }),
         // SIGHUP too: a closed terminal must stop the motors, not kill the process mid-move.
         signals_(io_, SIGINT, SIGTERM, SIGHUP),
         timer_(io_),
         period_(std::chrono::duration_cast<SteadyClock::duration>(
-            std::chrono::duration<double>(config.sim.setup.tick_s))) {}
+            std::chrono::duration<double>(config_.sim.setup.tick_s))) {}
 
   int run() {
     start_target();
@@ -182,6 +188,20 @@ class Daemon {
                    server.value()->port(), config_.pstrotator_reply_port);
       pstrotator_ = std::move(server).value();
     }
+    if (config_.web.port != 0) open_console();
+  }
+
+  void open_console() {
+    nlohmann::json servers = nlohmann::json::object();
+    if (rotctld_) {
+      servers["rotctld"] = config_.rotctld.bind + ":" + std::to_string(rotctld_->port());
+    }
+    console_ = std::make_unique<ConsoleServer>(
+        io_,
+        ConsoleParts{config_, store_, *ephemeris_, sky_, modes_, *antenna_,
+                     [this] { return now_s(); }, [] { return unix_now_s(); }, servers},
+        [](const std::string& line) { spdlog::warn("{}", line); });
+    spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
   }
 
   void arm_tick() {
@@ -207,10 +227,7 @@ class Daemon {
     modes_.update(now);
     std::optional<SkyFix> fix;
     if (modes_.mode() == control::Mode::Track) {
-      const double unix_s =
-          std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
-              .count();
-      fix = sky_.at(unix_s);
+      fix = sky_.at(unix_now_s());
     }
     const control::Demand demand = modes_.demand(fix ? std::optional(fix->position) : std::nullopt);
     antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
@@ -237,13 +254,15 @@ class Daemon {
     if (rotctld_) rotctld_->close();
     for (auto& s : serial_) s->close();
     if (pstrotator_) pstrotator_->close();
+    if (console_) console_->close();
     boost::system::error_code ignored;
     timer_.cancel();
     signals_.cancel(ignored);
     io_.stop();
   }
 
-  const DaemonConfig& config_;
+  DaemonConfig config_;  ///< the running configuration; the console changes parts of it
+  ConfigStore& store_;
   DaemonOptions options_;
   SteadyClock::time_point start_;
   asio::io_context io_;
@@ -262,14 +281,15 @@ class Daemon {
   std::unique_ptr<linux_os::TcpProtocolServer> rotctld_;
   std::vector<std::unique_ptr<linux_os::SerialProtocolServer>> serial_;
   std::unique_ptr<linux_os::UdpDatagramServer> pstrotator_;
+  std::unique_ptr<ConsoleServer> console_;
   std::vector<std::string> last_faults_;
   bool stopping_ = false;
 };
 
 }  // namespace
 
-int run_daemon(const DaemonConfig& config, const DaemonOptions& options) {
-  Daemon daemon(config, options);
+int run_daemon(ConfigStore& store, const DaemonOptions& options) {
+  Daemon daemon(store, options);
   return daemon.run();
 }
 

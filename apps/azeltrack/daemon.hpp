@@ -1,11 +1,11 @@
 #pragma once
 // `azeltrack serve`: one thread, one Boost.Asio io_context (DESIGN.md). The control tick runs on
-// a steady_timer re-armed at absolute deadlines; the protocol servers share the loop; SIGINT and
-// SIGTERM stop the motors and leave cleanly.
+// a steady_timer re-armed at absolute deadlines; the protocol servers and the web console share
+// the loop; SIGINT, SIGTERM and SIGHUP stop the motors and leave cleanly.
 
 #include <string>
 
-#include "daemon_config.hpp"
+#include "config_store.hpp"
 
 namespace azt::app {
 
@@ -15,8 +15,9 @@ struct DaemonOptions {
   double run_for_s = 0.0;
 };
 
-/// Runs until SIGINT/SIGTERM (or run_for_s); returns the exit code. Throws UsageError when a
-/// server or the antenna cannot be set up (named port, device, key), before any motor moves.
-int run_daemon(const DaemonConfig& config, const DaemonOptions& options);
+/// Runs until a signal (or run_for_s); returns the exit code. Throws UsageError when a server or
+/// the antenna cannot be set up (named port, device, key), before any motor moves. Changes made
+/// from the web console are saved through `store`.
+int run_daemon(ConfigStore& store, const DaemonOptions& options);
 
 }  // namespace azt::app

@@ -62,6 +62,30 @@ linux_os::HamlibConfig read_hamlib(const ConfigSection& s) {
   return h;
 }
 
+WebConfig read_web(const ConfigSection& s) {
+  WebConfig w;
+  w.bind = s.text("bind").value_or(w.bind);
+  w.port = read_port(s, "port", w.port);
+  w.password_hash = s.text("password_hash").value_or("");
+  if (!w.password_hash.empty() && w.password_hash.rfind("$argon2id$", 0) != 0) {
+    s.fail("password_hash", "must be an Argon2id hash as `azeltrack web password` writes it");
+  }
+  w.api_token_sha256 = s.text("api_token_sha256").value_or("");
+  if (!w.api_token_sha256.empty() &&
+      (w.api_token_sha256.size() != 64 ||
+       w.api_token_sha256.find_first_not_of("0123456789abcdef") != std::string::npos)) {
+    s.fail("api_token_sha256", "must be 64 lower-case hex digits (`azeltrack web token`)");
+  }
+  if (const toml::array* hosts = s.array("allowed_hosts")) {
+    for (const auto& h : *hosts) {
+      const auto name = h.value<std::string>();
+      if (!name || name->empty()) s.fail("allowed_hosts", "must hold host names");
+      w.allowed_hosts.push_back(*name);
+    }
+  }
+  return w;
+}
+
 /// Four slots: the configured [[park]] entries in order, the rest from defaults inside the travel.
 std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
     const ConfigFile& file, const sim::StationSimSetup& setup) {
@@ -130,6 +154,8 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.pstrotator_reply_port =
       read_port(pst, "reply_port", c.pstrotator.port == 0 ? 0 : c.pstrotator.port + 1);
   c.serial = read_serial(file);
+  c.web = read_web(
+      file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));
   c.park = read_park(file, c.sim.setup);
   if (c.sim.setup.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
   const ConfigSection log = file.section("log", {"level"});

@@ -22,6 +22,15 @@ struct NetServerConfig {
   unsigned short port = 0;  ///< 0: disabled
 };
 
+/// [web]: the console's HTTP server and who may act through it (docs/web-api.md).
+struct WebConfig {
+  std::string bind = "127.0.0.1";
+  unsigned short port = 8080;    ///< 0: disabled
+  std::string password_hash;     ///< libsodium Argon2id string; empty: generated at first start
+  std::string api_token_sha256;  ///< hex SHA-256 of the scripts' bearer token; empty: none
+  std::vector<std::string> allowed_hosts;  ///< Host names besides IP literals and localhost
+};
+
 /// Everything `serve` reads (README "Configuration").
 struct DaemonConfig {
   SimConfig sim;                      ///< station, sky, control, geometry, and the simulated plant
@@ -31,6 +40,7 @@ struct DaemonConfig {
   NetServerConfig rotctld{"127.0.0.1", 4533};
   std::vector<SerialServerConfig> serial;
   NetServerConfig pstrotator{"127.0.0.1", 12000};
+  WebConfig web;
   unsigned short pstrotator_reply_port = 12001;  ///< 0: reply to the sender's port
   std::array<control::ParkSlot, control::ModeController::kParkSlots> park;
   control::OutOfRangePolicy out_of_range = control::OutOfRangePolicy::Hold;

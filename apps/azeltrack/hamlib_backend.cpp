@@ -61,6 +61,10 @@ class HamlibBackend final : public AntennaBackend {
 
   void clear_faults() override {}
 
+  bool set_corrections(const control::PositionCorrections& /*corrections*/) override {
+    return false;
+  }
+
   [[nodiscard]] std::string describe() const override {
     return "Hamlib rotator model " + std::to_string(config_.model) +
            (config_.device.empty() ? std::string() : " on " + config_.device);

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   const azt::app::Runner hub = azt::app::add_hub_command(app);
   const azt::app::Runner serve = azt::app::add_serve_command(app);
   const azt::app::Runner config = azt::app::add_config_command(app);
+  const azt::app::Runner web = azt::app::add_web_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
@@ -61,6 +62,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("hub")) return hub();
     if (app.got_subcommand("serve")) return serve();
     if (app.got_subcommand("config")) return config();
+    if (app.got_subcommand("web")) return web();
   } catch (const azt::app::UsageError& e) {
     azt::app::print_error(e.what());
     return azt::app::kExitUsage;

@@ -75,6 +75,11 @@ class SimBackend final : public AntennaBackend {
 
   void clear_faults() override { station_.clear_faults(); }
 
+  bool set_corrections(const control::PositionCorrections& corrections) override {
+    station_.set_corrections(corrections);
+    return true;
+  }
+
   [[nodiscard]] std::string describe() const override {
     return "simulated antenna (" + std::to_string(antenna_.az().encoder_bits()) + "/" +
            std::to_string(antenna_.el().encoder_bits()) + "-bit encoders)";

@@ -32,7 +32,9 @@ void read_station(const ConfigSection& s, SkySettings& sky) {
     sky.observer =
         lat ? observer_from_coordinates(*lat, *lon, alt_m) : observer_from_grid(*grid, alt_m);
   } catch (const UsageError& e) {
-    s.fail(lat ? "lat_deg" : "grid", e.what());
+    std::string why = e.what();
+    if (why.rfind("--grid: ", 0) == 0) why.erase(0, 8);  // the command line's wording
+    s.fail(lat ? "lat_deg" : "grid", why);
   }
   sky.grid = grid ? *grid : grid_of(sky.observer);
   if (grid && lat) check_grid_contains(s, *grid, *lat, *lon);

@@ -28,6 +28,9 @@ class StandingAntenna final : public AntennaBackend {
   void stop_now(double /*now_s*/) override {}
   [[nodiscard]] std::vector<std::string> faults() const override { return faults_; }
   void clear_faults() override { faults_.clear(); }
+  bool set_corrections(const control::PositionCorrections& /*corrections*/) override {
+    return false;
+  }
   [[nodiscard]] std::string describe() const override { return "standing antenna"; }
 
   std::vector<std::string> faults_;

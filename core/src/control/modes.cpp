@@ -136,4 +136,12 @@ Demand ModeController::demand(const std::optional<AzEl>& sky) const {
   return hold_or_go(*sky, "tracking " + who_);
 }
 
+void ModeController::set_park_slots(const std::array<ParkSlot, kParkSlots>& slots) {
+  slots_ = slots;
+  if (mode_ == Mode::Park && park_slot_ >= 1 && park_slot_ <= kParkSlots) {
+    fixed_ = slots_[static_cast<std::size_t>(park_slot_ - 1)].position;
+    who_ = slots_[static_cast<std::size_t>(park_slot_ - 1)].name;
+  }
+}
+
 }  // namespace azt::control

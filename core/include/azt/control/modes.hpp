@@ -74,6 +74,11 @@ class ModeController {
   [[nodiscard]] Mode mode() const { return mode_; }
   [[nodiscard]] const std::string& who() const { return who_; }
 
+  [[nodiscard]] const std::array<ParkSlot, kParkSlots>& park_slots() const { return slots_; }
+  /// New slot positions (the console's parking editor). A station parked in a slot that moved
+  /// goes to the new position.
+  void set_park_slots(const std::array<ParkSlot, kParkSlots>& slots);
+
   /// The demand for this tick. `sky` is the tracked target's position (TRACK mode only).
   [[nodiscard]] Demand demand(const std::optional<AzEl>& sky) const;
 

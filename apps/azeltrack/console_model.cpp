@@ -1,0 +1,474 @@
+#include "console_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "azt/astro/bands.hpp"
+#include "azt/astro/time_scales.hpp"
+#include "cli_error.hpp"
+#include "sky_report.hpp"
+#include "station_config.hpp"
+
+namespace azt::app {
+namespace {
+
+using json = nlohmann::json;
+
+double number(const json& body, const std::string& key) {
+  const auto it = body.find(key);
+  if (it == body.end()) throw ApiError(400, key, key + " is required");
+  if (!it->is_number()) throw ApiError(400, key, key + " must be a number");
+  const double v = it->get<double>();
+  if (!std::isfinite(v)) throw ApiError(400, key, key + " must be finite");
+  return v;
+}
+
+std::optional<double> optional_number(const json& body, const std::string& key) {
+  if (!body.contains(key)) return std::nullopt;
+  return number(body, key);
+}
+
+std::string text(const json& body, const std::string& key) {
+  const auto it = body.find(key);
+  if (it == body.end() || !it->is_string()) throw ApiError(400, key, key + " must be a string");
+  return it->get<std::string>();
+}
+
+std::string kind_name(astro::Target::Kind kind) {
+  switch (kind) {
+    case astro::Target::Kind::Sun:
+      return "sun";
+    case astro::Target::Kind::Moon:
+      return "moon";
+    case astro::Target::Kind::Source:
+      return "source";
+    case astro::Target::Kind::RaDec:
+      return "radec";
+  }
+  return "radec";
+}
+
+std::string utc_text(double unix_s) {
+  return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
+}
+
+toml::table& table_at(toml::table& root, const char* name) {
+  if (!root.contains(name)) root.insert(name, toml::table{});
+  toml::table* t = root[name].as_table();
+  if (t == nullptr) throw ApiError(400, name, std::string("[") + name + "] is not a table");
+  return *t;
+}
+
+}  // namespace
+
+const DaemonConsole::Snapshot& DaemonConsole::snapshot() {
+  const double now = std::floor(p_.unix_s());
+  if (now == snapshot_.unix_s) return snapshot_;
+  Snapshot s;
+  s.unix_s = now;
+  try {
+    const StationConfig& station = p_.config.sim.station;
+    const SkySnapshot sky(p_.ephemeris, station.sky, astro::UtcInstant::from_unix_seconds(now));
+    for (const auto& target : station.targets) {
+      const TargetReport r = sky.observe(target);
+      json t{{"name", target.name},
+             {"kind", kind_name(target.kind)},
+             {"az_deg", r.observation.place.az_deg},
+             {"el_deg", r.observation.el_deg}};
+      if (target.kind == astro::Target::Kind::Moon) {
+        const json full = report_json(r, sky, station.sky, p_.ephemeris.name());
+        json doppler = json::object();
+        for (const auto& b : full["bands"])
+          doppler[b["band"].get<std::string>()] = b["echo_doppler_hz"];
+        s.moon = {{"az_deg", t["az_deg"]},
+                  {"el_deg", t["el_deg"]},
+                  {"distance_km", full["distance_km"]},
+                  {"echo_delay_s", full.value("echo_delay_s", json(nullptr))},
+                  {"band", station.band_name},
+                  {"echo_doppler_hz", full.value("echo_doppler_hz", json(nullptr))},
+                  {"dx_echo_doppler_hz", full.value("dx_echo_doppler_hz", json(nullptr))},
+                  {"doppler_hz", doppler}};
+      }
+      if (target.kind == astro::Target::Kind::Sun) {
+        s.sun = {{"az_deg", t["az_deg"]}, {"el_deg", t["el_deg"]}};
+      }
+      s.targets.push_back(std::move(t));
+    }
+  } catch (const UsageError&) {
+    // Outside the ephemeris: the sky part of the state stays empty, the rest is still served.
+  }
+  snapshot_ = std::move(s);
+  return snapshot_;
+}
+
+json DaemonConsole::target_json() {
+  const control::Mode mode = p_.modes.mode();
+  if (mode == control::Mode::Track && p_.sky.target()) {
+    const auto fix = p_.sky.at(p_.unix_s());
+    return {{"name", p_.sky.target()->name},
+            {"az_deg", fix ? json(fix->position.az_deg) : json(nullptr)},
+            {"el_deg", fix ? json(fix->position.el_deg) : json(nullptr)}};
+  }
+  if (const auto fixed = p_.modes.fixed_target()) {
+    return {{"name", p_.modes.who()}, {"az_deg", fixed->az_deg}, {"el_deg", fixed->el_deg}};
+  }
+  return {{"name", nullptr}, {"az_deg", nullptr}, {"el_deg", nullptr}};
+}
+
+json DaemonConsole::state() {
+  const double mono = p_.monotonic_s();
+  const auto here = p_.antenna.position(mono);
+  json antenna{{"known", here.has_value()}};
+  if (here) {
+    antenna.update({{"az_deg", here->az_deg},
+                    {"el_deg", here->el_deg},
+                    {"az_mount_deg", here->az_mount_deg},
+                    {"moving", here->moving}});
+  }
+  json target = target_json();
+  json error = nullptr;
+  if (here && target["az_deg"].is_number() && target["el_deg"].is_number()) {
+    error = {{"az", std::remainder(target["az_deg"].get<double>() - here->az_deg, 360.0)},
+             {"el", target["el_deg"].get<double>() - here->el_deg}};
+  }
+  const Snapshot& sky = snapshot();
+  const auto& c = p_.config.sim.setup.corrections;
+  const auto& obs = p_.config.sim.station.sky.observer;
+  return {{"utc", utc_text(p_.unix_s())},
+          {"mode", std::string(control::to_string(p_.modes.mode()))},
+          {"who", p_.modes.who()},
+          {"antenna", antenna},
+          {"target", target},
+          {"error_deg", error},
+          {"moon", sky.moon.is_null() ? json(nullptr) : sky.moon},
+          {"sun", sky.sun.is_null() ? json(nullptr) : sky.sun},
+          {"corrections",
+           {{"az_user_deg", c.user.az_deg()},
+            {"el_user_deg", c.user.el_deg()},
+            {"az_offset_deg", c.offsets.az_deg},
+            {"el_offset_deg", c.offsets.el_deg}}},
+          {"station",
+           {{"grid", p_.config.sim.station.sky.grid},
+            {"lat_deg", obs.lat_deg},
+            {"lon_deg", obs.lon_deg},
+            {"alt_m", obs.height_m}}},
+          {"clock", {{"source", "system"}}},
+          {"faults", p_.antenna.faults()},
+          {"servers", p_.servers}};
+}
+
+json DaemonConsole::config() {
+  const DaemonConfig& c = p_.config;
+  const auto& corr = c.sim.setup.corrections;
+  const auto& obs = c.sim.station.sky.observer;
+  json park = json::array();
+  for (std::size_t i = 0; i < p_.modes.park_slots().size(); ++i) {
+    const auto& slot = p_.modes.park_slots()[i];
+    park.push_back({{"slot", i + 1},
+                    {"name", slot.name},
+                    {"az_deg", slot.position.az_deg},
+                    {"el_deg", slot.position.el_deg}});
+  }
+  json serial = json::array();
+  for (const auto& s : c.serial) {
+    serial.push_back({{"protocol", s.protocol}, {"device", s.device}, {"baud", s.baud}});
+  }
+  return {
+      {"station",
+       {{"grid", c.sim.station.sky.grid},
+        {"lat_deg", obs.lat_deg},
+        {"lon_deg", obs.lon_deg},
+        {"alt_m", obs.height_m}}},
+      {"band", c.sim.station.band_name},
+      {"dx_grid", c.sim.station.sky.dx_grid},
+      {"control",
+       {{"window_deg", c.sim.setup.az_control.window_deg},
+        {"ramp_s", c.sim.setup.az_control.ramp_s},
+        {"tracking_speed", c.sim.setup.az_control.tracking_speed}}},
+      {"geometry",
+       {{"az_min_deg", c.sim.setup.az_range.min_deg},
+        {"az_max_deg", c.sim.setup.az_range.max_deg},
+        {"el_min_deg", c.sim.setup.el_range.min_deg},
+        {"el_max_deg", c.sim.setup.el_range.max_deg}}},
+      {"corrections",
+       {{"az_offset_deg", corr.offsets.az_deg},
+        {"el_offset_deg", corr.offsets.el_deg},
+        {"az_user_deg", corr.user.az_deg()},
+        {"el_user_deg", corr.user.el_deg()},
+        {"tilt_el_deg", corr.tilt.entries_deg()}}},
+      {"park", park},
+      {"servers",
+       {{"rotctld", {{"bind", c.rotctld.bind}, {"port", c.rotctld.port}}},
+        {"pstrotator", {{"bind", c.pstrotator.bind}, {"port", c.pstrotator.port}}},
+        {"serial", serial},
+        {"web", {{"bind", c.web.bind}, {"port", c.web.port}}}}},
+      {"restart_needed", restart_needed_},
+  };
+}
+
+json DaemonConsole::targets() {
+  json bands = json::array();
+  for (const auto& b : astro::eme_bands()) bands.push_back(std::string(b.name));
+  return {{"targets", snapshot().targets}, {"park", config()["park"]}, {"bands", bands}};
+}
+
+json DaemonConsole::sky(double hours) {
+  json out{{"now", snapshot().targets}};
+  const StationConfig& station = p_.config.sim.station;
+  json moon_path = json::array();
+  json sun_path = json::array();
+  const double start = std::floor(p_.unix_s() / 600.0) * 600.0;
+  for (double t = start; t <= start + hours * 3600.0; t += 600.0) {
+    try {
+      const SkySnapshot snap(p_.ephemeris, station.sky, astro::UtcInstant::from_unix_seconds(t));
+      const auto moon = snap.observe(astro::Target::moon()).observation;
+      const auto sun = snap.observe(astro::Target::sun()).observation;
+      moon_path.push_back(
+          {{"utc", utc_text(t)}, {"az_deg", moon.place.az_deg}, {"el_deg", moon.el_deg}});
+      sun_path.push_back(
+          {{"utc", utc_text(t)}, {"az_deg", sun.place.az_deg}, {"el_deg", sun.el_deg}});
+    } catch (const UsageError&) {
+      break;  // past the ephemeris or the leap-second table
+    }
+  }
+  out["moon_path"] = moon_path;
+  out["sun_path"] = sun_path;
+  return out;
+}
+
+void DaemonConsole::save(const std::string& field,
+                         const std::function<void(toml::table&)>& change) {
+  auto saved = p_.store.update(change);
+  if (saved) return;
+  // "config FILE: line N: [station].grid …" -> "[station].grid …": the page shows it by the field.
+  std::string message = saved.error().message;
+  const std::string prefix = "config " + p_.store.path() + ": ";
+  if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+  if (message.rfind("line ", 0) == 0 && message.find(": ") != std::string::npos) {
+    message.erase(0, message.find(": ") + 2);
+  }
+  throw ApiError(400, field, message);
+}
+
+void DaemonConsole::apply_corrections(const control::PositionCorrections& corrections) {
+  p_.config.sim.setup.corrections = corrections;
+  (void)p_.antenna.set_corrections(corrections);
+}
+
+json DaemonConsole::act(const std::string& action, const json& body) {
+  if (action == "target") return act_target(body);
+  if (action == "stop") {
+    p_.modes.stop(true);
+    return json::object();
+  }
+  if (action == "faults/clear") {
+    p_.antenna.clear_faults();
+    return json::object();
+  }
+  if (action == "correction") return act_correction(body);
+  if (action == "config/station") return act_station(body);
+  if (action == "config/band") return act_band(body);
+  if (action == "config/offsets") return act_offsets(body);
+  if (action == "config/tilt") return act_tilt(body);
+  if (action == "config/park") return act_park(body);
+  if (action == "config/control") return act_control(body);
+  throw ApiError(404, "", "no such action: " + action);
+}
+
+json DaemonConsole::act_target(const json& body) {
+  if (body.contains("name")) {
+    const std::string name = text(body, "name");
+    const auto target = find_station_target(p_.config.sim.station, name);
+    if (!target) throw ApiError(400, "name", "'" + name + "' is not a target of this station");
+    p_.sky.follow(*target);
+    p_.modes.track(target->name);
+    return {{"mode", "TRACK"}, {"target", target->name}};
+  }
+  if (body.contains("ra_deg") || body.contains("dec_deg")) {
+    const double ra = number(body, "ra_deg");
+    const double dec = number(body, "dec_deg");
+    auto target = astro::Target::radec(ra, dec);
+    if (!target)
+      throw ApiError(400, ra < 0.0 || ra >= 360.0 ? "ra_deg" : "dec_deg", target.error().message);
+    p_.sky.follow(*target);
+    p_.modes.track(target->name);
+    return {{"mode", "TRACK"}, {"target", target->name}};
+  }
+  if (body.contains("park")) {
+    const auto& slot = body["park"];
+    if (!slot.is_number_integer()) throw ApiError(400, "park", "park must be a slot number 1 to 4");
+    auto r = p_.modes.park(slot.get<int>());
+    if (!r) throw ApiError(400, "park", r.error().message);
+    return {{"mode", "PARK"}};
+  }
+  if (body.contains("az_deg") || body.contains("el_deg")) {
+    const double az = number(body, "az_deg");
+    const double el = number(body, "el_deg");
+    if (az < 0.0 || az >= 360.0) throw ApiError(400, "az_deg", "az_deg must be 0 to 360");
+    if (!control::plan_elevation(el, p_.config.sim.setup.el_range)) {
+      throw ApiError(400, "el_deg", "el_deg is outside the elevation travel");
+    }
+    auto r = p_.modes.manual(control::AzEl{az, el});
+    if (!r) throw ApiError(400, "az_deg", r.error().message);
+    return {{"mode", "MAN"}};
+  }
+  throw ApiError(400, "name", "expected name, ra_deg/dec_deg, park or az_deg/el_deg");
+}
+
+json DaemonConsole::act_correction(const json& body) {
+  control::PositionCorrections c = p_.config.sim.setup.corrections;
+  if (body.value("reset", false)) {
+    c.user.reset();
+  } else {
+    const std::string axis = text(body, "axis");
+    if (axis != "az" && axis != "el") throw ApiError(400, "axis", "axis must be \"az\" or \"el\"");
+    const auto& steps = body.contains("steps") ? body["steps"] : json(nullptr);
+    if (!steps.is_number_integer() || std::abs(steps.get<long long>()) > 1000) {
+      throw ApiError(400, "steps",
+                     "steps must be an integer number of 0.01° steps, |steps| ≤ 1000");
+    }
+    const auto n = static_cast<std::int32_t>(steps.get<long long>());
+    const bool whole = axis == "az" ? c.user.nudge_az(n) : c.user.nudge_el(n);
+    if (!whole) throw ApiError(400, "steps", "the correction is at its ±10.00° limit");
+  }
+  save("corrections", [&c](toml::table& root) {
+    toml::table& t = table_at(root, "corrections");
+    t.insert_or_assign("az_user_deg", c.user.az_deg());
+    t.insert_or_assign("el_user_deg", c.user.el_deg());
+  });
+  apply_corrections(c);
+  return {{"az_user_deg", c.user.az_deg()}, {"el_user_deg", c.user.el_deg()}};
+}
+
+json DaemonConsole::act_station(const json& body) {
+  if (body.contains("grid")) {
+    const std::string grid = text(body, "grid");
+    save("grid", [&grid](toml::table& root) {
+      toml::table& s = table_at(root, "station");
+      s.insert_or_assign("grid", grid);
+      s.erase("lat_deg");  // the locator's centre becomes the position
+      s.erase("lon_deg");
+    });
+  } else {
+    const double lat = number(body, "lat_deg");
+    const double lon = number(body, "lon_deg");
+    const auto alt = optional_number(body, "alt_m");
+    save("lat_deg", [&](toml::table& root) {
+      toml::table& s = table_at(root, "station");
+      s.insert_or_assign("lat_deg", lat);
+      s.insert_or_assign("lon_deg", lon);
+      if (alt) s.insert_or_assign("alt_m", *alt);
+      s.erase("grid");  // derived from the position
+    });
+  }
+  p_.config.sim.station = p_.store.config().sim.station;
+  if (p_.sky.target()) {
+    const auto again = find_station_target(p_.config.sim.station, p_.sky.target()->name);
+    p_.sky.follow(again ? *again : *p_.sky.target());  // recomputed for the new place
+  }
+  snapshot_.unix_s = -1.0;
+  return {{"station", config()["station"]}};
+}
+
+json DaemonConsole::act_band(const json& body) {
+  const std::string band = text(body, "band");
+  save("band",
+       [&band](toml::table& root) { table_at(root, "sky").insert_or_assign("band", band); });
+  p_.config.sim.station.band_name = p_.store.config().sim.station.band_name;
+  p_.config.sim.station.sky.freq_mhz = p_.store.config().sim.station.sky.freq_mhz;
+  snapshot_.unix_s = -1.0;
+  return {{"band", p_.config.sim.station.band_name}};
+}
+
+json DaemonConsole::act_offsets(const json& body) {
+  const auto az = optional_number(body, "az_offset_deg");
+  const auto el = optional_number(body, "el_offset_deg");
+  if (!az && !el) throw ApiError(400, "az_offset_deg", "give az_offset_deg and/or el_offset_deg");
+  save(az ? "az_offset_deg" : "el_offset_deg", [&](toml::table& root) {
+    toml::table& t = table_at(root, "corrections");
+    if (az) t.insert_or_assign("az_offset_deg", *az);
+    if (el) t.insert_or_assign("el_offset_deg", *el);
+  });
+  apply_corrections(p_.store.config().sim.setup.corrections);
+  return json::object();
+}
+
+json DaemonConsole::act_tilt(const json& body) {
+  std::array<double, control::TiltTable::kEntries> entries =
+      p_.config.sim.setup.corrections.tilt.entries_deg();
+  if (body.contains("tilt_el_deg")) {
+    const auto& a = body["tilt_el_deg"];
+    if (!a.is_array() || a.size() != entries.size()) {
+      throw ApiError(400, "tilt_el_deg", "tilt_el_deg must be an array of 60 numbers");
+    }
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      if (!a[i].is_number()) throw ApiError(400, "tilt_el_deg", "tilt_el_deg must hold numbers");
+      entries[i] = a[i].get<double>();
+    }
+  } else {
+    const auto& index = body.contains("index") ? body["index"] : json(nullptr);
+    if (!index.is_number_integer() || index.get<long long>() < 0 ||
+        index.get<long long>() >= static_cast<long long>(entries.size())) {
+      throw ApiError(400, "index", "index must be 0 to 59");
+    }
+    entries[static_cast<std::size_t>(index.get<long long>())] = number(body, "value");
+  }
+  save("tilt_el_deg", [&entries](toml::table& root) {
+    toml::array a;
+    for (const double e : entries) a.push_back(e);
+    table_at(root, "corrections").insert_or_assign("tilt_el_deg", a);
+  });
+  apply_corrections(p_.store.config().sim.setup.corrections);
+  return json::object();
+}
+
+json DaemonConsole::act_park(const json& body) {
+  const auto& slot_json = body.contains("slot") ? body["slot"] : json(nullptr);
+  if (!slot_json.is_number_integer() || slot_json.get<int>() < 1 || slot_json.get<int>() > 4) {
+    throw ApiError(400, "slot", "slot must be 1 to 4");
+  }
+  const auto slot = static_cast<std::size_t>(slot_json.get<int>());
+  auto slots = p_.modes.park_slots();
+  control::ParkSlot& s = slots[slot - 1];
+  if (body.contains("name")) s.name = text(body, "name");
+  if (body.contains("az_deg")) s.position.az_deg = number(body, "az_deg");
+  if (body.contains("el_deg")) s.position.el_deg = number(body, "el_deg");
+  save(body.contains("az_deg") ? "az_deg" : "el_deg", [&slots, slot](toml::table& root) {
+    // Write every slot up to this one, so the numbering in the file is the console's.
+    toml::array a;
+    if (const toml::array* old = root["park"].as_array()) a = *old;
+    while (a.size() < slot) a.push_back(toml::table{});
+    for (std::size_t i = 0; i < slot; ++i) {
+      *a.get(i)->as_table() = toml::table{{"name", slots[i].name},
+                                          {"az_deg", slots[i].position.az_deg},
+                                          {"el_deg", slots[i].position.el_deg}};
+    }
+    root.insert_or_assign("park", a);
+  });
+  p_.config.park = p_.store.config().park;
+  p_.modes.set_park_slots(p_.config.park);
+  return json::object();
+}
+
+json DaemonConsole::act_control(const json& body) {
+  std::vector<std::string> keys;
+  for (const char* key : {"window_deg", "ramp_s", "tracking_speed"}) {
+    if (body.contains(key)) keys.emplace_back(key);
+  }
+  if (keys.empty()) throw ApiError(400, "window_deg", "give window_deg, ramp_s or tracking_speed");
+  std::vector<double> values;
+  for (const auto& k : keys) values.push_back(number(body, k));
+  save(keys.front(), [&](toml::table& root) {
+    toml::table& t = table_at(root, "control");
+    for (std::size_t i = 0; i < keys.size(); ++i) t.insert_or_assign(keys[i], values[i]);
+  });
+  for (const auto& k : keys) {
+    const std::string name = "control." + k;
+    if (std::find(restart_needed_.begin(), restart_needed_.end(), name) == restart_needed_.end()) {
+      restart_needed_.push_back(name);
+    }
+  }
+  return {{"restart_needed", restart_needed_}};
+}
+
+}  // namespace azt::app

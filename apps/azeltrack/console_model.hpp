@@ -1,0 +1,76 @@
+#pragma once
+// What the web console sees and does, over the daemon's own parts (docs/web-api.md). Every
+// change of a setting goes through the ConfigStore (validated, atomic, .bak) first and is applied
+// to the running station only once it is saved, so what runs is always what a restart would load.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "antenna_backend.hpp"
+#include "azt/astro/ephemeris.hpp"
+#include "azt/control/modes.hpp"
+#include "config_store.hpp"
+#include "daemon_config.hpp"
+#include "sky_follower.hpp"
+#include "web_api.hpp"
+
+namespace azt::app {
+
+/// The parts of the daemon the console works on; all owned by the daemon.
+struct ConsoleParts {
+  DaemonConfig& config;  ///< the running configuration (station, corrections, park, …)
+  ConfigStore& store;
+  const astro::Ephemeris& ephemeris;
+  SkyFollower& sky;
+  control::ModeController& modes;
+  AntennaBackend& antenna;
+  std::function<double()> monotonic_s;  ///< the control loop's clock
+  std::function<double()> unix_s;       ///< UTC seconds since 1970
+  nlohmann::json servers;               ///< where each server listens, for the state
+};
+
+class DaemonConsole final : public ConsoleModel {
+ public:
+  explicit DaemonConsole(ConsoleParts parts) : p_(std::move(parts)) {}
+
+  nlohmann::json state() override;
+  nlohmann::json config() override;
+  nlohmann::json targets() override;
+  nlohmann::json sky(double hours) override;
+  nlohmann::json act(const std::string& action, const nlohmann::json& body) override;
+
+ private:
+  /// Sun, Moon and every target at one whole second, computed once per second.
+  struct Snapshot {
+    double unix_s = -1.0;
+    nlohmann::json moon;
+    nlohmann::json sun;
+    std::vector<nlohmann::json> targets;  ///< {"name","kind","az_deg","el_deg"}
+  };
+  const Snapshot& snapshot();
+  nlohmann::json target_json();
+
+  nlohmann::json act_target(const nlohmann::json& body);
+  nlohmann::json act_correction(const nlohmann::json& body);
+  nlohmann::json act_station(const nlohmann::json& body);
+  nlohmann::json act_band(const nlohmann::json& body);
+  nlohmann::json act_offsets(const nlohmann::json& body);
+  nlohmann::json act_tilt(const nlohmann::json& body);
+  nlohmann::json act_park(const nlohmann::json& body);
+  nlohmann::json act_control(const nlohmann::json& body);
+
+  /// Saves `change` through the store; a refusal becomes a 400 naming `field`. On success the
+  /// running configuration is the saved one for the parts applied live.
+  void save(const std::string& field, const std::function<void(toml::table&)>& change);
+  void apply_corrections(const control::PositionCorrections& corrections);
+
+  ConsoleParts p_;
+  Snapshot snapshot_;
+  std::vector<std::string> restart_needed_;
+};
+
+}  // namespace azt::app

@@ -1,0 +1,82 @@
+#pragma once
+// The console's HTTP API (docs/web-api.md): routing, authentication, Origin and Host checks,
+// JSON in and out. What the station shows and does is behind ConsoleModel, which the daemon
+// implements; this file decides only who may ask and how the answer is shaped.
+
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "web_auth.hpp"
+#include "web_server.hpp"
+
+namespace azt::app {
+
+/// A refused action: HTTP status (400 for a bad value, 409 for "not now"), the field at fault.
+class ApiError : public std::runtime_error {
+ public:
+  ApiError(unsigned status, std::string field, const std::string& message)
+      : std::runtime_error(message), status_(status), field_(std::move(field)) {}
+  [[nodiscard]] unsigned status() const { return status_; }
+  [[nodiscard]] const std::string& field() const { return field_; }
+
+ private:
+  unsigned status_;
+  std::string field_;
+};
+
+class ConsoleModel {
+ public:
+  ConsoleModel() = default;
+  ConsoleModel(const ConsoleModel&) = delete;
+  ConsoleModel& operator=(const ConsoleModel&) = delete;
+  virtual ~ConsoleModel() = default;
+
+  virtual nlohmann::json state() = 0;
+  virtual nlohmann::json config() = 0;
+  virtual nlohmann::json targets() = 0;
+  virtual nlohmann::json sky(double hours) = 0;
+  /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …). Throws ApiError;
+  /// returns fields to add to the {"ok": true} answer.
+  virtual nlohmann::json act(const std::string& action, const nlohmann::json& body) = 0;
+};
+
+struct WebApiConfig {
+  /// Host header names accepted besides IP literals and "localhost" (DNS-rebinding defence).
+  std::vector<std::string> allowed_hosts;
+};
+
+class WebApi {
+ public:
+  using Clock = std::function<double()>;  ///< monotonic seconds
+
+  WebApi(ConsoleModel& model, WebAuth& auth, WebApiConfig config, Clock now)
+      : model_(model), auth_(auth), config_(std::move(config)), now_(std::move(now)) {}
+
+  WebReply handle(const WebRequest& request);
+  /// The WebSocket upgrade: nullopt accepts it.
+  std::optional<WebReply> check_upgrade(const WebRequest& request) const;
+
+ private:
+  WebReply handle_get(const WebRequest& request);
+  WebReply handle_action(const WebRequest& request);
+  WebReply login(const WebRequest& request);
+  /// nullopt when the request may act; otherwise the 401/403 to send.
+  std::optional<WebReply> authorize(const WebRequest& request) const;
+  [[nodiscard]] bool host_allowed(const std::string& host) const;
+  [[nodiscard]] static bool origin_matches(const WebRequest& request);
+
+  ConsoleModel& model_;
+  WebAuth& auth_;
+  WebApiConfig config_;
+  Clock now_;
+};
+
+/// The cookie's value named `name` in a Cookie header, "" when absent.
+std::string cookie_value(const std::string& cookie_header, const std::string& name);
+
+}  // namespace azt::app

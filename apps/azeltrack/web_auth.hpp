@@ -1,0 +1,73 @@
+#pragma once
+// Who may act through the web console (docs/web-api.md "Acting"): a password for people (a
+// session cookie plus a CSRF token), a bearer token for scripts, and a login rate limit. Time is
+// a parameter (monotonic seconds), so the limits are tested without sleeping.
+
+#include <cstddef>
+#include <deque>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace azt::app {
+
+/// libsodium's Argon2id string ("$argon2id$v=19$m=…"), interactive limits (~0.1 s, 64 MiB).
+std::string hash_password(std::string_view password);
+/// False for a wrong password and for a hash that is not in that format.
+bool verify_password(const std::string& hash, std::string_view password);
+/// Lower-case hex SHA-256, the form `[web] api_token_sha256` keeps.
+std::string sha256_hex(std::string_view data);
+/// `bytes` random bytes as lower-case hex.
+std::string random_hex(std::size_t bytes);
+/// A password for people to type: 16 characters from an alphabet without look-alikes (~80 bits).
+std::string random_password();
+/// Compares in time that depends only on the lengths (never on where the first difference is).
+bool constant_time_equal(std::string_view a, std::string_view b);
+
+class WebAuth {
+ public:
+  struct Config {
+    std::string password_hash;     ///< empty: no password, nobody can log in
+    std::string api_token_sha256;  ///< empty: no bearer token is accepted
+    double session_lifetime_s = 7 * 24 * 3600.0;
+  };
+  explicit WebAuth(Config config) : config_(std::move(config)) {}
+
+  enum class LoginOutcome { Ok, Wrong, Limited };
+  struct Login {
+    LoginOutcome outcome = LoginOutcome::Wrong;
+    std::string session;         ///< the cookie value (Ok only)
+    std::string csrf;            ///< the token the page sends back in X-CSRF-Token (Ok only)
+    double retry_after_s = 0.0;  ///< Limited: when the client may try again
+  };
+
+  /// A login attempt from `client` (its address). After 3 failures within a minute each further
+  /// attempt waits 5 s, doubling per failure (to 5 min); over 10 failures in an hour the client
+  /// waits until the oldest is an hour old. A limited attempt is not even checked.
+  Login login(const std::string& client, std::string_view password, double now_s);
+  void logout(std::string_view session);
+  /// The session's CSRF token while the session is valid.
+  [[nodiscard]] std::optional<std::string> csrf_of(std::string_view session, double now_s) const;
+  /// Whether `token` hashes to the configured api_token_sha256.
+  [[nodiscard]] bool bearer_ok(std::string_view token) const;
+  [[nodiscard]] bool has_password() const { return !config_.password_hash.empty(); }
+
+  static constexpr std::size_t kMaxSessions = 64;  ///< the oldest goes when a 65th logs in
+
+ private:
+  struct Session {
+    std::string csrf;
+    double created_s = 0.0;
+  };
+  struct Failures {
+    std::deque<double> at_s;  ///< failure times within the last hour
+  };
+  [[nodiscard]] double blocked_until(const Failures& f) const;
+
+  Config config_;
+  std::map<std::string, Session, std::less<>> sessions_;
+  std::map<std::string, Failures, std::less<>> failures_;
+};
+
+}  // namespace azt::app

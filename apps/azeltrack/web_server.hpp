@@ -1,0 +1,78 @@
+#pragma once
+// The console's HTTP and WebSocket transport (Boost.Beast on the daemon's io_context). It knows
+// nothing of the API: every request goes to a handler as a WebRequest, and WebSocket clients get
+// the same state text pushed at a fixed period. Bounded: 64 KiB bodies, 8 KiB headers, 30 s idle
+// connections, 128 connections, one pending frame per slow WebSocket client (older frames are
+// dropped, never queued).
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "azt/linux/asio.hpp"
+#include "azt/util/result.hpp"
+
+namespace azt::app {
+
+struct WebRequest {
+  std::string method;  ///< "GET", "POST", …
+  std::string path;    ///< without the query
+  std::string query;   ///< after '?', undecoded
+  std::string body;
+  std::string origin;         ///< the Origin header, "" when absent
+  std::string host;           ///< the Host header
+  std::string cookie;         ///< the whole Cookie header
+  std::string csrf;           ///< X-CSRF-Token
+  std::string authorization;  ///< the whole Authorization header
+  std::string client;         ///< the peer's address (no port): the login rate limit's key
+  bool websocket = false;     ///< an upgrade request for /ws
+};
+
+struct WebReply {
+  unsigned status = 200;
+  std::string content_type = "application/json";
+  std::string body;
+  std::vector<std::pair<std::string, std::string>> headers;
+};
+
+class WebServer {
+ public:
+  using Handler = std::function<WebReply(const WebRequest&)>;
+  /// For an upgrade request: nullopt to accept the WebSocket, or the refusal to send.
+  using UpgradeCheck = std::function<std::optional<WebReply>(const WebRequest&)>;
+  using StateText = std::function<std::string()>;
+  using Log = std::function<void(const std::string&)>;
+
+  static constexpr std::size_t kMaxConnections = 128;
+
+  static Result<std::unique_ptr<WebServer>> open(boost::asio::io_context& io,
+                                                 const std::string& bind_address,
+                                                 unsigned short port, Handler handler,
+                                                 UpgradeCheck upgrade_check, StateText state,
+                                                 double push_period_s, Log log);
+  ~WebServer();
+  WebServer(const WebServer&) = delete;
+  WebServer& operator=(const WebServer&) = delete;
+
+  [[nodiscard]] unsigned short port() const;
+  [[nodiscard]] std::size_t websockets() const;
+  void close();
+
+  struct Shared;  ///< what sessions share with the server (outlives it while they run)
+
+ private:
+  WebServer(boost::asio::io_context& io, std::shared_ptr<Shared> shared, double push_period_s);
+  void accept_next();
+  void arm_push();
+
+  boost::asio::ip::tcp::acceptor acceptor_;
+  boost::asio::steady_timer push_timer_;
+  boost::asio::steady_timer::duration push_period_;
+  std::shared_ptr<Shared> shared_;
+};
+
+}  // namespace azt::app
