@@ -195,7 +195,7 @@ serve_re='(^|[^[:alnum:]_-])serve([^[:alnum:]_-]|$)'
 if [[ $azeltrack_help =~ $serve_re ]]; then
   config="$tmp/azeltrack.toml"
   # The simulated antenna tracking the Moon, so the control tick does real work under the load.
-  printf '[station]\ngrid = "FN06HE"\n[target]\nname = "moon"\n[rotctld]\nbind = "127.0.0.1"\nport = %s\n[pstrotator]\nport = 0\n' \
+  printf '[station]\ngrid = "FN06HE"\n[target]\nname = "moon"\n[rotctld]\nbind = "127.0.0.1"\nport = %s\n[pstrotator]\nport = 0\n[web]\nport = 0\n' \
     "$port_azeltrack" >"$config"
   "$azeltrack" serve --config "$config" >"$tmp/azeltrack.log" 2>&1 &
   azeltrack_pid=$!

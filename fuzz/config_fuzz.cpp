@@ -5,7 +5,9 @@
 //   file or throw UsageError, the one error the program reports as "bad configuration"; any other
 //   exception, crash or sanitizer report is a finding;
 // - save -> load is the identity for an accepted file: what ConfigStore writes parses and
-//   validates again, and writing that gives the same bytes.
+//   validates again, and writing that gives the same bytes;
+// - a comment-keeping edit (config_text_edit.hpp) of an accepted file, when it applies, gives a
+//   text that parses to exactly the edited table.
 #include <spdlog/spdlog.h>
 
 #include <cstddef>
@@ -16,6 +18,7 @@
 #include "cli_error.hpp"
 #include "config_file.hpp"
 #include "config_store.hpp"
+#include "config_text_edit.hpp"
 #include "daemon_config.hpp"
 #include "fuzz_support.hpp"
 
@@ -51,6 +54,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;  // refused with a message: the expected outcome for most inputs
   }
   AZT_FUZZ_REQUIRE(save_and_reload(saved) == saved);
+  // The console's typical edits: a changed value, a new key, a new table.
+  const toml::table before = toml::parse(text);
+  toml::table after = before;
+  if (!after.contains("control")) after.insert("control", toml::table{});
+  if (toml::table* control = after["control"].as_table()) {
+    control->insert_or_assign("window_deg", 0.5);
+  }
+  after.insert_or_assign("web", toml::table{{"port", 8090}});
+  if (const auto edited = app::edit_toml_text(std::string(text), before, after)) {
+    AZT_FUZZ_REQUIRE(toml::parse(*edited) == after);
+  }
   return 0;
 }
 

@@ -7,6 +7,7 @@
 #include "azt/linux/file_lock.hpp"
 #include "cli_error.hpp"
 #include "config_file.hpp"
+#include "config_text_edit.hpp"
 
 namespace azt::app {
 namespace {
@@ -31,8 +32,10 @@ constexpr toml::format_flags kFormat = toml::format_flags::relaxed_float_precisi
                                        toml::format_flags::indentation;
 
 struct Loaded {
+  std::string text;  ///< as read (from the backup when from_backup)
   toml::table root;
   DaemonConfig config;
+  bool migrated = false;
   bool from_backup = false;
   std::vector<std::string> notices;
 };
@@ -53,6 +56,8 @@ Loaded load(const std::string& path) {
     out.notices.push_back(std::move(notice));
   }
   out.root = file.root();
+  out.migrated = !file.migration().changes.empty();
+  out.text = std::move(text->text);
   return out;
 }
 
@@ -156,7 +161,10 @@ Result<bool> ConfigStore::update(const std::function<void(toml::table&)>& change
     root = std::move(current.root);
     corrupt = current.from_backup;
     change(root);
-    text = serialize(root);
+    // Keep the author's comments and layout where the change allows; a migration rewrites.
+    std::optional<std::string> edited;
+    if (!current.migrated) edited = edit_toml_text(current.text, toml::parse(current.text), root);
+    text = edited ? std::move(*edited) : serialize(root);
     config = daemon_config_from(ConfigFile::parse(text, path_));
   } catch (const UsageError& e) {
     return fail(e.what());

@@ -25,7 +25,8 @@ namespace azt::app {
 /// set` never lose each other's changes), applies the change, validates the whole result as
 /// `serve` would, and replaces the file atomically (temp + fsync + rename + directory fsync),
 /// keeping the previous version as `FILE.bak`. A failed change leaves the file untouched.
-/// Comments of a hand-edited file are not kept by a runtime save (its .bak still has them).
+/// A save keeps the file's comments and layout, replacing only the text of what changed
+/// (config_text_edit.hpp); only a schema migration or an unusual change rewrites it whole.
 class ConfigStore {
  public:
   /// Throws UsageError (key and line, or both files' problems) when nothing usable is found.

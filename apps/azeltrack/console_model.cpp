@@ -218,7 +218,9 @@ json DaemonConsole::sky(double hours) {
   json moon_path = json::array();
   json sun_path = json::array();
   const double start = std::floor(p_.unix_s() / 600.0) * 600.0;
-  for (double t = start; t <= start + hours * 3600.0; t += 600.0) {
+  const auto steps = static_cast<int>(std::floor(hours * 6.0));  // every 10 minutes
+  for (int i = 0; i <= steps; ++i) {
+    const double t = start + 600.0 * i;
     try {
       const SkySnapshot snap(p_.ephemeris, station.sky, astro::UtcInstant::from_unix_seconds(t));
       const auto moon = snap.observe(astro::Target::moon()).observation;
@@ -457,6 +459,7 @@ json DaemonConsole::act_control(const json& body) {
   }
   if (keys.empty()) throw ApiError(400, "window_deg", "give window_deg, ramp_s or tracking_speed");
   std::vector<double> values;
+  values.reserve(keys.size());
   for (const auto& k : keys) values.push_back(number(body, k));
   save(keys.front(), [&](toml::table& root) {
     toml::table& t = table_at(root, "control");

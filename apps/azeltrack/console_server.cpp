@@ -22,7 +22,7 @@ std::string ensure_password(ConsoleParts& parts,
                      "--config FILE` first");
   }
   const std::string password = random_password();
-  const std::string hash = hash_password(password);
+  std::string hash = hash_password(password);
   auto saved = parts.store.update([&hash](toml::table& root) {
     if (!root.contains("web")) root.insert("web", toml::table{});
     root["web"].as_table()->insert_or_assign("password_hash", hash);

@@ -17,9 +17,9 @@ using tcp = asio::ip::tcp;
 
 namespace {
 
-constexpr std::size_t kMaxBodyBytes = 64 * 1024;
-constexpr std::size_t kMaxHeaderBytes = 8 * 1024;
-constexpr std::size_t kMaxWsMessageBytes = 4 * 1024;
+constexpr std::size_t kMaxBodyBytes = std::size_t{64} * 1024;
+constexpr std::size_t kMaxHeaderBytes = std::size_t{8} * 1024;
+constexpr std::size_t kMaxWsMessageBytes = std::size_t{4} * 1024;
 constexpr auto kIdleTimeout = std::chrono::seconds(30);
 
 class WsSession;
@@ -95,7 +95,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   WsSession(tcp::socket socket, std::shared_ptr<WebServer::Shared> shared)
       : ws_(std::move(socket)), shared_(std::move(shared)) {}
 
-  void start(http::request<http::string_body> req) {
+  void start(const http::request<http::string_body>& req) {
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.read_message_max(kMaxWsMessageBytes);
     ws_.async_accept(req, [self = shared_from_this()](beast::error_code ec) {
@@ -204,7 +204,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
       }
       stream_.expires_never();
       auto ws = std::make_shared<WsSession>(stream_.release_socket(), shared_);
-      ws->start(std::move(req));
+      ws->start(req);
       return;
     }
     reply(shared_->handler(request), req.version(), req.keep_alive());

@@ -227,6 +227,69 @@ TEST_F(ConfigStoreTest, CorrectionsAndTheTiltTableAreSettings) {
   EXPECT_NE(r.error().message.find("el_user_deg"), std::string::npos) << r.error().message;
 }
 
+const std::string kCommented =
+    "# my station, do not lose these notes\n"
+    "schema_version = 1\n"
+    "\n"
+    "[station]\n"
+    "grid = \"FN06HE\"   # the home QTH\n"
+    "alt_m = 300.0\n"
+    "\n"
+    "[control]\n"
+    "window_deg = 0.1   # the seed's movement window\n"
+    "ramp_s = 1.0\n"
+    "\n"
+    "[[park]]           # slot 1\n"
+    "name = \"south\"\n"
+    "az_deg = 180.0\n"
+    "el_deg = 0.0\n"
+    "\n"
+    "[target]\n"
+    "name = \"stop\"    # start stopped\n";
+
+TEST_F(ConfigStoreTest, SavesKeepCommentsAndChangeOnlyTheValue) {
+  write(path_, kCommented);
+  ConfigStore store = ConfigStore::open(path_);
+  ASSERT_TRUE(store.set("control.window_deg", "0.25").ok());
+  std::string expected = kCommented;
+  expected.replace(expected.find("window_deg = 0.1 "), 17, "window_deg = 0.25 ");
+  EXPECT_EQ(read(path_), expected);
+  ASSERT_TRUE(store.set("park.1.az_deg", "200.5").ok());
+  expected.replace(expected.find("az_deg = 180.0"), 14, "az_deg = 200.5");
+  EXPECT_EQ(read(path_), expected);
+}
+
+TEST_F(ConfigStoreTest, NewKeysAndTablesGetLinesOfTheirOwn) {
+  write(path_, kCommented);
+  ConfigStore store = ConfigStore::open(path_);
+  ASSERT_TRUE(store.set("control.tracking_speed", "0.4").ok());
+  ASSERT_TRUE(store.set("web.port", "8090").ok());
+  const std::string text = read(path_);
+  EXPECT_NE(text.find("ramp_s = 1.0\ntracking_speed = 0.4\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n[web]\nport = 8090\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("# my station, do not lose these notes"), std::string::npos);
+  EXPECT_NE(text.find("# start stopped"), std::string::npos);
+  EXPECT_EQ(ConfigStore::open(path_).config().web.port, 8090);
+}
+
+TEST_F(ConfigStoreTest, RemovedKeysLoseTheirLine) {
+  write(path_, kCommented);
+  ConfigStore store = ConfigStore::open(path_);
+  ASSERT_TRUE(store
+                  .update([](toml::table& root) {
+                    toml::table& s = *root["station"].as_table();
+                    s.erase("grid");
+                    s.insert_or_assign("lat_deg", 52.0);
+                    s.insert_or_assign("lon_deg", 5.0);
+                  })
+                  .ok());
+  const std::string text = read(path_);
+  EXPECT_EQ(text.find("FN06HE"), std::string::npos) << text;
+  EXPECT_NE(text.find("alt_m = 300.0\nlat_deg = 52.0\nlon_deg = 5.0\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("# the seed's movement window"), std::string::npos);
+  EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().sim.station.sky.observer.lat_deg, 52.0);
+}
+
 TEST_F(ConfigStoreTest, StartTargetsAreFoundByNameOrAlias) {
   write(path_, kValid);
   ConfigStore store = ConfigStore::open(path_);

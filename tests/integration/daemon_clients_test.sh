@@ -46,6 +46,8 @@ port = $2
 [pstrotator]
 port = $3
 reply_port = $(( $3 + 1 ))
+[web]
+port = 0
 ${4:-}
 TOML
 }
