@@ -125,6 +125,10 @@ json DaemonConsole::state() {
                     {"az_mount_deg", here->az_mount_deg},
                     {"moving", here->moving}});
   }
+  if (const auto raw = p_.antenna.encoder_reading()) {
+    antenna["encoder_az_deg"] = raw->az_deg;
+    antenna["encoder_el_deg"] = raw->el_deg;
+  }
   json target = target_json();
   json error = nullptr;
   if (here && target["az_deg"].is_number() && target["el_deg"].is_number()) {

@@ -45,7 +45,13 @@ ConsoleServer::ConsoleServer(boost::asio::io_context& io, ConsoleParts parts,
   console_ = std::make_unique<DaemonConsole>(std::move(parts));
   api_ = std::make_unique<WebApi>(*console_, *auth_, WebApiConfig{web.allowed_hosts}, now);
   auto server = WebServer::open(
-      io, web.bind, web.port, [this](const WebRequest& r) { return api_->handle(r); },
+      io, web.bind, web.port,
+      [this](const WebRequest& r) {
+        WebReply reply = api_->handle(r);
+        // A change made here reaches every open console now, not at the next periodic push.
+        if (r.method != "GET" && r.method != "HEAD" && reply.status == 200) server_->push_now();
+        return reply;
+      },
       [this](const WebRequest& r) { return api_->check_upgrade(r); },
       [this] { return console_->state().dump(); }, 0.2, log);
   if (!server) throw UsageError("[web]: " + server.error().message);

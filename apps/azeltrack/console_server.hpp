@@ -24,6 +24,8 @@ class ConsoleServer {
   [[nodiscard]] unsigned short port() const { return server_->port(); }
   [[nodiscard]] std::size_t websockets() const { return server_->websockets(); }
   void close() { server_->close(); }
+  /// The state changed outside the console (a PC program, a fault): push it now.
+  void push_now() { server_->push_now(); }
 
  private:
   std::unique_ptr<WebAuth> auth_;

@@ -232,6 +232,13 @@ class Daemon {
     const control::Demand demand = modes_.demand(fix ? std::optional(fix->position) : std::nullopt);
     antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
     report_faults();
+    // Mode changes by PC programs and new faults reach open consoles at once.
+    std::string summary = std::string(control::to_string(modes_.mode())) + " " + modes_.who() +
+                          " " + std::to_string(last_faults_.size());
+    if (summary != last_summary_) {
+      last_summary_ = std::move(summary);
+      if (console_) console_->push_now();
+    }
     notifier_.watchdog();
   }
 
@@ -283,6 +290,7 @@ class Daemon {
   std::unique_ptr<linux_os::UdpDatagramServer> pstrotator_;
   std::unique_ptr<ConsoleServer> console_;
   std::vector<std::string> last_faults_;
+  std::string last_summary_;  ///< mode, owner and fault count at the last tick
   bool stopping_ = false;
 };
 

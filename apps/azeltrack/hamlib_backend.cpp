@@ -65,6 +65,10 @@ class HamlibBackend final : public AntennaBackend {
     return false;
   }
 
+  [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override {
+    return std::nullopt;
+  }
+
   [[nodiscard]] std::string describe() const override {
     return "Hamlib rotator model " + std::to_string(config_.model) +
            (config_.device.empty() ? std::string() : " on " + config_.device);

@@ -80,6 +80,10 @@ class SimBackend final : public AntennaBackend {
     return true;
   }
 
+  [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override {
+    return station_.encoder_reading();
+  }
+
   [[nodiscard]] std::string describe() const override {
     return "simulated antenna (" + std::to_string(antenna_.az().encoder_bits()) + "/" +
            std::to_string(antenna_.el().encoder_bits()) + "-bit encoders)";

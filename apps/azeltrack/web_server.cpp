@@ -331,16 +331,23 @@ void WebServer::arm_push() {
   push_timer_.expires_after(push_period_);
   push_timer_.async_wait([this](boost::system::error_code ec) {
     if (ec || shared_->closed) return;
-    std::erase_if(shared_->ws, [](const auto& w) { return w.expired(); });
-    if (!shared_->ws.empty()) {
-      // One serialisation per period, shared by every client.
-      const auto text = std::make_shared<const std::string>(shared_->state());
-      for (auto& w : shared_->ws) {
-        if (auto s = w.lock()) s->push(text);
-      }
-    }
+    broadcast();
     arm_push();
   });
+}
+
+void WebServer::push_now() {
+  if (!shared_->closed) broadcast();
+}
+
+void WebServer::broadcast() {
+  std::erase_if(shared_->ws, [](const auto& w) { return w.expired(); });
+  if (shared_->ws.empty()) return;
+  // One serialisation per push, shared by every client.
+  const auto text = std::make_shared<const std::string>(shared_->state());
+  for (auto& w : shared_->ws) {
+    if (auto s = w.lock()) s->push(text);
+  }
 }
 
 }  // namespace azt::app

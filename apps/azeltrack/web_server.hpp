@@ -58,6 +58,8 @@ class WebServer {
   WebServer(const WebServer&) = delete;
   WebServer& operator=(const WebServer&) = delete;
 
+  /// Pushes the state to every WebSocket client now (after a change), besides the periodic push.
+  void push_now();
   [[nodiscard]] unsigned short port() const;
   [[nodiscard]] std::size_t websockets() const;
   void close();
@@ -68,6 +70,7 @@ class WebServer {
   WebServer(boost::asio::io_context& io, std::shared_ptr<Shared> shared, double push_period_s);
   void accept_next();
   void arm_push();
+  void broadcast();
 
   boost::asio::ip::tcp::acceptor acceptor_;
   boost::asio::steady_timer push_timer_;

@@ -31,6 +31,9 @@ class StandingAntenna final : public AntennaBackend {
   bool set_corrections(const control::PositionCorrections& /*corrections*/) override {
     return false;
   }
+  [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override {
+    return std::nullopt;
+  }
   [[nodiscard]] std::string describe() const override { return "standing antenna"; }
 
   std::vector<std::string> faults_;

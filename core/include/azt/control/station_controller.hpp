@@ -57,6 +57,8 @@ class StationController {
   /// the change, as the seed's ± / UP / DWN buttons do.
   void set_corrections(const PositionCorrections& corrections);
   [[nodiscard]] const PositionCorrections& corrections() const { return corrections_; }
+  /// The last encoder angles as read, before any correction (the seed's "as read" display).
+  [[nodiscard]] const std::optional<AzEl>& encoder_reading() const { return last_encoder_; }
 
   /// One control tick: the duties to apply until the next. `rate` is the target's sky rate
   /// (deg/s), used as feed-forward while tracking.
