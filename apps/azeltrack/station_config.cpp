@@ -6,6 +6,7 @@
 
 #include "azt/astro/bands.hpp"
 #include "azt/astro/maidenhead.hpp"
+#include "azt/astro/target.hpp"
 #include "cli_error.hpp"
 #include "config_file.hpp"
 
@@ -126,6 +127,12 @@ std::optional<astro::Target> find_station_target(const StationConfig& station,
     std::string compact = lower(t.name);
     compact.erase(std::remove(compact.begin(), compact.end(), ' '), compact.end());
     if (compact == wanted) return t;
+  }
+  // A catalogue alias ("casa", "crab") of a source this station lists.
+  if (const auto parsed = astro::parse_target(name); parsed) {
+    for (const auto& t : station.targets) {
+      if (t.kind == parsed->kind && t.name == parsed->name) return t;
+    }
   }
   return std::nullopt;
 }

@@ -1,0 +1,252 @@
+#!/usr/bin/env python3
+"""Every endpoint of the console API (docs/web-api.md) against a real `azeltrack serve` on the
+simulated antenna, with a bearer token from `azeltrack web token`: what each action does to the
+daemon's state and to the saved file, and that bad values are 400s naming the field that change
+nothing. Also a forged Origin, a raw WebSocket handshake, and 20 WebSocket clients.
+Usage: web_api_test.py AZELTRACK"""
+import base64
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.error
+import urllib.request
+
+BIN = os.path.realpath(sys.argv[1])
+TMP = tempfile.mkdtemp(prefix="azt-web-api-")
+CONFIG = os.path.join(TMP, "azeltrack.toml")
+passed = 0
+failed = 0
+
+
+def check(condition, what):
+    global passed, failed
+    if condition:
+        passed += 1
+    else:
+        failed += 1
+        print(f"FAIL: {what}", file=sys.stderr)
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+PORT = free_port()
+BASE = f"http://127.0.0.1:{PORT}"
+
+
+def request(method, route, body=None, token=None, headers=None):
+    h = {"Content-Type": "application/json"}
+    if token:
+        h["Authorization"] = f"Bearer {token}"
+    h.update(headers or {})
+    data = json.dumps(body).encode() if body is not None else None
+    req = urllib.request.Request(BASE + route, data=data, method=method, headers=h)
+    try:
+        with urllib.request.urlopen(req, timeout=5) as r:
+            return r.status, json.loads(r.read() or b"null")
+    except urllib.error.HTTPError as e:
+        return e.code, json.loads(e.read() or b"null")
+
+
+def state():
+    return request("GET", "/api/state")[1]
+
+
+def wait_for(what, probe, seconds=10.0):
+    end = time.time() + seconds
+    while time.time() < end:
+        try:
+            if probe():
+                return True
+        except (OSError, ValueError, KeyError, TypeError):
+            pass
+        time.sleep(0.1)
+    check(False, f"timed out waiting for {what}")
+    return False
+
+
+with open(CONFIG, "w") as f:
+    f.write(f"""schema_version = 1
+# a comment that every save must keep
+[station]
+grid = "FN06HE"
+[target]
+name = "stop"
+[sim.az]
+max_rate_deg_s = 10.0
+[sim.el]
+max_rate_deg_s = 10.0
+[rotctld]
+port = 0
+[pstrotator]
+port = 0
+[web]
+port = {PORT}
+""")
+subprocess.run([BIN, "web", "password", "--config", CONFIG], input=b"a-long-password\n",
+               check=True, capture_output=True)
+TOKEN = subprocess.run([BIN, "web", "token", "--config", CONFIG], check=True,
+                       capture_output=True).stdout.decode().strip()
+log = open(os.path.join(TMP, "daemon.log"), "w")
+daemon = subprocess.Popen([BIN, "serve", "--config", CONFIG], stdout=log, stderr=log)
+try:
+    wait_for("the daemon", lambda: state()["antenna"]["known"])
+
+    # Reading is open; the page and its files are served.
+    for route in ["/", "/app.js", "/app.css", "/api/state", "/api/config", "/api/targets",
+                  "/api/sky?hours=2", "/api/session"]:
+        with urllib.request.urlopen(BASE + route, timeout=5) as r:
+            check(r.status == 200, f"GET {route} answered {r.status}")
+    s = state()
+    for key in ["mode", "utc", "antenna", "target", "faults", "moon", "sun", "corrections"]:
+        check(key in s, f"state lacks {key}")
+    sky = request("GET", "/api/sky?hours=2")[1]
+    check(len(sky["moon_path"]) == 13, f"2 h of Moon path every 10 min: {len(sky['moon_path'])}")
+
+    # Without credentials every action is 401 and moves nothing.
+    for method, route in [("POST", "/api/target"), ("POST", "/api/stop"),
+                          ("PUT", "/api/config/band"), ("POST", "/api/faults/clear")]:
+        code, _ = request(method, route, {"name": "moon"})
+        check(code == 401, f"{method} {route} without login: {code}")
+    check(state()["mode"] == "STOP", "a refused action changed the mode")
+    code, _ = request("POST", "/api/target", {"name": "moon"}, TOKEN,
+                      {"Origin": "http://evil.example"})
+    check(code == 403, f"forged Origin with a valid token: {code}")
+
+    # Targets.
+    code, r = request("POST", "/api/target", {"name": "casa"}, TOKEN)
+    check(code == 200 and state()["target"]["name"] == "Cassiopeia A", f"track casa: {code} {r}")
+    code, r = request("POST", "/api/target", {"ra_deg": 83.633, "dec_deg": 22.0145}, TOKEN)
+    check(code == 200 and state()["mode"] == "TRACK", f"track RA/Dec: {code} {r}")
+    code, r = request("POST", "/api/target", {"park": 2}, TOKEN)
+    check(code == 200 and state()["mode"] == "PARK", f"park 2: {code} {r}")
+    code, r = request("POST", "/api/target", {"az_deg": 123.0, "el_deg": 33.0}, TOKEN)
+    check(code == 200 and state()["mode"] == "MAN", f"manual: {code} {r}")
+    wait_for("the antenna at 123/33",
+             lambda: abs(state()["antenna"]["az_deg"] - 123) < 0.2 and
+             abs(state()["antenna"]["el_deg"] - 33) < 0.2, 30)
+    for body, field in [({"name": "vega"}, "name"), ({"park": 5}, "park"),
+                        ({"az_deg": 400, "el_deg": 10}, "az_deg"),
+                        ({"az_deg": 10, "el_deg": 95}, "el_deg"),
+                        ({"ra_deg": "x", "dec_deg": 1}, "ra_deg"), ({}, "name")]:
+        code, r = request("POST", "/api/target", body, TOKEN)
+        check(code == 400 and r.get("field") == field, f"target {body}: {code} {r}")
+    check(state()["mode"] == "MAN", "a refused target changed the mode")
+    code, _ = request("POST", "/api/stop", None, TOKEN)
+    check(code == 200 and state()["mode"] == "STOP", "stop")
+
+    # Corrections: saved and live.
+    for _ in range(3):
+        request("POST", "/api/correction", {"axis": "az", "steps": 1}, TOKEN)
+    code, r = request("POST", "/api/correction", {"axis": "el", "steps": -2}, TOKEN)
+    check(code == 200 and abs(r["el_user_deg"] + 0.02) < 1e-9, f"el correction: {r}")
+    c = state()["corrections"]
+    check(abs(c["az_user_deg"] - 0.03) < 1e-9, f"az total {c['az_user_deg']}")
+    text = open(CONFIG).read()
+    check("az_user_deg = 0.03" in text and "# a comment that every save must keep" in text,
+          "the saved file holds the total and keeps its comment")
+    code, r = request("POST", "/api/correction", {"axis": "up", "steps": 1}, TOKEN)
+    check(code == 400 and r.get("field") == "axis", f"bad axis: {r}")
+    code, r = request("POST", "/api/correction", {"reset": True}, TOKEN)
+    check(code == 200 and state()["corrections"]["az_user_deg"] == 0, "reset")
+
+    # Settings.
+    code, _ = request("PUT", "/api/config/band", {"band": "1296"}, TOKEN)
+    check(code == 200 and state()["moon"]["band"] == "1296", "band applied")
+    code, r = request("PUT", "/api/config/band", {"band": "99"}, TOKEN)
+    check(code == 400 and r.get("field") == "band", f"bad band: {r}")
+    code, _ = request("PUT", "/api/config/station", {"grid": "JO65"}, TOKEN)
+    check(code == 200 and state()["station"]["grid"] == "JO65", "grid applied")
+    code, _ = request("PUT", "/api/config/station",
+                      {"lat_deg": 52.1, "lon_deg": 5.2, "alt_m": 10.0}, TOKEN)
+    check(code == 200 and abs(state()["station"]["lat_deg"] - 52.1) < 1e-9, "lat/lon applied")
+    code, r = request("PUT", "/api/config/station", {"lat_deg": 95.0, "lon_deg": 5.0}, TOKEN)
+    check(code == 400 and r.get("field") == "lat_deg", f"bad latitude: {r}")
+    code, _ = request("PUT", "/api/config/offsets", {"az_offset_deg": 1.5}, TOKEN)
+    check(code == 200 and state()["corrections"]["az_offset_deg"] == 1.5, "offset applied")
+    code, r = request("PUT", "/api/config/offsets", {"el_offset_deg": 500}, TOKEN)
+    check(code == 400, f"bad offset: {r}")
+    code, _ = request("PUT", "/api/config/tilt", {"tilt_el_deg": [0.1] * 60}, TOKEN)
+    check(code == 200, "whole tilt table")
+    code, _ = request("PUT", "/api/config/tilt", {"index": 59, "value": -0.3}, TOKEN)
+    tilt = request("GET", "/api/config")[1]["corrections"]["tilt_el_deg"]
+    check(code == 200 and tilt[59] == -0.3 and tilt[0] == 0.1, "tilt entry")
+    for body in [{"index": 60, "value": 0}, {"index": 1, "value": 9.0}, {"tilt_el_deg": [1, 2]}]:
+        code, r = request("PUT", "/api/config/tilt", body, TOKEN)
+        check(code == 400, f"bad tilt {body}: {code}")
+    code, _ = request("PUT", "/api/config/park",
+                      {"slot": 3, "name": "dish down", "az_deg": 90, "el_deg": 5}, TOKEN)
+    park = request("GET", "/api/config")[1]["park"]
+    check(code == 200 and park[2]["name"] == "dish down" and park[2]["el_deg"] == 5, "park slot")
+    code, r = request("PUT", "/api/config/park", {"slot": 1, "el_deg": 120}, TOKEN)
+    check(code == 400, f"bad park elevation: {r}")
+    code, r = request("PUT", "/api/config/control", {"window_deg": 0.3}, TOKEN)
+    check(code == 200 and "control.window_deg" in r["restart_needed"], f"control: {r}")
+    code, r = request("PUT", "/api/config/control", {"window_deg": 3.0}, TOKEN)
+    check(code == 400, f"bad window: {r}")
+    code, _ = request("POST", "/api/faults/clear", None, TOKEN)
+    check(code == 200, "faults/clear")
+    check(subprocess.run([BIN, "config", "check", "--config", CONFIG],
+                         capture_output=True).returncode == 0, "the saved file is valid")
+
+    # WebSocket: a same-origin handshake is accepted, a forged one refused; 20 clients get pushes.
+    def ws_handshake(origin):
+        s = socket.create_connection(("127.0.0.1", PORT), timeout=5)
+        key = base64.b64encode(os.urandom(16)).decode()
+        s.sendall((f"GET /ws HTTP/1.1\r\nHost: 127.0.0.1:{PORT}\r\nUpgrade: websocket\r\n"
+                   f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\n"
+                   f"Sec-WebSocket-Version: 13\r\nOrigin: {origin}\r\n\r\n").encode())
+        head = b""
+        while b"\r\n\r\n" not in head:
+            head += s.recv(1)
+        return s, head.split(b"\r\n")[0].decode()
+
+    s, status = ws_handshake("http://evil.example")
+    check(" 403 " in status, f"forged WebSocket Origin: {status}")
+    s.close()
+    clients = []
+    for _ in range(20):
+        s, status = ws_handshake(f"http://127.0.0.1:{PORT}")
+        check(" 101 " in status, f"WebSocket handshake: {status}")
+        clients.append(s)
+    start = time.time()
+    frames = 0
+    for s in clients:
+        s.settimeout(2)
+        data = s.recv(65536)
+        frames += 1 if data[:1] == b"\x81" else 0
+    check(frames == 20, f"{frames} of 20 clients got a text frame")
+    rss_kb = int([l for l in open(f"/proc/{daemon.pid}/status") if l.startswith("VmRSS")][0].split()[1])
+    cpu0 = sum(int(x) for x in open(f"/proc/{daemon.pid}/stat").read().split()[13:15])
+    t0 = time.time()
+    end = t0 + 5
+    while time.time() < end:  # keep reading so nobody is a slow client
+        for s in clients:
+            try:
+                s.setblocking(False)
+                s.recv(65536)
+            except BlockingIOError:
+                pass
+        time.sleep(0.05)
+    cpu1 = sum(int(x) for x in open(f"/proc/{daemon.pid}/stat").read().split()[13:15])
+    cpu_pct = 100.0 * (cpu1 - cpu0) / os.sysconf("SC_CLK_TCK") / (time.time() - t0)
+    print(f"measure: 20 WebSocket consoles: daemon RSS {rss_kb} kB, CPU {cpu_pct:.1f} % of one core")
+    for s in clients:
+        s.close()
+finally:
+    daemon.terminate()
+    daemon.wait(10)
+    log.close()
+    if failed:
+        print(open(os.path.join(TMP, "daemon.log")).read()[-3000:], file=sys.stderr)
+    shutil.rmtree(TMP, ignore_errors=True)
+print(f"{passed} passed, {failed} failed")
+sys.exit(1 if failed else 0)
