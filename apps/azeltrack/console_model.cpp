@@ -115,6 +115,18 @@ json DaemonConsole::target_json() {
   return {{"name", nullptr}, {"az_deg", nullptr}, {"el_deg", nullptr}};
 }
 
+void DaemonConsole::mark_commander(std::string who) {
+  mode_signature_ = std::string(control::to_string(p_.modes.mode())) + "|" + p_.modes.who();
+  commander_ = std::move(who);
+}
+
+std::string DaemonConsole::commander() const {
+  const std::string now = std::string(control::to_string(p_.modes.mode())) + "|" + p_.modes.who();
+  if (now == mode_signature_) return commander_;
+  // Changed since: by a PC program (EXT names its client; a stop or park from one does not).
+  return p_.modes.mode() == control::Mode::External ? p_.modes.who() : "PC program";
+}
+
 json DaemonConsole::state() {
   const double mono = p_.monotonic_s();
   const auto here = p_.antenna.position(mono);
@@ -140,7 +152,7 @@ json DaemonConsole::state() {
   const auto& obs = p_.config.sim.station.sky.observer;
   return {{"utc", utc_text(p_.unix_s())},
           {"mode", std::string(control::to_string(p_.modes.mode()))},
-          {"who", p_.modes.who()},
+          {"who", commander()},
           {"antenna", antenna},
           {"target", target},
           {"error_deg", error},
@@ -262,9 +274,14 @@ void DaemonConsole::apply_corrections(const control::PositionCorrections& correc
 }
 
 json DaemonConsole::act(const std::string& action, const json& body) {
-  if (action == "target") return act_target(body);
+  if (action == "target") {
+    json out = act_target(body);
+    mark_commander("console");
+    return out;
+  }
   if (action == "stop") {
     p_.modes.stop(true);
+    mark_commander("console");
     return json::object();
   }
   if (action == "faults/clear") {

@@ -35,7 +35,9 @@ struct ConsoleParts {
 
 class DaemonConsole final : public ConsoleModel {
  public:
-  explicit DaemonConsole(ConsoleParts parts) : p_(std::move(parts)) {}
+  explicit DaemonConsole(ConsoleParts parts) : p_(std::move(parts)) {
+    mark_commander("config");  // the mode the daemon started in
+  }
 
   nlohmann::json state() override;
   nlohmann::json config() override;
@@ -67,10 +69,15 @@ class DaemonConsole final : public ConsoleModel {
   /// running configuration is the saved one for the parts applied live.
   void save(const std::string& field, const std::function<void(toml::table&)>& change);
   void apply_corrections(const control::PositionCorrections& corrections);
+  /// Remembers that the present mode was chosen by `who`; state() reports it while it lasts.
+  void mark_commander(std::string who);
+  [[nodiscard]] std::string commander() const;
 
   ConsoleParts p_;
   Snapshot snapshot_;
   std::vector<std::string> restart_needed_;
+  std::string mode_signature_;  ///< mode and target when the console (or config) last chose them
+  std::string commander_;
 };
 
 }  // namespace azt::app
