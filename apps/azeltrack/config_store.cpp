@@ -57,7 +57,7 @@ Loaded load(const std::string& path) {
   }
   out.root = file.root();
   out.migrated = !file.migration().changes.empty();
-  out.text = std::move(text->text);
+  out.text = std::move(text.value().text);
   return out;
 }
 
