@@ -700,7 +700,7 @@
   }
   function showOther() {
     const ll = gridToLatLon($('grid').value);
-    setText('grid-other', ll ? `Centre of the square: ${fmtLatLon(ll.lat, ll.lon)}` : $('grid').value.trim() ? 'Not a complete locator yet (4–10 characters, like FN06HE).' : '');
+    setText('grid-other', ll ? `Centre of the square: ${fmtLatLon(ll.lat, ll.lon)}` : $('grid').value.trim() ? 'Not a valid locator: 2 letters A–R, 2 digits, then optional pairs (like FN06HE).' : '');
     const g = latLonToGrid(parseNum($('lat').value), parseNum($('lon').value));
     setText('latlon-other', g ? `Locator ${g.slice(0, 4).toUpperCase()}${g.slice(4)}` : '');
   }
