@@ -961,6 +961,14 @@
       toast('Station position saved.');
       await loadConfig(true);
     });
+    $('dx-form').addEventListener('submit', async (ev) => {
+      ev.preventDefault();
+      const dx_grid = $('dx-input').value.trim();
+      const r = await act('save the DX locator', 'PUT', '/api/config/dx', { dx_grid }, { btn: $('dx-save'), errEl: $('dx-error'), form: $('dx-form') });
+      if (!r.ok) return;
+      toast(dx_grid ? `DX locator ${dx_grid}.` : 'DX locator cleared.');
+      await loadConfig(true);
+    });
     $('band-form').addEventListener('submit', (ev) => ev.preventDefault());
     $('band').addEventListener('change', async () => {
       const sel = $('band'); const band = sel.value;

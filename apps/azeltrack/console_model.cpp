@@ -291,6 +291,7 @@ json DaemonConsole::act(const std::string& action, const json& body) {
   if (action == "correction") return act_correction(body);
   if (action == "config/station") return act_station(body);
   if (action == "config/band") return act_band(body);
+  if (action == "config/dx") return act_dx(body);
   if (action == "config/offsets") return act_offsets(body);
   if (action == "config/tilt") return act_tilt(body);
   if (action == "config/park") return act_park(body);
@@ -401,6 +402,22 @@ json DaemonConsole::act_band(const json& body) {
   p_.config.sim.station.sky.freq_mhz = p_.store.config().sim.station.sky.freq_mhz;
   snapshot_.unix_s = -1.0;
   return {{"band", p_.config.sim.station.band_name}};
+}
+
+json DaemonConsole::act_dx(const json& body) {
+  const std::string dx = text(body, "dx_grid");
+  save("dx_grid", [&dx](toml::table& root) {
+    toml::table& sky = table_at(root, "sky");
+    if (dx.empty()) {
+      sky.erase("dx_grid");
+    } else {
+      sky.insert_or_assign("dx_grid", dx);
+    }
+  });
+  p_.config.sim.station.sky.dx = p_.store.config().sim.station.sky.dx;
+  p_.config.sim.station.sky.dx_grid = p_.store.config().sim.station.sky.dx_grid;
+  snapshot_.unix_s = -1.0;
+  return {{"dx_grid", p_.config.sim.station.sky.dx_grid}};
 }
 
 json DaemonConsole::act_offsets(const json& body) {

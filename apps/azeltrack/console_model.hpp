@@ -60,6 +60,7 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json act_correction(const nlohmann::json& body);
   nlohmann::json act_station(const nlohmann::json& body);
   nlohmann::json act_band(const nlohmann::json& body);
+  nlohmann::json act_dx(const nlohmann::json& body);
   nlohmann::json act_offsets(const nlohmann::json& body);
   nlohmann::json act_tilt(const nlohmann::json& body);
   nlohmann::json act_park(const nlohmann::json& body);

@@ -95,6 +95,17 @@ subprocess.run([BIN, "web", "password", "--config", CONFIG], input=b"a-long-pass
                check=True, capture_output=True)
 TOKEN = subprocess.run([BIN, "web", "token", "--config", CONFIG], check=True,
                        capture_output=True).stdout.decode().strip()
+# A LAN bind address without a password: refused at start, naming [web].
+lan = os.path.join(TMP, "lan.toml")
+lan_port = free_port()
+with open(lan, "w") as f:
+    f.write('[station]\ngrid = "FN06HE"\n[rotctld]\nport = 0\n[pstrotator]\nport = 0\n'
+            f'[web]\nbind = "0.0.0.0"\nport = {lan_port}\n')
+r = subprocess.run([BIN, "serve", "--config", lan, "--run-for", "1"], capture_output=True)
+check(r.returncode == 2 and b"[web]" in r.stderr and b"password" in r.stderr,
+      f"LAN bind without a password: rc={r.returncode} {r.stderr[-200:]}")
+check("password_hash" not in open(lan).read(), "nothing generated for a LAN bind")
+
 log = open(os.path.join(TMP, "daemon.log"), "w")
 daemon = subprocess.Popen([BIN, "serve", "--config", CONFIG], stdout=log, stderr=log)
 try:
@@ -163,6 +174,12 @@ try:
     check(code == 200 and state()["moon"]["band"] == "1296", "band applied")
     code, r = request("PUT", "/api/config/band", {"band": "99"}, TOKEN)
     check(code == 400 and r.get("field") == "band", f"bad band: {r}")
+    code, _ = request("PUT", "/api/config/dx", {"dx_grid": "JO65"}, TOKEN)
+    check(code == 200 and state()["moon"]["dx_echo_doppler_hz"] is not None, "DX Doppler shown")
+    code, r = request("PUT", "/api/config/dx", {"dx_grid": "XX"}, TOKEN)
+    check(code == 400 and r.get("field") == "dx_grid", f"bad DX locator: {r}")
+    code, _ = request("PUT", "/api/config/dx", {"dx_grid": ""}, TOKEN)
+    check(code == 200 and state()["moon"]["dx_echo_doppler_hz"] is None, "DX cleared")
     code, _ = request("PUT", "/api/config/station", {"grid": "JO65"}, TOKEN)
     check(code == 200 and state()["station"]["grid"] == "JO65", "grid applied")
     code, _ = request("PUT", "/api/config/station",
