@@ -18,6 +18,7 @@ Runner add_hub_command(CLI::App& app);
 Runner add_serve_command(CLI::App& app);
 Runner add_config_command(CLI::App& app);
 Runner add_web_command(CLI::App& app);
+Runner add_seq_sim_command(CLI::App& app);
 
 /// Parses a finite decimal number given to `option`; throws UsageError otherwise
 /// (CLI11 would accept "nan" and "inf").

@@ -86,6 +86,43 @@ WebConfig read_web(const ConfigSection& s) {
   return w;
 }
 
+sequencer::SequencerConfig read_sequencer(const ConfigSection& s) {
+  auto d = sequencer::SequencerConfig::seed_default();
+  std::vector<std::string> outputs = d.outputs;
+  if (const toml::array* a = s.array("outputs")) {
+    outputs.clear();
+    for (const auto& n : *a) {
+      const auto name = n.value<std::string>();
+      if (!name) s.fail("outputs", "must hold line names");
+      outputs.push_back(*name);
+    }
+  }
+  if (s.has("delay_ms") && s.has("delays_ms"))
+    s.fail("delays_ms", "give delay_ms or delays_ms, not both");
+  std::vector<double> delays(outputs.empty() ? 0 : outputs.size() - 1,
+                             s.number("delay_ms").value_or(20.0));
+  if (const toml::array* a = s.array("delays_ms")) {
+    delays.clear();
+    for (const auto& n : *a) {
+      const auto v = n.value<double>();
+      if (!v) s.fail("delays_ms", "must hold numbers");
+      delays.push_back(*v);
+    }
+  }
+  auto c = sequencer::SequencerConfig::make(
+      outputs, delays, s.number("debounce_ms").value_or(d.debounce_ms),
+      s.number("tx_timeout_s").value_or(d.tx_timeout_s), s.boolean("hold_motion").value_or(true));
+  if (!c) {
+    // "tx_timeout_s: 1 to 3600 …" -> the key, and the rule.
+    const std::string& why = c.error().message;
+    const auto colon = why.find(':');
+    std::string key = why.substr(0, colon);
+    if (key == "delays" || key == "delays_ms") key = s.has("delays_ms") ? "delays_ms" : "delay_ms";
+    s.fail(key, "— " + (colon == std::string::npos ? why : why.substr(colon + 2)));
+  }
+  return *c;
+}
+
 /// Four slots: the configured [[park]] entries in order, the rest from defaults inside the travel.
 std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
     const ConfigFile& file, const sim::StationSimSetup& setup) {
@@ -154,6 +191,9 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.pstrotator_reply_port =
       read_port(pst, "reply_port", c.pstrotator.port == 0 ? 0 : c.pstrotator.port + 1);
   c.serial = read_serial(file);
+  c.sequencer =
+      read_sequencer(file.section("sequencer", {"outputs", "delay_ms", "delays_ms", "debounce_ms",
+                                                "tx_timeout_s", "hold_motion"}));
   c.web = read_web(
       file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));
   c.park = read_park(file, c.sim.setup);

@@ -7,6 +7,7 @@
 #include "azt/control/modes.hpp"
 #include "azt/linux/hamlib_rotator.hpp"
 #include "azt/proto/target_limits.hpp"
+#include "azt/sequencer/tr_sequencer.hpp"
 #include "sim_config.hpp"
 
 namespace azt::app {
@@ -41,6 +42,8 @@ struct DaemonConfig {
   std::vector<SerialServerConfig> serial;
   NetServerConfig pstrotator{"127.0.0.1", 12000};
   WebConfig web;
+  /// [sequencer]: the T/R chain (the seed's default when the table is absent).
+  sequencer::SequencerConfig sequencer = sequencer::SequencerConfig::seed_default();
   unsigned short pstrotator_reply_port = 12001;  ///< 0: reply to the sender's port
   std::array<control::ParkSlot, control::ModeController::kParkSlots> park;
   control::OutOfRangePolicy out_of_range = control::OutOfRangePolicy::Hold;
