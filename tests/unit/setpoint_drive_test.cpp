@@ -173,3 +173,21 @@ TEST(SetpointDrive, RandomTargetsLandWithinHalfAStep) {
 
 }  // namespace
 }  // namespace azt::control
+
+namespace azt::control {
+namespace {
+
+// DS11195 figure 5-1: command byte xx01xx01 with the don't-care bits 0 selects "write data" to
+// potentiometer 0; the data byte follows.
+TEST(Mcp41010Frame, CommandByteThenWiper) {
+  for (const int wiper : {0, 1, 128, 254, 255}) {
+    const auto frame = mcp41010_write_frame(static_cast<std::uint8_t>(wiper));
+    EXPECT_EQ(frame[0] & 0x30, 0x10) << "command bits C1 C0 = 01 (write data)";
+    EXPECT_EQ(frame[0] & 0x03, 0x01) << "pot select P1 P0 = 01 (potentiometer 0)";
+    EXPECT_EQ(frame[1], wiper);
+  }
+  static_assert(mcp41010_write_frame(0x80)[0] == 0x11);
+}
+
+}  // namespace
+}  // namespace azt::control

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -88,5 +89,12 @@ class SetpointDrive {
   SetpointCalibration calibration_;
   std::optional<std::uint8_t> last_sent_;
 };
+
+/// The 16-bit SPI block that sets the MCP41010's wiper (datasheet DS11195, "Write Data"): the
+/// command byte 0x11 (command bits 01 = write data, pot-select bits 01 = potentiometer 0), then
+/// the wiper code; sent most significant bit first in SPI mode 0 with CS low for all 16 clocks.
+[[nodiscard]] constexpr std::array<std::uint8_t, 2> mcp41010_write_frame(std::uint8_t wiper) {
+  return {std::uint8_t{0x11}, wiper};
+}
 
 }  // namespace azt::control
