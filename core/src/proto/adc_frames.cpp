@@ -41,13 +41,13 @@ std::int16_t ads1115_code(std::array<std::uint8_t, 2> conversion_read) {
 
 double ads1115_volts_per_count(Ads1115Range range) {
   switch (range) {
-    case Ads1115Range::V6_144:
+    case Ads1115Range::Fs6V144:
       return 6.144 / 32768.0;
-    case Ads1115Range::V4_096:
+    case Ads1115Range::Fs4V096:
       return 4.096 / 32768.0;
-    case Ads1115Range::V2_048:
+    case Ads1115Range::Fs2V048:
       return 2.048 / 32768.0;
-    case Ads1115Range::V1_024:
+    case Ads1115Range::Fs1V024:
       return 1.024 / 32768.0;
   }
   return 0.0;

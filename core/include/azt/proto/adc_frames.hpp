@@ -24,7 +24,8 @@ std::optional<std::array<std::uint8_t, 3>> mcp3008_request(unsigned channel);
 std::uint16_t mcp3008_code(const std::array<std::uint8_t, 3>& reply);
 
 /// ADS1115 full-scale ranges (PGA), in volts.
-enum class Ads1115Range : std::uint8_t { V6_144 = 0, V4_096 = 1, V2_048 = 2, V1_024 = 3 };
+/// Fs6V144: ±6.144 V, and so on.
+enum class Ads1115Range : std::uint8_t { Fs6V144 = 0, Fs4V096 = 1, Fs2V048 = 2, Fs1V024 = 3 };
 
 inline constexpr std::uint8_t kAds1115PointerConversion = 0x00;
 inline constexpr std::uint8_t kAds1115PointerConfig = 0x01;
