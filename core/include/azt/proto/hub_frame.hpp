@@ -354,6 +354,14 @@ class HubDecoder {
 
   const HubCounters& counters() const { return counters_; }
 
+  /// Drops any partial frame and waits for the next delimiter, keeping the counters (a link that
+  /// was lost and is back: what came before the break must not be glued to what comes after).
+  void resync() {
+    state_ = State::AwaitingDelimiter;
+    length_ = 0;
+    had_bytes_ = false;
+  }
+
   /// Back to the freshly constructed state: framing as chosen by HubSync, counters zero.
   void reset() {
     counters_ = HubCounters{};
