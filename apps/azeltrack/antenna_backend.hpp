@@ -13,6 +13,10 @@
 #include "azt/proto/rotator_service.hpp"
 #include "daemon_config.hpp"
 
+namespace boost::asio {
+class io_context;
+}  // namespace boost::asio
+
 namespace azt::app {
 
 class AntennaBackend {
@@ -40,6 +44,10 @@ class AntennaBackend {
   [[nodiscard]] virtual std::string describe() const = 0;
 };
 
+/// The EncoderHub on a serial device and two IBT-2 bridges on sysfs PWM ([hub], [pwm]); throws
+/// UsageError naming the device or channel that cannot be opened (nothing is driven then).
+std::unique_ptr<AntennaBackend> make_pwm_backend(boost::asio::io_context& io,
+                                                 const DaemonConfig& config);
 /// The simulated antenna of the [sim] tables, in real time.
 std::unique_ptr<AntennaBackend> make_sim_backend(const DaemonConfig& config);
 /// A Hamlib rotator ([hamlib]); throws UsageError naming the model/device when it cannot open.

@@ -90,8 +90,7 @@ class Daemon {
         ephemeris_(open_ephemeris(config_.sim.station.sky.ephemeris)),
         sky_(*ephemeris_, config_.sim.station),
         modes_(config_.park, config_.out_of_range, config_.sim.setup.el_range.min_deg),
-        antenna_(config_.backend == "hamlib" ? make_hamlib_backend(config_)
-                                             : make_sim_backend(config_)),
+        antenna_(make_backend()),
         service_(
             modes_, *antenna_, config_.target_limits(), config_.sim.setup.el_range,
             "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
@@ -103,6 +102,12 @@ class Daemon {
         timer_(io_),
         period_(std::chrono::duration_cast<SteadyClock::duration>(
             std::chrono::duration<double>(config_.sim.setup.tick_s))) {}
+
+  std::unique_ptr<AntennaBackend> make_backend() {
+    if (config_.backend == "hamlib") return make_hamlib_backend(config_);
+    if (config_.backend == "pwm") return make_pwm_backend(io_, config_);
+    return make_sim_backend(config_);
+  }
 
   int run() {
     start_target();

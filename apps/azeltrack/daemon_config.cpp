@@ -123,6 +123,45 @@ sequencer::SequencerConfig read_sequencer(const ConfigSection& s) {
   return *c;
 }
 
+linux_os::HubSerialConfig read_hub(const ConfigSection& s) {
+  linux_os::HubSerialConfig h;
+  h.device = s.text("device").value_or("");
+  const auto baud = s.integer("baud").value_or(9600);
+  if (baud < 600 || baud > 115200) s.fail("baud", "must be 600 to 115200");
+  h.baud = static_cast<unsigned>(baud);
+  const std::string accept = s.text("accept").value_or("crc8");
+  if (accept == "crc8") {
+    h.accept = proto::HubAccept::Crc8Only;
+  } else if (accept == "seed") {
+    h.accept = proto::HubAccept::SeedOnly;
+  } else {
+    s.fail("accept", "must be \"crc8\" (azeltrack's hub) or \"seed\" (AnTrack-Pro frames)");
+  }
+  return h;
+}
+
+PwmConfig read_pwm(const ConfigSection& s) {
+  PwmConfig p;
+  p.chip_dir = s.text("chip").value_or(p.chip_dir);
+  unsigned* channels[] = {&p.az_rpwm, &p.az_lpwm, &p.el_rpwm, &p.el_lpwm};
+  const char* keys[] = {"az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto v = s.integer(keys[i]).value_or(*channels[i]);
+    if (v < 0 || v > 63) s.fail(keys[i], "must be a PWM channel number 0 to 63");
+    *channels[i] = static_cast<unsigned>(v);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (*channels[j] == *channels[i])
+        s.fail(keys[i], std::string("is the same channel as ") + keys[j]);
+    }
+  }
+  p.frequency_hz = s.number("frequency_hz").value_or(p.frequency_hz);
+  if (p.frequency_hz < 10.0 || p.frequency_hz > 100000.0)
+    s.fail("frequency_hz", "must be 10 to 100000");
+  p.dead_time_s = s.number("dead_time_s").value_or(p.dead_time_s);
+  if (p.dead_time_s < 0.01 || p.dead_time_s > 3.0) s.fail("dead_time_s", "must be 0.01 to 3 s");
+  return p;
+}
+
 /// Four slots: the configured [[park]] entries in order, the rest from defaults inside the travel.
 std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
     const ConfigFile& file, const sim::StationSimSetup& setup) {
@@ -176,8 +215,15 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   }
   const ConfigSection antenna = file.section("antenna", {"backend"});
   c.backend = antenna.text("backend").value_or("sim");
-  if (c.backend != "sim" && c.backend != "hamlib") {
-    antenna.fail("backend", "must be \"sim\" or \"hamlib\"");
+  if (c.backend != "sim" && c.backend != "hamlib" && c.backend != "pwm") {
+    antenna.fail("backend", "must be \"sim\", \"hamlib\" or \"pwm\"");
+  }
+  const ConfigSection hub = file.section("hub", {"device", "baud", "accept"});
+  c.hub = read_hub(hub);
+  c.pwm = read_pwm(file.section(
+      "pwm", {"chip", "az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm", "frequency_hz", "dead_time_s"}));
+  if (c.backend == "pwm" && c.hub.device.empty()) {
+    antenna.fail("backend", "is \"pwm\" but [hub] device is not set");
   }
   const ConfigSection hamlib =
       file.section("hamlib", {"model", "device", "baud", "poll_s", "min_move_deg"});

@@ -6,6 +6,7 @@
 
 #include "azt/control/modes.hpp"
 #include "azt/linux/hamlib_rotator.hpp"
+#include "azt/linux/hub_serial_link.hpp"
 #include "azt/proto/target_limits.hpp"
 #include "azt/sequencer/tr_sequencer.hpp"
 #include "sim_config.hpp"
@@ -23,6 +24,17 @@ struct NetServerConfig {
   unsigned short port = 0;  ///< 0: disabled
 };
 
+/// [pwm]: two IBT-2 H-bridges on one sysfs PWM chip (the `pwm` backend; docs/hardware.md).
+struct PwmConfig {
+  std::string chip_dir = "/sys/class/pwm/pwmchip0";
+  unsigned az_rpwm = 0;
+  unsigned az_lpwm = 1;
+  unsigned el_rpwm = 2;
+  unsigned el_lpwm = 3;
+  double frequency_hz = 1000.0;
+  double dead_time_s = 0.1;
+};
+
 /// [web]: the console's HTTP server and who may act through it (docs/web-api.md).
 struct WebConfig {
   std::string bind = "127.0.0.1";
@@ -36,8 +48,10 @@ struct WebConfig {
 struct DaemonConfig {
   SimConfig sim;                      ///< station, sky, control, geometry, and the simulated plant
   std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
-  std::string backend = "sim";        ///< [antenna] backend: sim | hamlib
+  std::string backend = "sim";        ///< [antenna] backend: sim | hamlib | pwm
   linux_os::HamlibConfig hamlib;
+  linux_os::HubSerialConfig hub;  ///< [hub]: the EncoderHub's serial device (`pwm` backend)
+  PwmConfig pwm;
   NetServerConfig rotctld{"127.0.0.1", 4533};
   std::vector<SerialServerConfig> serial;
   NetServerConfig pstrotator{"127.0.0.1", 12000};

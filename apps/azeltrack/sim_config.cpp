@@ -1,5 +1,6 @@
 #include "sim_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -158,6 +159,10 @@ SimConfig sim_config_from(const ConfigFile& file) {
   const double tick_hz = control.number("tick_hz").value_or(20.0);
   if (tick_hz < 1.0 || tick_hz > 200.0) control.fail("tick_hz", "must be 1 to 200");
   setup.tick_s = 1.0 / tick_hz;
+  // R01: motors off within 200 ms of the last valid reading. A silence is noticed at a tick, up
+  // to one tick after it passes the threshold, so the threshold leaves room for one tick.
+  setup.az_supervisor.stale_s = std::max(0.1, 0.2 - setup.tick_s);
+  setup.el_supervisor.stale_s = setup.az_supervisor.stale_s;
   setup.corrections =
       read_corrections(file.section("corrections", {"az_offset_deg", "el_offset_deg", "az_user_deg",
                                                     "el_user_deg", "tilt_el_deg"}));

@@ -1,0 +1,151 @@
+// The `pwm` backend: real encoders through the EncoderHub on a serial device, real motors through
+// two IBT-2 H-bridges on sysfs PWM, driven by the same StationController as the simulation.
+// The mount's rates and encoder resolutions are those of the [sim.az] / [sim.el] tables (the
+// simulated antenna is the model of this one), the travel is [geometry].
+#include <algorithm>
+#include <chrono>
+
+#include "antenna_backend.hpp"
+#include "azt/control/station_controller.hpp"
+#include "azt/linux/hub_serial_link.hpp"
+#include "azt/linux/pwm_hbridge.hpp"
+#include "cli_error.hpp"
+
+namespace azt::app {
+namespace {
+
+control::StationControlConfig station_config(const sim::StationSimSetup& s) {
+  control::StationControlConfig c;
+  c.az_control = s.az_control;
+  c.el_control = s.el_control;
+  c.az_control.lsb_deg = proto::hub_resolution_deg(s.az_plant.encoder_bits);
+  c.el_control.lsb_deg = proto::hub_resolution_deg(s.el_plant.encoder_bits);
+  c.az_supervisor = s.az_supervisor;
+  c.el_supervisor = s.el_supervisor;
+  c.az_range = s.az_range;
+  c.el_range = s.el_range;
+  c.tick_s = s.tick_s;
+  return c;
+}
+
+linux_os::PwmHBridge open_bridge(const PwmConfig& p, unsigned r, unsigned l, const char* axis) {
+  linux_os::PwmHBridgeConfig c;
+  c.chip_dir = p.chip_dir;
+  c.rpwm_channel = r;
+  c.lpwm_channel = l;
+  c.frequency_hz = p.frequency_hz;
+  c.dead_time_s = p.dead_time_s;
+  auto bridge = linux_os::PwmHBridge::open(c);
+  if (!bridge) throw UsageError(std::string("[pwm] ") + axis + ": " + bridge.error().message);
+  return std::move(bridge).value();
+}
+
+class PwmBackend final : public AntennaBackend {
+ public:
+  PwmBackend(boost::asio::io_context& io, const DaemonConfig& config)
+      : station_(station_config(config.sim.setup),
+                 control::AzEl{config.sim.setup.az_plant.start_deg,
+                               config.sim.setup.el_plant.start_deg}),
+        az_(open_bridge(config.pwm, config.pwm.az_rpwm, config.pwm.az_lpwm, "azimuth")),
+        el_(open_bridge(config.pwm, config.pwm.el_rpwm, config.pwm.el_lpwm, "elevation")),
+        hub_device_(config.hub.device) {
+    station_.set_corrections(config.sim.setup.corrections);
+    auto hub = linux_os::HubSerialLink::open(
+        io, config.hub,
+        [this](const proto::HubFrame& f) {
+          latest_ = control::AzEl{proto::hub_raw_to_deg(f.reading.az_raw, f.reading.az_bits),
+                                  proto::hub_raw_to_deg(f.reading.el_raw, f.reading.el_bits)};
+          latest_at_ = std::chrono::steady_clock::now();
+        },
+        [this](const std::string& event) { hub_event_ = event; });
+    if (!hub) {
+      (void)az_.disable(0.0);
+      (void)el_.disable(0.0);
+      throw UsageError("[hub] device: " + hub.error().message);
+    }
+    hub_ = std::move(hub).value();
+  }
+
+  void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) override {
+    if (latest_) {
+      // Stamped with when the frame arrived, not with this tick: staleness counts from the frame.
+      const double age_s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - latest_at_).count();
+      station_.on_encoder_reading(now_s - std::max(0.0, age_s), latest_->az_deg, latest_->el_deg);
+      latest_.reset();
+    }
+    const control::Duties d = station_.tick(now_s, demand, rate);
+    for (auto [bridge, duty, name] : {std::tuple{&az_, d.az, "az"}, std::tuple{&el_, d.el, "el"}}) {
+      if (auto r = bridge->apply(now_s, duty); !r) {
+        drive_fault_ = std::string(name) + " drive: " + r.error().message;
+        stop_now(now_s);
+      }
+    }
+  }
+
+  [[nodiscard]] std::optional<proto::PositionReport> position(double now_s) const override {
+    const auto sky = station_.sky_position(now_s);
+    if (!sky) return std::nullopt;
+    const auto az = station_.az();
+    const auto el = station_.el();
+    return proto::PositionReport{sky->az_deg, sky->el_deg, az.mount_deg, az.moving || el.moving,
+                                 station_.faulted()};
+  }
+
+  void stop_now(double now_s) override {
+    station_.emergency_stop(now_s);
+    (void)az_.disable(now_s);
+    (void)el_.disable(now_s);
+  }
+
+  [[nodiscard]] std::vector<std::string> faults() const override {
+    std::vector<std::string> out;
+    for (const auto& [name, axis] : {std::pair{"az", station_.az()}, {"el", station_.el()}}) {
+      if (axis.fault != control::FaultKind::None) {
+        out.push_back(std::string(name) + ": " + std::string(control::to_string(axis.fault)) +
+                      ": " + axis.reason);
+      }
+    }
+    if (!drive_fault_.empty()) out.push_back(drive_fault_);
+    if (!hub_->connected()) out.push_back("hub: " + hub_event_);
+    return out;
+  }
+
+  void clear_faults() override {
+    station_.clear_faults();
+    drive_fault_.clear();
+  }
+
+  bool set_corrections(const control::PositionCorrections& corrections) override {
+    station_.set_corrections(corrections);
+    return true;
+  }
+
+  [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override {
+    return station_.encoder_reading();
+  }
+
+  [[nodiscard]] std::string describe() const override {
+    return "EncoderHub on " + hub_device_ + ", IBT-2 bridges on sysfs PWM";
+  }
+
+ private:
+  control::StationController station_;
+  linux_os::PwmHBridge az_;
+  linux_os::PwmHBridge el_;
+  std::unique_ptr<linux_os::HubSerialLink> hub_;
+  std::optional<control::AzEl> latest_;
+  std::chrono::steady_clock::time_point latest_at_;
+  std::string hub_event_;
+  std::string drive_fault_;
+  std::string hub_device_;
+};
+
+}  // namespace
+
+std::unique_ptr<AntennaBackend> make_pwm_backend(boost::asio::io_context& io,
+                                                 const DaemonConfig& config) {
+  return std::make_unique<PwmBackend>(io, config);
+}
+
+}  // namespace azt::app

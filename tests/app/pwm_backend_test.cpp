@@ -1,0 +1,157 @@
+// The `pwm` backend end to end (issue 6 §5, §6): EncoderHub frames on a pseudo-terminal in, two
+// IBT-2 bridges on a fake /sys/class/pwm chip out, the real StationController between. When the
+// hub falls silent mid-slew the drives must be off within 200 ms of the last valid frame (R01).
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "antenna_backend.hpp"
+#include "azt/linux/asio.hpp"
+#include "cli_error.hpp"
+#include "config_file.hpp"
+#include "daemon_config.hpp"
+
+namespace azt::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+class PwmBackendTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("azt_pwm_backend_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "pwmchip0");
+    std::ofstream(dir_ / "pwmchip0" / "export") << "";
+    for (int ch = 0; ch < 4; ++ch) {
+      const fs::path p = dir_ / "pwmchip0" / ("pwm" + std::to_string(ch));
+      fs::create_directories(p);
+      for (const char* f : {"period", "duty_cycle", "enable"}) std::ofstream(p / f) << "0";
+    }
+    master_ = posix_openpt(O_RDWR | O_NOCTTY);
+    ASSERT_GE(master_, 0);
+    ASSERT_EQ(grantpt(master_), 0);
+    ASSERT_EQ(unlockpt(master_), 0);
+    std::array<char, 128> name{};
+    ASSERT_EQ(ptsname_r(master_, name.data(), name.size()), 0);
+    fs::create_symlink(name.data(), dir_ / "hub");
+  }
+  void TearDown() override {
+    if (master_ >= 0) ::close(master_);
+    fs::remove_all(dir_);
+  }
+
+  DaemonConfig config() const {
+    const std::string text =
+        "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"pwm\"\n"
+        "[hub]\ndevice = \"" +
+        (dir_ / "hub").string() + "\"\n[pwm]\nchip = \"" + (dir_ / "pwmchip0").string() +
+        "\"\n[sim.az]\nencoder_bits = 12\nstart_deg = 180.0\n"
+        "[sim.el]\nencoder_bits = 12\nstart_deg = 10.0\n";
+    return daemon_config_from(ConfigFile::parse(text, "pwm.toml"));
+  }
+  void send_frame(double az_deg, double el_deg) const {
+    std::array<std::uint8_t, 32> out{};
+    const proto::HubReading r{12, 12, static_cast<std::uint16_t>(az_deg / 360.0 * 4096.0),
+                              static_cast<std::uint16_t>(el_deg / 360.0 * 4096.0)};
+    const auto n = proto::encode_hub_frame(r, proto::HubFrameVersion::Crc8, out.data(), out.size());
+    ASSERT_EQ(::write(master_, out.data(), n), static_cast<ssize_t>(n));
+  }
+  std::uint64_t duty(int channel) const {
+    std::ifstream in(dir_ / "pwmchip0" / ("pwm" + std::to_string(channel)) / "duty_cycle");
+    std::uint64_t v = 0;
+    in >> v;
+    return v;
+  }
+
+  fs::path dir_;
+  int master_ = -1;
+};
+
+TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
+  boost::asio::io_context io;
+  auto backend = make_pwm_backend(io, config());
+  ASSERT_TRUE(backend);
+  const auto start = Clock::now();
+  const auto seconds = [&start] {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  control::Demand go;
+  go.position = control::AzEl{200.0, 10.0};  // 20° clockwise of where the hub says it is
+  ::write(master_, "\0", 1);                 // the first delimiter
+  double last_frame_s = 0.0;
+  bool driven = false;
+  // 1.5 s of frames every 50 ms (the antenna "does not move": the readings stay at 180°).
+  while (seconds() < 1.5) {
+    send_frame(180.0, 10.0);
+    last_frame_s = seconds();
+    io.run_for(std::chrono::milliseconds(25));
+    io.restart();
+    backend->tick(seconds(), go, control::AzEl{});
+    driven = driven || duty(0) > 0;
+    EXPECT_EQ(duty(1), 0U) << "both sides of the azimuth bridge driven";
+    io.run_for(std::chrono::milliseconds(25));
+    io.restart();
+    backend->tick(seconds(), go, control::AzEl{});
+  }
+  EXPECT_TRUE(driven) << "the azimuth bridge was never driven clockwise";
+  // Silence: tick every 10 ms until both azimuth PWMs read zero.
+  double off_s = -1.0;
+  while (seconds() < last_frame_s + 1.0) {
+    io.run_for(std::chrono::milliseconds(10));
+    io.restart();
+    backend->tick(seconds(), go, control::AzEl{});
+    if (duty(0) == 0 && duty(1) == 0) {
+      off_s = seconds();
+      break;
+    }
+  }
+  ASSERT_GE(off_s, 0.0) << "the drive stayed on after the hub fell silent";
+  const double after_ms = (off_s - last_frame_s) * 1000.0;
+  std::printf("[ timing   ] drive off %.0f ms after the last valid frame\n", after_ms);
+  EXPECT_LE(after_ms, 200.0);  // R01
+  EXPECT_FALSE(backend->position(seconds()).has_value());  // no cached angle is served
+
+  // Unplugged: a fault that refuses motion, named.
+  ::close(master_);
+  master_ = -1;
+  for (int i = 0; i < 50 && backend->faults().empty(); ++i) {
+    io.run_for(std::chrono::milliseconds(10));
+    io.restart();
+  }
+  ASSERT_FALSE(backend->faults().empty());
+  EXPECT_NE(backend->faults().back().find("hub: lost"), std::string::npos)
+      << backend->faults().back();
+}
+
+TEST_F(PwmBackendTest, AMissingChipOrHubIsAClearErrorAndNothingIsDriven) {
+  boost::asio::io_context io;
+  DaemonConfig c = config();
+  c.pwm.chip_dir = (dir_ / "pwmchip9").string();
+  try {
+    (void)make_pwm_backend(io, c);
+    FAIL() << "opened a missing PWM chip";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("[pwm] azimuth"), std::string::npos) << e.what();
+  }
+  c = config();
+  c.hub.device = (dir_ / "no-hub").string();
+  try {
+    (void)make_pwm_backend(io, c);
+    FAIL() << "opened a missing hub";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("[hub] device"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(duty(0) + duty(1) + duty(2) + duty(3), 0U);
+}
+
+}  // namespace
+}  // namespace azt::app
