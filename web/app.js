@@ -346,7 +346,7 @@
     const mode = st.mode || '—';
     setText('mode', mode);
     $('mode').className = `mode m-${mode}`;
-    setText('mode-who', st.who ? `by ${st.who}${mode === 'STOP' ? ' · PC programs locked out' : ''}` : '');
+    setText('mode-who', st.who ? `by ${st.who}${st.pc_locked_out ? ' · PC programs locked out' : ''}` : '');
     setText('track-name', S.sel ? S.sel.label : 'choose a target');
     const d = st.utc ? new Date(st.utc) : null;
     if (d && !Number.isNaN(d.getTime())) {

@@ -153,6 +153,7 @@ json DaemonConsole::state() {
   return {{"utc", utc_text(p_.unix_s())},
           {"mode", std::string(control::to_string(p_.modes.mode()))},
           {"who", commander()},
+          {"pc_locked_out", p_.modes.external_locked()},
           {"antenna", antenna},
           {"target", target},
           {"error_deg", error},

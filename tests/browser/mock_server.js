@@ -282,6 +282,7 @@ function stateObject() {
     utc: new Date(now).toISOString(),
     mode: sim.mode,
     who: sim.who,
+    pc_locked_out: sim.mode === 'STOP' && sim.who === 'console',
     antenna: { known: true, az_deg: round(r.az, 2), el_deg: round(r.el, 2), az_mount_deg: round(r.az, 2),
       moving: sim.movingAz || sim.movingEl },
     target: { name: goalName(sim.goal), az_deg: round(g.az, 2), el_deg: round(g.el, 2) },
