@@ -117,7 +117,7 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
   ASSERT_GE(off_s, 0.0) << "the drive stayed on after the hub fell silent";
   const double after_ms = (off_s - last_frame_s) * 1000.0;
   std::printf("[ timing   ] drive off %.0f ms after the last valid frame\n", after_ms);
-  EXPECT_LE(after_ms, 200.0);  // R01
+  EXPECT_LE(after_ms, 200.0);                              // R01
   EXPECT_FALSE(backend->position(seconds()).has_value());  // no cached angle is served
 
   // Unplugged: a fault that refuses motion, named.
