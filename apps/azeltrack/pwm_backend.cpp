@@ -9,24 +9,12 @@
 #include "azt/control/station_controller.hpp"
 #include "azt/linux/hub_serial_link.hpp"
 #include "azt/linux/pwm_hbridge.hpp"
+#include "azt/sim/station_sim.hpp"
 #include "cli_error.hpp"
+#include "station_reports.hpp"
 
 namespace azt::app {
 namespace {
-
-control::StationControlConfig station_config(const sim::StationSimSetup& s) {
-  control::StationControlConfig c;
-  c.az_control = s.az_control;
-  c.el_control = s.el_control;
-  c.az_control.lsb_deg = proto::hub_resolution_deg(s.az_plant.encoder_bits);
-  c.el_control.lsb_deg = proto::hub_resolution_deg(s.el_plant.encoder_bits);
-  c.az_supervisor = s.az_supervisor;
-  c.el_supervisor = s.el_supervisor;
-  c.az_range = s.az_range;
-  c.el_range = s.el_range;
-  c.tick_s = s.tick_s;
-  return c;
-}
 
 linux_os::PwmHBridge open_bridge(const PwmConfig& p, unsigned r, unsigned l, const char* axis) {
   linux_os::PwmHBridgeConfig c;
@@ -43,7 +31,7 @@ linux_os::PwmHBridge open_bridge(const PwmConfig& p, unsigned r, unsigned l, con
 class PwmBackend final : public AntennaBackend {
  public:
   PwmBackend(boost::asio::io_context& io, const DaemonConfig& config)
-      : station_(station_config(config.sim.setup),
+      : station_(sim::station_control_config(config.sim.setup),
                  control::AzEl{config.sim.setup.az_plant.start_deg,
                                config.sim.setup.el_plant.start_deg}),
         az_(open_bridge(config.pwm, config.pwm.az_rpwm, config.pwm.az_lpwm, "azimuth")),
@@ -84,12 +72,7 @@ class PwmBackend final : public AntennaBackend {
   }
 
   [[nodiscard]] std::optional<proto::PositionReport> position(double now_s) const override {
-    const auto sky = station_.sky_position(now_s);
-    if (!sky) return std::nullopt;
-    const auto az = station_.az();
-    const auto el = station_.el();
-    return proto::PositionReport{sky->az_deg, sky->el_deg, az.mount_deg, az.moving || el.moving,
-                                 station_.faulted()};
+    return station_position(station_, now_s);
   }
 
   void stop_now(double now_s) override {
@@ -99,13 +82,7 @@ class PwmBackend final : public AntennaBackend {
   }
 
   [[nodiscard]] std::vector<std::string> faults() const override {
-    std::vector<std::string> out;
-    for (const auto& [name, axis] : {std::pair{"az", station_.az()}, {"el", station_.el()}}) {
-      if (axis.fault != control::FaultKind::None) {
-        out.push_back(std::string(name) + ": " + std::string(control::to_string(axis.fault)) +
-                      ": " + axis.reason);
-      }
-    }
+    std::vector<std::string> out = station_faults(station_);
     if (!drive_fault_.empty()) out.push_back(drive_fault_);
     if (!hub_->connected()) out.push_back("hub: " + hub_event_);
     return out;

@@ -7,29 +7,18 @@
 #include "azt/control/station_controller.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "azt/sim/sim_antenna.hpp"
+#include "azt/sim/station_sim.hpp"
+#include "station_reports.hpp"
 
 namespace azt::app {
 namespace {
-
-control::StationControlConfig station_config(const sim::StationSimSetup& s) {
-  control::StationControlConfig c;
-  c.az_control = s.az_control;
-  c.el_control = s.el_control;
-  c.az_control.lsb_deg = proto::hub_resolution_deg(s.az_plant.encoder_bits);
-  c.el_control.lsb_deg = proto::hub_resolution_deg(s.el_plant.encoder_bits);
-  c.az_supervisor = s.az_supervisor;
-  c.el_supervisor = s.el_supervisor;
-  c.az_range = s.az_range;
-  c.el_range = s.el_range;
-  c.tick_s = s.tick_s;
-  return c;
-}
 
 class SimBackend final : public AntennaBackend {
  public:
   explicit SimBackend(const sim::StationSimSetup& s)
       : antenna_(s.az_plant, s.el_plant, s.frame_version, s.link, s.seed),
-        station_(station_config(s), control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg}) {
+        station_(sim::station_control_config(s),
+                 control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg}) {
     station_.set_corrections(s.corrections);
   }
 
@@ -49,12 +38,7 @@ class SimBackend final : public AntennaBackend {
   }
 
   [[nodiscard]] std::optional<proto::PositionReport> position(double now_s) const override {
-    const auto sky = station_.sky_position(now_s);
-    if (!sky) return std::nullopt;
-    const auto az = station_.az();
-    const auto el = station_.el();
-    return proto::PositionReport{sky->az_deg, sky->el_deg, az.mount_deg, az.moving || el.moving,
-                                 station_.faulted()};
+    return station_position(station_, now_s);
   }
 
   void stop_now(double now_s) override {
@@ -63,14 +47,7 @@ class SimBackend final : public AntennaBackend {
   }
 
   [[nodiscard]] std::vector<std::string> faults() const override {
-    std::vector<std::string> out;
-    for (const auto& [name, axis] : {std::pair{"az", station_.az()}, {"el", station_.el()}}) {
-      if (axis.fault != control::FaultKind::None) {
-        out.push_back(std::string(name) + ": " + std::string(control::to_string(axis.fault)) +
-                      ": " + axis.reason);
-      }
-    }
-    return out;
+    return station_faults(station_);
   }
 
   void clear_faults() override { station_.clear_faults(); }

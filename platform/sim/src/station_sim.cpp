@@ -34,27 +34,14 @@ struct Accumulator {
   }
 };
 
-control::StationControlConfig control_config(const StationSimSetup& setup) {
-  control::StationControlConfig c;
-  c.az_control = setup.az_control;
-  c.el_control = setup.el_control;
-  c.az_control.lsb_deg = lsb_deg(setup.az_plant);
-  c.el_control.lsb_deg = lsb_deg(setup.el_plant);
-  c.az_supervisor = setup.az_supervisor;
-  c.el_supervisor = setup.el_supervisor;
-  c.az_range = setup.az_range;
-  c.el_range = setup.el_range;
-  c.tick_s = setup.tick_s;
-  return c;
-}
-
 /// The station's own controller driving two plants through a simulated EncoderHub link.
 class StationLoop {
  public:
   explicit StationLoop(const StationSimSetup& setup)
       : setup_(setup),
         antenna_(setup.az_plant, setup.el_plant, setup.frame_version, setup.link, setup.seed),
-        station_(control_config(setup), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}) {
+        station_(station_control_config(setup),
+                 AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}) {
     station_.set_corrections(setup.corrections);
   }
 
@@ -122,6 +109,20 @@ AxisMetrics finish_axis(const Accumulator& acc, std::uint64_t starts, double hou
 }
 
 }  // namespace
+
+control::StationControlConfig station_control_config(const StationSimSetup& setup) {
+  control::StationControlConfig c;
+  c.az_control = setup.az_control;
+  c.el_control = setup.el_control;
+  c.az_control.lsb_deg = proto::hub_resolution_deg(setup.az_plant.encoder_bits);
+  c.el_control.lsb_deg = proto::hub_resolution_deg(setup.el_plant.encoder_bits);
+  c.az_supervisor = setup.az_supervisor;
+  c.el_supervisor = setup.el_supervisor;
+  c.az_range = setup.az_range;
+  c.el_range = setup.el_range;
+  c.tick_s = setup.tick_s;
+  return c;
+}
 
 SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, double duration_s) {
   StationLoop loop(setup);

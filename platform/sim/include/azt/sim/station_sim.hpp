@@ -49,6 +49,10 @@ struct StationSimSetup {
 };
 
 /// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
+/// The station controller's configuration for this setup (encoder steps from the plants' bits).
+/// The daemon's backends use it too, so the simulation and the station share one definition.
+control::StationControlConfig station_control_config(const StationSimSetup& setup);
+
 using SkyTrack = std::function<std::optional<control::AzEl>(double t_s)>;
 
 struct AxisMetrics {
