@@ -145,18 +145,10 @@ fuzz::Transcript run(const fuzz::Setup& setup, const std::vector<std::string_vie
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  fuzz::FuzzInput input(data, size);
-  const std::uint8_t split_byte = input.take();
-  const fuzz::Setup setup = fuzz::read_setup(input);
-  const std::string_view payload = input.rest();
-  const std::size_t split = fuzz::split_point(split_byte, payload.size());
-
-  const fuzz::Transcript whole = run(setup, {payload}, false);
-  const fuzz::Transcript halves =
-      run(setup, {payload.substr(0, split), payload.substr(split)}, false);
-  const fuzz::Transcript lines = run(setup, fuzz::split_after(payload, is_line_end), true);
-  AZT_FUZZ_REQUIRE(halves == whole);
-  AZT_FUZZ_REQUIRE(lines == whole);
+  const fuzz::SessionInput in = fuzz::read_session_input(data, size);
+  const fuzz::Setup& setup = in.setup;
+  const std::string_view payload = in.payload;
+  const fuzz::Transcript whole = fuzz::same_however_fed(run, in, is_line_end);
 
   if (!setup.variant()) AZT_FUZZ_REQUIRE(whole.replies.empty());
   AZT_FUZZ_REQUIRE(whole.replies.empty() || whole.replies.back() == '\n');

@@ -250,6 +250,39 @@ struct Transcript {
   bool operator==(const Transcript&) const = default;
 };
 
+/// The input layout every protocol target shares: a byte choosing where to cut the payload in two,
+/// two bytes of Setup, then the payload.
+struct SessionInput {
+  Setup setup;
+  std::string_view payload;
+  std::size_t split = 0;  ///< where to cut the payload in two
+};
+
+inline SessionInput read_session_input(const std::uint8_t* data, std::size_t size) {
+  FuzzInput input(data, size);
+  const std::uint8_t split_byte = input.take();
+  SessionInput in;
+  in.setup = read_setup(input);
+  in.payload = input.rest();
+  in.split = split_point(split_byte, in.payload.size());
+  return in;
+}
+
+/// Feeds the payload to `run(setup, pieces, per_piece)` whole, cut in two, and cut after every
+/// byte `is_end` accepts; the transcript must not depend on how the bytes arrived. Returns it.
+template <typename Run, typename IsEnd>
+Transcript same_however_fed(const Run& run, const SessionInput& in, IsEnd is_end) {
+  const Transcript whole = run(in.setup, std::vector<std::string_view>{in.payload}, false);
+  const Transcript halves = run(
+      in.setup,
+      std::vector<std::string_view>{in.payload.substr(0, in.split), in.payload.substr(in.split)},
+      false);
+  const Transcript pieces = run(in.setup, split_after(in.payload, is_end), true);
+  AZT_FUZZ_REQUIRE(halves == whole);
+  AZT_FUZZ_REQUIRE(pieces == whole);
+  return whole;
+}
+
 /// Printable ASCII: what text protocols may send besides their line ends.
 inline bool is_printable(char c) { return c >= ' ' && c <= '~'; }
 

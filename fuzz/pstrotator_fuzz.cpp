@@ -123,14 +123,10 @@ void check_datagram(const fuzz::Setup& setup, std::string_view datagram) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  fuzz::FuzzInput input(data, size);
-  const std::uint8_t split_byte = input.take();
-  const fuzz::Setup setup = fuzz::read_setup(input);
-  const std::string_view payload = input.rest();
-  const std::size_t split = fuzz::split_point(split_byte, payload.size());
-  check_datagram(setup, payload);
-  check_datagram(setup, payload.substr(0, split));
-  check_datagram(setup, payload.substr(split));
+  const fuzz::SessionInput in = fuzz::read_session_input(data, size);
+  check_datagram(in.setup, in.payload);
+  check_datagram(in.setup, in.payload.substr(0, in.split));
+  check_datagram(in.setup, in.payload.substr(in.split));
   return 0;
 }
 

@@ -227,20 +227,15 @@ void check_round_trips(const fuzz::Setup& setup, std::string_view payload) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  fuzz::FuzzInput input(data, size);
-  const std::uint8_t split_byte = input.take();
-  const fuzz::Setup setup = fuzz::read_setup(input);
-  const std::string_view payload = input.rest();
-  const std::size_t split = fuzz::split_point(split_byte, payload.size());
-
-  std::vector<std::string_view> bytes;
-  for (std::size_t i = 0; i < payload.size(); ++i) bytes.push_back(payload.substr(i, 1));
-  const fuzz::Transcript whole = run(setup, {payload}, payload, false);
-  const fuzz::Transcript halves =
-      run(setup, {payload.substr(0, split), payload.substr(split)}, payload, false);
-  const fuzz::Transcript one_by_one = run(setup, bytes, payload, true);
-  AZT_FUZZ_REQUIRE(halves == whole);
-  AZT_FUZZ_REQUIRE(one_by_one == whole);
+  const fuzz::SessionInput in = fuzz::read_session_input(data, size);
+  const fuzz::Setup& setup = in.setup;
+  const std::string_view payload = in.payload;
+  // Whole, in two, and one byte at a time.
+  const fuzz::Transcript whole = fuzz::same_however_fed(
+      [payload](const fuzz::Setup& s, const std::vector<std::string_view>& pieces, bool each) {
+        return run(s, pieces, payload, each);
+      },
+      in, [](char) { return true; });
 
   const proto::SpidConfig config = pick_config(setup);
   const std::size_t activities = fuzz::count_calls(whole.calls, CallKind::Activity);
