@@ -1,6 +1,5 @@
 #pragma once
 
-#include "azt/control/corrections.hpp"
 // The antenna behind the daemon: the simulated one (plants, hub link and the station's own
 // controller), or an existing rotator controller driven through Hamlib.
 
@@ -9,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "azt/control/corrections.hpp"
 #include "azt/control/modes.hpp"
+#include "azt/control/station_controller.hpp"
 #include "azt/proto/rotator_service.hpp"
 #include "daemon_config.hpp"
 
@@ -42,6 +43,13 @@ class AntennaBackend {
   /// The encoder angles as read, before corrections; nullopt when there are no encoders of ours.
   [[nodiscard]] virtual std::optional<control::AzEl> encoder_reading() const = 0;
   [[nodiscard]] virtual std::string describe() const = 0;
+  /// The travel-end switches changed (an input edge, between ticks): a drive towards a tripped
+  /// switch goes off now. A Hamlib rotator has its own limit switches, so the default ignores
+  /// them.
+  virtual void set_limits(double now_s, const control::LimitSwitches& limits) {
+    (void)now_s;
+    (void)limits;
+  }
 };
 
 /// The EncoderHub on a serial device and two IBT-2 bridges on sysfs PWM ([hub], [pwm]); throws

@@ -35,6 +35,11 @@ const toml::node* ConfigSection::node(std::string_view key) const {
 
 bool ConfigSection::has(std::string_view key) const { return node(key) != nullptr; }
 
+bool ConfigSection::is_text(std::string_view key) const {
+  const toml::node* n = node(key);
+  return n != nullptr && n->is_string();
+}
+
 void ConfigSection::fail(std::string_view key, const std::string& what) const {
   const toml::node* n = node(key);
   const auto line =
@@ -108,10 +113,27 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
     file.fail(e.what());
   }
   for (const auto& [key, value] : file.root_) {
-    if (!allowed_key(key.str(), {"schema_version", "station",     "sky",  "atmosphere", "control",
-                                 "geometry",       "corrections", "park", "sim",        "target",
-                                 "antenna",        "hamlib",      "hub",  "pwm",        "rotctld",
-                                 "serial",         "pstrotator",  "web",  "sequencer",  "log"})) {
+    if (!allowed_key(key.str(), {"schema_version",
+                                 "station",
+                                 "sky",
+                                 "atmosphere",
+                                 "control",
+                                 "geometry",
+                                 "corrections",
+                                 "park",
+                                 "sim",
+                                 "target",
+                                 "antenna",
+                                 "hamlib",
+                                 "hub",
+                                 "pwm",
+                                 "rotctld",
+                                 "serial",
+                                 "pstrotator",
+                                 "web",
+                                 "sequencer",
+                                 "gpio",
+                                 "log"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }

@@ -24,6 +24,8 @@ class ConfigSection {
   [[nodiscard]] bool present() const { return table_ != nullptr; }
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] bool has(std::string_view key) const;
+  /// The key is present and holds a string (for keys that take a number or a string).
+  [[nodiscard]] bool is_text(std::string_view key) const;
 
   [[nodiscard]] std::optional<double> number(std::string_view key) const;
   [[nodiscard]] std::optional<std::int64_t> integer(std::string_view key) const;

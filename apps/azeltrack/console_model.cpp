@@ -171,6 +171,7 @@ json DaemonConsole::state() {
             {"alt_m", obs.height_m}}},
           {"clock", {{"source", "system"}}},
           {"faults", p_.antenna.faults()},
+          {"station_io", p_.station_io ? p_.station_io() : json(nullptr)},
           {"servers", p_.servers}};
 }
 

@@ -31,6 +31,8 @@ struct ConsoleParts {
   std::function<double()> monotonic_s;  ///< the control loop's clock
   std::function<double()> unix_s;       ///< UTC seconds since 1970
   nlohmann::json servers;               ///< where each server listens, for the state
+  /// The station's hard inputs and the T/R sequencer ({"estop","limits","sequencer"}).
+  std::function<nlohmann::json()> station_io;
 };
 
 class DaemonConsole final : public ConsoleModel {

@@ -7,8 +7,11 @@
 #include <memory>
 #include <vector>
 
+#include <filesystem>
+
 #include "antenna_backend.hpp"
 #include "azt/linux/asio.hpp"
+#include "azt/linux/libgpiod_lines.hpp"
 #include "azt/linux/serial_protocol_server.hpp"
 #include "azt/linux/systemd_notify.hpp"
 #include "azt/linux/tcp_protocol_server.hpp"
@@ -17,6 +20,8 @@
 #include "azt/proto/sessions.hpp"
 #include "cli_error.hpp"
 #include "console_server.hpp"
+#include "guarded_antenna.hpp"
+#include "sequencer_runner.hpp"
 #include "sky_follower.hpp"
 #include "sky_setup.hpp"
 #include "station_service.hpp"
@@ -90,7 +95,9 @@ class Daemon {
         ephemeris_(open_ephemeris(config_.sim.station.sky.ephemeris)),
         sky_(*ephemeris_, config_.sim.station),
         modes_(config_.park, config_.out_of_range, config_.sim.setup.el_range.min_deg),
-        antenna_(make_backend()),
+        gpio_(config_.gpio.any_line() ? linux_os::make_libgpiod_provider(io_) : nullptr),
+        sequencer_(make_sequencer()),
+        antenna_(make_guarded(make_backend())),
         service_(
             modes_, *antenna_, config_.target_limits(), config_.sim.setup.el_range,
             "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
@@ -107,6 +114,42 @@ class Daemon {
     if (config_.backend == "hamlib") return make_hamlib_backend(config_);
     if (config_.backend == "pwm") return make_pwm_backend(io_, config_);
     return make_sim_backend(config_);
+  }
+
+  std::unique_ptr<SequencerRunner> make_sequencer() {
+    std::vector<std::unique_ptr<linux_os::GpioOutput>> outputs;
+    for (const auto& spec : config_.gpio.sequencer) {
+      // De-energized at once: whatever an earlier run left keyed is released first.
+      auto line = gpio_->output(spec, false);
+      if (!line) throw UsageError(line.error().message);
+      outputs.push_back(std::move(line).value());
+    }
+    auto runner = std::make_unique<SequencerRunner>(
+        io_, config_.sequencer, std::move(outputs), [this] { return now_s(); },
+        [](const std::string& line) { spdlog::info("{}", line); });
+    if (config_.gpio.ptt) {
+      auto ptt = gpio_->input(*config_.gpio.ptt, linux_os::GpioBias::PullUp,
+                              [r = runner.get()](bool on) { r->set_ptt(on); });
+      if (!ptt) throw UsageError(ptt.error().message);
+      ptt_ = std::move(ptt).value();
+      runner->set_ptt(ptt_->active());
+    }
+    return runner;
+  }
+
+  std::unique_ptr<AntennaBackend> make_guarded(std::unique_ptr<AntennaBackend> inner) {
+    std::string latch = config_.gpio.estop_latch_file;
+    if (latch.empty()) {
+      latch =
+          (std::filesystem::path(options_.config_path).parent_path() / "estop.latched").string();
+    }
+    auto guarded = std::make_unique<GuardedAntenna>(
+        std::move(inner), config_.gpio,
+        GuardParts{gpio_.get(), sequencer_.get(), latch, [this] { return now_s(); },
+                   [this] { modes_.stop(); },
+                   [](const std::string& line) { spdlog::warn("{}", line); }});
+    guard_ = guarded.get();
+    return guarded;
   }
 
   int run() {
@@ -141,7 +184,7 @@ class Daemon {
   }
 
   void start_target() {
-    if (config_.start_target == "stop") return;
+    if (config_.start_target == "stop" || guard_->estop_latched()) return;
     const auto target = sky_.find(config_.start_target);
     if (!target) {
       throw UsageError("[target].name '" + config_.start_target +
@@ -204,7 +247,12 @@ class Daemon {
     console_ = std::make_unique<ConsoleServer>(
         io_,
         ConsoleParts{config_, store_, *ephemeris_, sky_, modes_, *antenna_,
-                     [this] { return now_s(); }, [] { return unix_now_s(); }, servers},
+                     [this] { return now_s(); }, [] { return unix_now_s(); }, servers,
+                     [this] {
+                       nlohmann::json io = guard_->state();
+                       io["sequencer"] = sequencer_->state();
+                       return io;
+                     }},
         [](const std::string& line) { spdlog::warn("{}", line); });
     spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
   }
@@ -281,6 +329,10 @@ class Daemon {
   std::unique_ptr<astro::Ephemeris> ephemeris_;
   SkyFollower sky_;
   control::ModeController modes_;
+  std::unique_ptr<linux_os::GpioProvider> gpio_;
+  std::unique_ptr<linux_os::GpioInput> ptt_;
+  std::unique_ptr<SequencerRunner> sequencer_;
+  GuardedAntenna* guard_ = nullptr;
   std::unique_ptr<AntennaBackend> antenna_;
   RateLimitedLog log_;
   StationService service_;

@@ -140,6 +140,80 @@ linux_os::HubSerialConfig read_hub(const ConfigSection& s) {
   return h;
 }
 
+/// A line is a number on [gpio] chip, or "CHIP:N" for a line on another chip.
+std::optional<linux_os::GpioLineSpec> read_line(const ConfigSection& s, const std::string& key,
+                                                const std::string& chip, bool active_low) {
+  if (!s.has(key)) return std::nullopt;
+  linux_os::GpioLineSpec spec{chip, 0, active_low, "[gpio] " + key};
+  std::int64_t offset = -1;
+  if (s.is_text(key)) {
+    const auto text = s.text(key);
+    const auto colon = text->rfind(':');
+    if (colon == std::string::npos || colon == 0)
+      s.fail(key, "must be a line number or \"CHIP:N\"");
+    spec.chip = text->substr(0, colon);
+    try {
+      std::size_t used = 0;
+      offset = std::stoll(text->substr(colon + 1), &used);
+      if (used != text->size() - colon - 1) offset = -1;
+    } catch (const std::exception&) {
+      offset = -1;
+    }
+  } else {
+    offset = s.integer(key).value_or(-1);
+  }
+  if (offset < 0 || offset > 1023) s.fail(key, "must be a line number 0 to 1023, or \"CHIP:N\"");
+  spec.offset = static_cast<unsigned>(offset);
+  return spec;
+}
+
+GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
+  GpioConfig g;
+  g.chip = s.text("chip").value_or(g.chip);
+  // Normally closed switches to ground with pull-ups: an open switch or a cut wire reads high,
+  // which is "tripped"; the radio's PTT output pulls its line low.
+  const bool limits_low = s.boolean("limits_active_low").value_or(false);
+  g.estop = read_line(s, "estop", g.chip, s.boolean("estop_active_low").value_or(false));
+  g.az_ccw_limit = read_line(s, "az_ccw_limit", g.chip, limits_low);
+  g.az_cw_limit = read_line(s, "az_cw_limit", g.chip, limits_low);
+  g.el_down_limit = read_line(s, "el_down_limit", g.chip, limits_low);
+  g.el_up_limit = read_line(s, "el_up_limit", g.chip, limits_low);
+  g.ptt = read_line(s, "ptt", g.chip, s.boolean("ptt_active_low").value_or(true));
+  const bool outputs_low = s.boolean("sequencer_active_low").value_or(false);
+  if (const toml::array* a = s.array("sequencer")) {
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      linux_os::GpioLineSpec spec{g.chip, 0, outputs_low,
+                                  "[gpio] sequencer[" + std::to_string(i) + "]"};
+      const auto n = (*a)[i].value<std::int64_t>();
+      if (!n || *n < 0 || *n > 1023) s.fail("sequencer", "must hold line numbers 0 to 1023");
+      spec.offset = static_cast<unsigned>(*n);
+      g.sequencer.push_back(spec);
+    }
+    if (g.sequencer.size() != sequencer_outputs) {
+      s.fail("sequencer", "has " + std::to_string(g.sequencer.size()) + " lines for " +
+                              std::to_string(sequencer_outputs) + " [sequencer] outputs");
+    }
+  }
+  if (g.ptt && g.sequencer.empty()) s.fail("ptt", "needs the [gpio] sequencer output lines");
+  g.estop_latch_file = s.text("estop_latch_file").value_or("");
+  // One line, one job: a line named twice would be requested twice (EBUSY) or, worse, wired to two
+  // functions.
+  std::vector<const linux_os::GpioLineSpec*> all;
+  for (const auto* l :
+       {&g.estop, &g.az_ccw_limit, &g.az_cw_limit, &g.el_down_limit, &g.el_up_limit, &g.ptt}) {
+    if (*l) all.push_back(&**l);
+  }
+  for (const auto& l : g.sequencer) all.push_back(&l);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (all[i]->chip == all[j]->chip && all[i]->offset == all[j]->offset) {
+        s.fail(all[i]->key.substr(7), "is the same line as " + all[j]->key);
+      }
+    }
+  }
+  return g;
+}
+
 PwmConfig read_pwm(const ConfigSection& s) {
   PwmConfig p;
   p.chip_dir = s.text("chip").value_or(p.chip_dir);
@@ -240,6 +314,12 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.sequencer =
       read_sequencer(file.section("sequencer", {"outputs", "delay_ms", "delays_ms", "debounce_ms",
                                                 "tx_timeout_s", "hold_motion"}));
+  c.gpio =
+      read_gpio(file.section("gpio", {"chip", "estop", "estop_active_low", "az_ccw_limit",
+                                      "az_cw_limit", "el_down_limit", "el_up_limit",
+                                      "limits_active_low", "ptt", "ptt_active_low", "sequencer",
+                                      "sequencer_active_low", "estop_latch_file"}),
+                c.sequencer.outputs.size());
   c.web = read_web(
       file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));
   c.park = read_park(file, c.sim.setup);
@@ -250,6 +330,11 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
     log.fail("level", "must be debug, info or warn");
   }
   return c;
+}
+
+bool GpioConfig::any_line() const {
+  return estop || az_ccw_limit || az_cw_limit || el_down_limit || el_up_limit || ptt ||
+         !sequencer.empty();
 }
 
 DaemonConfig load_daemon_config(const std::string& path) {

@@ -1,10 +1,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "azt/control/modes.hpp"
+#include "azt/linux/gpio.hpp"
 #include "azt/linux/hamlib_rotator.hpp"
 #include "azt/linux/hub_serial_link.hpp"
 #include "azt/proto/target_limits.hpp"
@@ -35,6 +37,21 @@ struct PwmConfig {
   double dead_time_s = 0.1;
 };
 
+/// [gpio]: the station's GPIO lines (docs/hardware.md). Absent lines are not wired.
+struct GpioConfig {
+  std::string chip = "gpiochip0";  ///< the chip of lines given as bare numbers
+  std::optional<linux_os::GpioLineSpec> estop;
+  std::optional<linux_os::GpioLineSpec> az_ccw_limit;
+  std::optional<linux_os::GpioLineSpec> az_cw_limit;
+  std::optional<linux_os::GpioLineSpec> el_down_limit;
+  std::optional<linux_os::GpioLineSpec> el_up_limit;
+  std::optional<linux_os::GpioLineSpec> ptt;
+  std::vector<linux_os::GpioLineSpec> sequencer;  ///< one per [sequencer] output, keying order
+  std::string estop_latch_file;  ///< empty: "estop.latched" beside the configuration file
+
+  [[nodiscard]] bool any_line() const;
+};
+
 /// [web]: the console's HTTP server and who may act through it (docs/web-api.md).
 struct WebConfig {
   std::string bind = "127.0.0.1";
@@ -52,6 +69,7 @@ struct DaemonConfig {
   linux_os::HamlibConfig hamlib;
   linux_os::HubSerialConfig hub;  ///< [hub]: the EncoderHub's serial device (`pwm` backend)
   PwmConfig pwm;
+  GpioConfig gpio;
   NetServerConfig rotctld{"127.0.0.1", 4533};
   std::vector<SerialServerConfig> serial;
   NetServerConfig pstrotator{"127.0.0.1", 12000};

@@ -62,13 +62,11 @@ class PwmBackend final : public AntennaBackend {
       station_.on_encoder_reading(now_s - std::max(0.0, age_s), latest_->az_deg, latest_->el_deg);
       latest_.reset();
     }
-    const control::Duties d = station_.tick(now_s, demand, rate);
-    for (auto [bridge, duty, name] : {std::tuple{&az_, d.az, "az"}, std::tuple{&el_, d.el, "el"}}) {
-      if (auto r = bridge->apply(now_s, duty); !r) {
-        drive_fault_ = std::string(name) + " drive: " + r.error().message;
-        stop_now(now_s);
-      }
-    }
+    apply(now_s, station_.tick(now_s, demand, rate));
+  }
+
+  void set_limits(double now_s, const control::LimitSwitches& limits) override {
+    apply(now_s, station_.set_limits(limits));
   }
 
   [[nodiscard]] std::optional<proto::PositionReport> position(double now_s) const override {
@@ -107,6 +105,15 @@ class PwmBackend final : public AntennaBackend {
   }
 
  private:
+  void apply(double now_s, const control::Duties& d) {
+    for (auto [bridge, duty, name] : {std::tuple{&az_, d.az, "az"}, std::tuple{&el_, d.el, "el"}}) {
+      if (auto r = bridge->apply(now_s, duty); !r) {
+        drive_fault_ = std::string(name) + " drive: " + r.error().message;
+        stop_now(now_s);
+      }
+    }
+  }
+
   control::StationController station_;
   linux_os::PwmHBridge az_;
   linux_os::PwmHBridge el_;

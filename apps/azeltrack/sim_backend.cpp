@@ -61,6 +61,11 @@ class SimBackend final : public AntennaBackend {
     return station_.encoder_reading();
   }
 
+  void set_limits(double /*now_s*/, const control::LimitSwitches& limits) override {
+    // The plants run on with these duties until the next tick: a tripped drive stops now.
+    duties_ = station_.set_limits(limits);
+  }
+
   [[nodiscard]] std::string describe() const override {
     return "simulated antenna (" + std::to_string(antenna_.az().encoder_bits()) + "/" +
            std::to_string(antenna_.el().encoder_bits()) + "-bit encoders)";

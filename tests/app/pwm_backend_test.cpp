@@ -17,6 +17,8 @@
 #include "cli_error.hpp"
 #include "config_file.hpp"
 #include "daemon_config.hpp"
+#include "fake_gpio.hpp"
+#include "guarded_antenna.hpp"
 
 namespace azt::app {
 namespace {
@@ -130,6 +132,48 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
   ASSERT_FALSE(backend->faults().empty());
   EXPECT_NE(backend->faults().back().find("hub: lost"), std::string::npos)
       << backend->faults().back();
+}
+
+// Issue 6 §6: a limit switch edge turns the drive towards it off within 20 ms, between ticks.
+TEST_F(PwmBackendTest, ALimitSwitchEdgeTurnsTheDriveTowardsItOffAtOnce) {
+  boost::asio::io_context io;
+  DaemonConfig c = config();
+  c.gpio.az_cw_limit = linux_os::GpioLineSpec{"gpiochip0", 6, false, "[gpio] az_cw_limit"};
+  testing::FakeGpio gpio(io);
+  const auto start = Clock::now();
+  const auto seconds = [&start] {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  GuardedAntenna antenna(make_pwm_backend(io, c), c.gpio,
+                         GuardParts{&gpio, nullptr, (dir_ / "estop.latched").string(), seconds,
+                                    [] {}, [](const std::string&) {}});
+  control::Demand go;
+  go.position = control::AzEl{200.0, 10.0};
+  ::write(master_, "\0", 1);
+  while (seconds() < 1.0 && duty(0) == 0) {
+    send_frame(180.0, 10.0);
+    io.run_for(std::chrono::milliseconds(50));
+    io.restart();
+    antenna.tick(seconds(), go, control::AzEl{});
+  }
+  ASSERT_GT(duty(0), 0U) << "the azimuth bridge was never driven clockwise";
+  // The switch opens half-way between two ticks; no tick runs until the drive is seen off.
+  send_frame(180.0, 10.0);
+  io.run_for(std::chrono::milliseconds(25));
+  io.restart();
+  const auto edge = Clock::now();
+  gpio.set_input("[gpio] az_cw_limit", true);
+  while (duty(0) != 0 && Clock::now() - edge < std::chrono::milliseconds(200)) {
+    io.run_for(std::chrono::milliseconds(1));
+    io.restart();
+  }
+  const double off_ms = std::chrono::duration<double, std::milli>(Clock::now() - edge).count();
+  std::printf("[ timing   ] drive off %.1f ms after the limit edge\n", off_ms);
+  EXPECT_EQ(duty(0), 0U);
+  EXPECT_LE(off_ms, 20.0);
+  EXPECT_EQ(duty(1), 0U) << "the switch must not reverse the motor";
+  antenna.tick(seconds(), go, control::AzEl{});
+  EXPECT_EQ(duty(0), 0U) << "the next tick drove into the switch again";
 }
 
 TEST_F(PwmBackendTest, AMissingChipOrHubIsAClearErrorAndNothingIsDriven) {

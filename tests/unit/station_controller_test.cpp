@@ -132,5 +132,45 @@ TEST(StationController, EmergencyStopZeroesBothDutiesAndLatches) {
   EXPECT_NE(rig.station.az().duty, 0.0);
 }
 
+TEST(StationController, ATrippedLimitStopsTheDriveTowardsItAtOnceAndAllowsTheWayBack) {
+  Rig rig;
+  Demand cw;
+  cw.position = AzEl{rig.setup.az_plant.start_deg + 90.0, rig.setup.el_plant.start_deg};
+  rig.run(cw, 3.0);
+  ASSERT_GT(rig.station.az().duty, 0.0);
+  // The clockwise switch opens between ticks: the duty is zero in the answer, not at the next tick.
+  LimitSwitches limits;
+  limits.az_cw = true;
+  const Duties now = rig.station.set_limits(limits);
+  EXPECT_DOUBLE_EQ(now.az, 0.0);
+  // A limit on the other side or on the other axis leaves this one alone.
+  rig.run(cw, 5.0);
+  EXPECT_DOUBLE_EQ(rig.station.az().duty, 0.0);
+  EXPECT_FALSE(rig.station.faulted()) << "held at a switch is not a stall";
+  const double held_at = rig.az.shaft_deg();
+  Demand ccw;
+  ccw.position = AzEl{held_at - 30.0, rig.setup.el_plant.start_deg};
+  rig.run(ccw, 3.0);
+  EXPECT_LT(rig.station.az().duty, 0.0) << "moving away from a tripped switch is allowed";
+  EXPECT_LT(rig.az.shaft_deg(), held_at);
+}
+
+TEST(StationController, ElevationLimitsBlockOnlyTheirOwnDirection) {
+  Rig rig;
+  LimitSwitches limits;
+  limits.el_down = true;
+  rig.station.set_limits(limits);
+  Demand down;
+  down.position = AzEl{rig.setup.az_plant.start_deg, rig.setup.el_plant.start_deg - 5.0};
+  rig.run(down, 3.0);
+  EXPECT_DOUBLE_EQ(rig.station.el().duty, 0.0);
+  Demand up;
+  up.position = AzEl{rig.setup.az_plant.start_deg, rig.setup.el_plant.start_deg + 20.0};
+  rig.run(up, 3.0);
+  EXPECT_GT(rig.station.el().duty, 0.0);
+  limits.el_up = true;
+  EXPECT_DOUBLE_EQ(rig.station.set_limits(limits).el, 0.0);
+}
+
 }  // namespace
 }  // namespace azt::control

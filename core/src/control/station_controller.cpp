@@ -75,11 +75,30 @@ double StationController::drive(Axis& axis, double now_s, std::optional<double> 
     target_deg = axis.mount_deg;
     rate_deg_s = 0.0;
   }
-  const double duty =
-      axis.controller.update(*target_deg, axis.mount_deg, rate_deg_s, config_.tick_s);
+  double duty = axis.controller.update(*target_deg, axis.mount_deg, rate_deg_s, config_.tick_s);
+  if (into_limit(axis, duty)) {
+    // Held at the switch: the supervisor sees an axis at rest, not one driven without moving.
+    axis.controller.halt();
+    duty = 0.0;
+  }
   const auto verdict = axis.supervisor.check(now_s, duty);
   if (!verdict.allow_motion) axis.controller.halt();
   return axis.controller.duty();
+}
+
+bool StationController::into_limit(const Axis& axis, double duty) const {
+  const bool azimuth = &axis == &az_;
+  if (duty > 0.0) return azimuth ? limits_.az_cw : limits_.el_up;
+  if (duty < 0.0) return azimuth ? limits_.az_ccw : limits_.el_down;
+  return false;
+}
+
+Duties StationController::set_limits(const LimitSwitches& limits) {
+  limits_ = limits;
+  for (Axis* axis : {&az_, &el_}) {
+    if (into_limit(*axis, axis->controller.duty())) axis->controller.halt();
+  }
+  return Duties{az_.controller.duty(), el_.controller.duty()};
 }
 
 std::optional<AzEl> StationController::sky_position(double now_s) const {

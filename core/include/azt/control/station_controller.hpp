@@ -41,6 +41,17 @@ struct Duties {
   double el = 0.0;
 };
 
+/// The travel-end switches (issue 6 §2): normally closed, so a broken wire reads as tripped. A
+/// tripped switch stops the drive towards it at once, without a soft stop, and still lets the axis
+/// move away from it. Forward (positive duty) is clockwise and up.
+struct LimitSwitches {
+  bool az_ccw = false;  ///< azimuth at its counter-clockwise end (decreasing angle)
+  bool az_cw = false;
+  bool el_down = false;
+  bool el_up = false;
+  friend bool operator==(const LimitSwitches&, const LimitSwitches&) = default;
+};
+
 class StationController {
  public:
   /// `start_mount` is where the axes are believed to be before the first reading (it resolves
@@ -64,6 +75,11 @@ class StationController {
   /// (deg/s), used as feed-forward while tracking.
   Duties tick(double now_s, const Demand& demand, const AzEl& rate_deg_s);
 
+  /// The switches changed (an input edge, between ticks): returns the duties to apply now, with a
+  /// drive towards a tripped switch already at zero.
+  Duties set_limits(const LimitSwitches& limits);
+  [[nodiscard]] const LimitSwitches& limits() const { return limits_; }
+
   /// The sky position (azimuth 0..360), or nullopt while a reading is stale or an axis is faulted.
   [[nodiscard]] std::optional<AzEl> sky_position(double now_s) const;
   [[nodiscard]] AxisStatus az() const { return status(az_); }
@@ -86,12 +102,15 @@ class StationController {
   };
   static AxisStatus status(const Axis& axis);
   double drive(Axis& axis, double now_s, std::optional<double> target_deg, double rate_deg_s) const;
+  /// A duty of `axis` that runs into a tripped switch.
+  [[nodiscard]] bool into_limit(const Axis& axis, double duty) const;
   [[nodiscard]] std::optional<double> jog_target(int direction, bool azimuth) const;
 
   StationControlConfig config_;
   Axis az_;
   Axis el_;
   PositionCorrections corrections_;
+  LimitSwitches limits_;
   std::optional<AzEl> last_encoder_;  ///< the last raw encoder angles, to re-express on a change
 };
 

@@ -1,0 +1,182 @@
+#include "azt/linux/libgpiod_lines.hpp"
+
+#include <gpiod.h>
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/posix/stream_descriptor.hpp>
+#include <cerrno>
+#include <cstring>
+#include <ctime>
+
+namespace azt::linux_os {
+
+namespace {
+
+namespace asio = boost::asio;
+
+/// One requested line and its chip; released (and the chip closed) on destruction.
+class Request {
+ public:
+  static Result<Request> make(const GpioLineSpec& spec, const std::string& consumer, int type,
+                              int flags, int initial) {
+    gpiod_chip* chip = gpiod_chip_open_lookup(spec.chip.c_str());
+    if (chip == nullptr) {
+      return fail(describe(spec) + ": cannot open the GPIO chip: " + std::strerror(errno) +
+                  " (is it /dev/gpiochipN, and may this user open it?)");
+    }
+    Request r(chip);
+    if (spec.offset >= gpiod_chip_num_lines(chip)) {
+      return fail(describe(spec) + ": the chip has only " +
+                  std::to_string(gpiod_chip_num_lines(chip)) + " lines");
+    }
+    gpiod_line* line = gpiod_chip_get_line(chip, spec.offset);
+    if (line == nullptr) return fail(describe(spec) + ": " + std::strerror(errno));
+    const gpiod_line_request_config config{consumer.c_str(), type, flags};
+    if (gpiod_line_request(line, &config, initial) != 0) {
+      const int e = errno;
+      return fail(describe(spec) + ": cannot request the line: " + std::strerror(e) +
+                  (e == EBUSY ? " (another program holds it: see gpioinfo)" : ""));
+    }
+    r.line_ = line;
+    return r;
+  }
+
+  Request(Request&& other) noexcept
+      : chip_(std::exchange(other.chip_, nullptr)), line_(std::exchange(other.line_, nullptr)) {}
+  Request& operator=(Request&&) = delete;
+  Request(const Request&) = delete;
+  Request& operator=(const Request&) = delete;
+  ~Request() {
+    if (line_ != nullptr) gpiod_line_release(line_);
+    if (chip_ != nullptr) gpiod_chip_close(chip_);
+  }
+
+  [[nodiscard]] gpiod_line* line() const { return line_; }
+
+ private:
+  explicit Request(gpiod_chip* chip) : chip_(chip) {}
+  gpiod_chip* chip_;
+  gpiod_line* line_ = nullptr;
+};
+
+int active_low_flag(const GpioLineSpec& spec) {
+  return spec.active_low ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0;
+}
+
+class LibgpiodOutput final : public GpioOutput {
+ public:
+  LibgpiodOutput(GpioLineSpec spec, Request request, bool initial)
+      : spec_(std::move(spec)), request_(std::move(request)), active_(initial) {}
+  ~LibgpiodOutput() override { (void)set(false); }
+  LibgpiodOutput(const LibgpiodOutput&) = delete;
+  LibgpiodOutput& operator=(const LibgpiodOutput&) = delete;
+  LibgpiodOutput(LibgpiodOutput&&) = delete;
+  LibgpiodOutput& operator=(LibgpiodOutput&&) = delete;
+
+  Result<bool> set(bool active) override {
+    if (gpiod_line_set_value(request_.line(), active ? 1 : 0) != 0) {
+      return fail(describe(spec_) + ": write failed: " + std::strerror(errno));
+    }
+    active_ = active;
+    return true;
+  }
+  [[nodiscard]] bool active() const override { return active_; }
+  [[nodiscard]] const GpioLineSpec& spec() const override { return spec_; }
+
+ private:
+  GpioLineSpec spec_;
+  Request request_;
+  bool active_;
+};
+
+class LibgpiodInput final : public GpioInput {
+ public:
+  LibgpiodInput(asio::io_context& io, GpioLineSpec spec, Request request, GpioEdgeHandler on_edge)
+      : spec_(std::move(spec)),
+        request_(std::move(request)),
+        on_edge_(std::move(on_edge)),
+        events_(io, gpiod_line_event_get_fd(request_.line())) {
+    active_ = gpiod_line_get_value(request_.line()) == 1;
+    watch();
+  }
+  ~LibgpiodInput() override {
+    boost::system::error_code ignored;
+    events_.cancel(ignored);
+    (void)events_.release();  // the descriptor belongs to the line request
+  }
+  LibgpiodInput(const LibgpiodInput&) = delete;
+  LibgpiodInput& operator=(const LibgpiodInput&) = delete;
+  LibgpiodInput(LibgpiodInput&&) = delete;
+  LibgpiodInput& operator=(LibgpiodInput&&) = delete;
+
+  [[nodiscard]] bool active() const override { return active_; }
+  [[nodiscard]] const GpioLineSpec& spec() const override { return spec_; }
+
+ private:
+  void watch() {
+    events_.async_wait(asio::posix::stream_descriptor::wait_read,
+                       [this](boost::system::error_code ec) {
+                         if (ec) return;
+                         drain();
+                         watch();
+                       });
+  }
+
+  /// Reads every queued event, then the level: a bounce burst is one notification with the level
+  /// it settled at, and the edge type (which active-low inverts differently across kernels) is
+  /// never needed.
+  void drain() {
+    const timespec no_wait{0, 0};
+    gpiod_line_event event{};
+    do {
+      if (gpiod_line_event_read(request_.line(), &event) != 0) break;
+    } while (gpiod_line_event_wait(request_.line(), &no_wait) == 1);
+    const int value = gpiod_line_get_value(request_.line());
+    if (value < 0) return;
+    active_ = value == 1;
+    on_edge_(active_);
+  }
+
+  GpioLineSpec spec_;
+  Request request_;
+  GpioEdgeHandler on_edge_;
+  asio::posix::stream_descriptor events_;
+  bool active_ = false;
+};
+
+class LibgpiodProvider final : public GpioProvider {
+ public:
+  LibgpiodProvider(asio::io_context& io, std::string consumer)
+      : io_(io), consumer_(std::move(consumer)) {}
+
+  Result<std::unique_ptr<GpioOutput>> output(const GpioLineSpec& spec, bool initial) override {
+    auto request = Request::make(spec, consumer_, GPIOD_LINE_REQUEST_DIRECTION_OUTPUT,
+                                 active_low_flag(spec), initial ? 1 : 0);
+    if (!request) return request.error();
+    return std::unique_ptr<GpioOutput>(
+        std::make_unique<LibgpiodOutput>(spec, std::move(request).value(), initial));
+  }
+
+  Result<std::unique_ptr<GpioInput>> input(const GpioLineSpec& spec, GpioBias bias,
+                                           GpioEdgeHandler on_edge) override {
+    int flags = active_low_flag(spec);
+    if (bias == GpioBias::PullUp) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
+    if (bias == GpioBias::PullDown) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
+    auto request = Request::make(spec, consumer_, GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES, flags, 0);
+    if (!request) return request.error();
+    return std::unique_ptr<GpioInput>(
+        std::make_unique<LibgpiodInput>(io_, spec, std::move(request).value(), std::move(on_edge)));
+  }
+
+ private:
+  asio::io_context& io_;
+  std::string consumer_;
+};
+
+}  // namespace
+
+std::unique_ptr<GpioProvider> make_libgpiod_provider(asio::io_context& io, std::string consumer) {
+  return std::make_unique<LibgpiodProvider>(io, std::move(consumer));
+}
+
+}  // namespace azt::linux_os

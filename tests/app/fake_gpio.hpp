@@ -1,0 +1,109 @@
+#pragma once
+// A GPIO provider in memory for the station's tests: outputs record every write with the time it
+// happened; inputs change level from the test and report the edge through the io_context, as the
+// libgpiod adapter does when the kernel's event descriptor becomes readable.
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "azt/linux/asio.hpp"
+#include "azt/linux/gpio.hpp"
+
+namespace azt::app::testing {
+
+struct GpioWrite {
+  std::string key;
+  bool active = false;
+  std::chrono::steady_clock::time_point at;
+};
+
+class FakeGpio final : public linux_os::GpioProvider {
+ public:
+  explicit FakeGpio(boost::asio::io_context& io) : io_(io) {}
+
+  Result<std::unique_ptr<linux_os::GpioOutput>> output(const linux_os::GpioLineSpec& spec,
+                                                       bool initial) override {
+    if (busy_.count(spec.offset) != 0) return fail(describe(spec) + ": line busy");
+    auto out = std::make_unique<Output>(*this, spec);
+    (void)out->set(initial);
+    return std::unique_ptr<linux_os::GpioOutput>(std::move(out));
+  }
+
+  Result<std::unique_ptr<linux_os::GpioInput>> input(const linux_os::GpioLineSpec& spec,
+                                                     linux_os::GpioBias /*bias*/,
+                                                     linux_os::GpioEdgeHandler on_edge) override {
+    if (busy_.count(spec.offset) != 0) return fail(describe(spec) + ": line busy");
+    auto in = std::make_unique<Input>(*this, spec, std::move(on_edge));
+    inputs_[spec.key] = in.get();
+    return std::unique_ptr<linux_os::GpioInput>(std::move(in));
+  }
+
+  /// The line of `key` (e.g. "[gpio] estop") goes to `active`; the edge is delivered by the loop.
+  void set_input(const std::string& key, bool active) {
+    levels_[key] = active;
+    boost::asio::post(io_, [this, key, active] {
+      auto it = inputs_.find(key);
+      if (it != inputs_.end()) {
+        it->second->level = active;
+        it->second->on_edge(active);
+      }
+    });
+  }
+  /// The level an input starts at when requested.
+  void preset(const std::string& key, bool active) { levels_[key] = active; }
+  void make_busy(unsigned offset) { busy_[offset] = true; }
+  void fail_writes(bool fail) { fail_writes_ = fail; }
+
+  std::vector<GpioWrite> writes;
+  std::map<std::string, bool> outputs;  ///< the present level of every output
+
+ private:
+  struct Output final : linux_os::GpioOutput {
+    Output(FakeGpio& g, linux_os::GpioLineSpec s) : gpio(g), line(std::move(s)) {}
+    ~Output() override { gpio.outputs[line.key] = false; }
+    Output(const Output&) = delete;
+    Output& operator=(const Output&) = delete;
+    Output(Output&&) = delete;
+    Output& operator=(Output&&) = delete;
+    Result<bool> set(bool on) override {
+      if (gpio.fail_writes_) return fail(describe(line) + ": write failed: No such device");
+      level = on;
+      gpio.outputs[line.key] = on;
+      gpio.writes.push_back({line.key, on, std::chrono::steady_clock::now()});
+      return true;
+    }
+    [[nodiscard]] bool active() const override { return level; }
+    [[nodiscard]] const linux_os::GpioLineSpec& spec() const override { return line; }
+    FakeGpio& gpio;
+    linux_os::GpioLineSpec line;
+    bool level = false;
+  };
+  struct Input final : linux_os::GpioInput {
+    Input(FakeGpio& g, linux_os::GpioLineSpec s, linux_os::GpioEdgeHandler h)
+        : gpio(g), line(std::move(s)), on_edge(std::move(h)), level(gpio.levels_[line.key]) {}
+    ~Input() override { gpio.inputs_.erase(line.key); }
+    Input(const Input&) = delete;
+    Input& operator=(const Input&) = delete;
+    Input(Input&&) = delete;
+    Input& operator=(Input&&) = delete;
+    [[nodiscard]] bool active() const override { return level; }
+    [[nodiscard]] const linux_os::GpioLineSpec& spec() const override { return line; }
+    FakeGpio& gpio;
+    linux_os::GpioLineSpec line;
+    linux_os::GpioEdgeHandler on_edge;
+    bool level;
+  };
+
+  boost::asio::io_context& io_;
+  std::map<std::string, Input*> inputs_;
+  std::map<std::string, bool> levels_;
+  std::map<unsigned, bool> busy_;
+  bool fail_writes_ = false;
+};
+
+}  // namespace azt::app::testing
