@@ -172,5 +172,106 @@ TEST(StationController, ElevationLimitsBlockOnlyTheirOwnDirection) {
   EXPECT_DOUBLE_EQ(rig.station.set_limits(limits).el, 0.0);
 }
 
+// Issue 6 §1: the same station with relays on azimuth and a rotator box (setpoint) on elevation.
+struct MixedRig {
+  sim::StationSimSetup setup = sim::reference_station(16, 0.1);
+  static constexpr double kBoxBandDeg = 0.5;  ///< the box's own deadband in the model below
+  StationControlConfig config() const {
+    Rig plain;
+    StationControlConfig c = plain.config();
+    c.az_drive.kind = DriveKind::Relay;
+    c.az_drive.relay.window_deg = 1.0;
+    c.az_drive.relay.lsb_deg = c.az_control.lsb_deg;
+    c.el_drive.kind = DriveKind::Setpoint;
+    c.el_drive.setpoint_band_deg = 2.0;
+    return c;
+  }
+  sim::AxisPlant az{setup.az_plant};
+  sim::AxisPlant el{setup.el_plant};
+  StationController station{config(), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}};
+  double t = 0.0;
+  std::optional<double> box_setpoint;
+  double last_az_duty = 0.0;
+  int direct_reversals = 0;  ///< Forward straight to Reverse (or back) between two ticks
+
+  void run(const Demand& demand, double seconds) {
+    for (double end = t + seconds; t < end; t += setup.tick_s) {
+      station.on_encoder_reading(t, wrap_360(az.shaft_deg()), el.shaft_deg());
+      const Duties d = station.tick(t, demand, AzEl{});
+      if (d.az * last_az_duty < 0.0) ++direct_reversals;
+      last_az_duty = d.az;
+      if (d.el_setpoint_deg) box_setpoint = d.el_setpoint_deg;
+      // The rotator box: full speed towards its setpoint beyond its deadband.
+      const double box_error = box_setpoint ? *box_setpoint - el.shaft_deg() : 0.0;
+      const double box_duty =
+          std::fabs(box_error) > kBoxBandDeg ? std::copysign(1.0, box_error) : 0.0;
+      az.step(d.az, setup.tick_s);
+      el.step(box_duty, setup.tick_s);
+    }
+  }
+};
+
+TEST(StationController, RelayAndSetpointAxesReachTheDemand) {
+  MixedRig rig;
+  Demand go;
+  go.position = AzEl{rig.setup.az_plant.start_deg + 30.0, 40.0};
+  rig.run(go, 120.0);
+  const auto sky = rig.station.sky_position(rig.t);
+  ASSERT_TRUE(sky.has_value());
+  // Relays stop within the window (1°) plus a step; the box within its own deadband plus coast.
+  EXPECT_NEAR(sky->az_deg, wrap_360(rig.setup.az_plant.start_deg + 30.0), 1.1);
+  EXPECT_NEAR(sky->el_deg, 40.0, 1.0);
+  ASSERT_TRUE(rig.box_setpoint.has_value());
+  EXPECT_DOUBLE_EQ(*rig.box_setpoint, 40.0) << "the setpoint is the planned target itself";
+  EXPECT_EQ(rig.direct_reversals, 0);
+  EXPECT_GE(rig.station.starts_az(), 1U);
+  EXPECT_FALSE(rig.station.faulted());
+  const Duties d = rig.station.tick(rig.t, go, AzEl{});
+  EXPECT_TRUE(d.el_setpoint_deg.has_value());
+  EXPECT_FALSE(d.az_setpoint_deg.has_value());
+}
+
+TEST(StationController, SetpointAxisIsSentWhereItStandsOnAnEStopOrALimit) {
+  MixedRig rig;
+  Demand up;
+  up.position = AzEl{rig.setup.az_plant.start_deg, 60.0};
+  rig.run(up, 3.0);
+  ASSERT_TRUE(rig.box_setpoint.has_value());
+  EXPECT_DOUBLE_EQ(*rig.box_setpoint, 60.0);
+  LimitSwitches limits;
+  limits.el_up = true;
+  const Duties now = rig.station.set_limits(limits);
+  ASSERT_TRUE(now.el_setpoint_deg.has_value());
+  EXPECT_DOUBLE_EQ(*now.el_setpoint_deg, rig.station.el().mount_deg);
+  rig.run(up, 1.0);
+  EXPECT_LT(*rig.box_setpoint, 60.0) << "a setpoint beyond a tripped switch was sent";
+  rig.station.set_limits(LimitSwitches{});
+  rig.run(up, 1.0);
+  EXPECT_DOUBLE_EQ(*rig.box_setpoint, 60.0);
+  rig.station.emergency_stop(rig.t);
+  const Duties stopped = rig.station.tick(rig.t, up, AzEl{});
+  ASSERT_TRUE(stopped.el_setpoint_deg.has_value());
+  EXPECT_DOUBLE_EQ(*stopped.el_setpoint_deg, rig.station.el().mount_deg);
+}
+
+TEST(StationController, RelayAxisStopsAtATrippedLimitAndOnEStop) {
+  MixedRig rig;
+  Demand cw;
+  cw.position = AzEl{rig.setup.az_plant.start_deg + 60.0, rig.setup.el_plant.start_deg};
+  rig.run(cw, 2.0);
+  ASSERT_EQ(rig.station.az().duty, 1.0);
+  LimitSwitches limits;
+  limits.az_cw = true;
+  EXPECT_DOUBLE_EQ(rig.station.set_limits(limits).az, 0.0);
+  rig.run(cw, 2.0);
+  EXPECT_DOUBLE_EQ(rig.station.az().duty, 0.0);
+  EXPECT_FALSE(rig.station.faulted());
+  rig.station.set_limits(LimitSwitches{});
+  rig.run(cw, 2.0);
+  EXPECT_DOUBLE_EQ(rig.station.az().duty, 1.0);
+  rig.station.emergency_stop(rig.t);
+  EXPECT_DOUBLE_EQ(rig.station.az().duty, 0.0);
+}
+
 }  // namespace
 }  // namespace azt::control

@@ -1,6 +1,7 @@
 #include "azt/control/station_controller.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace azt::control {
 namespace {
@@ -10,14 +11,73 @@ SupervisorConfig with_lsb(SupervisorConfig s, const AxisControlConfig& c) {
   return s;
 }
 
+double relay_duty(RelayCommand command) {
+  switch (command) {
+    case RelayCommand::Forward:
+      return 1.0;
+    case RelayCommand::Reverse:
+      return -1.0;
+    case RelayCommand::Off:
+      break;
+  }
+  return 0.0;
+}
+
 }  // namespace
+
+std::string_view to_string(DriveKind kind) {
+  switch (kind) {
+    case DriveKind::Pwm:
+      return "pwm";
+    case DriveKind::Relay:
+      return "relay";
+    case DriveKind::Setpoint:
+      return "setpoint";
+  }
+  return "?";
+}
+
+double StationController::Axis::duty() const {
+  switch (drive.kind) {
+    case DriveKind::Relay:
+      return relay_duty(relay.command());
+    case DriveKind::Setpoint:
+      return setpoint_duty;
+    case DriveKind::Pwm:
+      break;
+  }
+  return controller.duty();
+}
+
+bool StationController::Axis::moving() const {
+  return drive.kind == DriveKind::Pwm ? controller.moving() : duty() != 0.0;
+}
+
+void StationController::Axis::halt(double now_s) {
+  controller.halt();
+  relay.halt(now_s);
+  if (drive.kind == DriveKind::Setpoint) {
+    setpoint_deg = mount_deg;
+    setpoint_duty = 0.0;
+  }
+}
 
 StationController::StationController(const StationControlConfig& config, AzEl start_mount)
     : config_(config),
       az_{AxisController(config.az_control),
-          AxisSupervisor(with_lsb(config.az_supervisor, config.az_control)), start_mount.az_deg},
+          AxisSupervisor(with_lsb(config.az_supervisor, config.az_control)),
+          start_mount.az_deg,
+          config.az_drive,
+          RelayDrive(config.az_drive.relay),
+          std::nullopt,
+          0.0},
       el_{AxisController(config.el_control),
-          AxisSupervisor(with_lsb(config.el_supervisor, config.el_control)), start_mount.el_deg} {}
+          AxisSupervisor(with_lsb(config.el_supervisor, config.el_control)),
+          start_mount.el_deg,
+          config.el_drive,
+          RelayDrive(config.el_drive.relay),
+          std::nullopt,
+          0.0} {}
 
 void StationController::on_encoder_reading(double now_s, double az_deg, double el_deg) {
   last_encoder_ = AzEl{az_deg, el_deg};
@@ -64,18 +124,41 @@ Duties StationController::tick(double now_s, const Demand& demand, const AzEl& r
     el_target = jog_target(demand.jog->el, false);
     rate = AzEl{};
   }
-  return Duties{drive(az_, now_s, az_target, rate.az_deg),
-                drive(el_, now_s, el_target, rate.el_deg)};
+  drive(az_, now_s, az_target, rate.az_deg);
+  drive(el_, now_s, el_target, rate.el_deg);
+  return duties();
+}
+
+Duties StationController::duties() const {
+  Duties d{az_.duty(), el_.duty(), std::nullopt, std::nullopt};
+  if (az_.drive.kind == DriveKind::Setpoint) d.az_setpoint_deg = az_.setpoint_deg;
+  if (el_.drive.kind == DriveKind::Setpoint) d.el_setpoint_deg = el_.setpoint_deg;
+  return d;
 }
 
 double StationController::drive(Axis& axis, double now_s, std::optional<double> target_deg,
                                 double rate_deg_s) const {
   if (!target_deg) {
-    // Holding: let any move finish its soft stop at the present position.
-    target_deg = axis.mount_deg;
+    // Holding: a PWM move finishes its soft stop at the present position; a setpoint axis keeps
+    // the setpoint it has (re-sending the moving reading would chase the coast).
+    target_deg = axis.drive.kind == DriveKind::Setpoint && axis.setpoint_deg ? *axis.setpoint_deg
+                                                                             : axis.mount_deg;
     rate_deg_s = 0.0;
   }
-  double duty = axis.controller.update(*target_deg, axis.mount_deg, rate_deg_s, config_.tick_s);
+  switch (axis.drive.kind) {
+    case DriveKind::Relay:
+      return drive_relay(axis, now_s, *target_deg, rate_deg_s);
+    case DriveKind::Setpoint:
+      return drive_setpoint(axis, now_s, *target_deg);
+    case DriveKind::Pwm:
+      break;
+  }
+  return drive_pwm(axis, now_s, *target_deg, rate_deg_s);
+}
+
+double StationController::drive_pwm(Axis& axis, double now_s, double target_deg,
+                                    double rate_deg_s) const {
+  double duty = axis.controller.update(target_deg, axis.mount_deg, rate_deg_s, config_.tick_s);
   if (into_limit(axis, duty)) {
     // Held at the switch: the supervisor sees an axis at rest, not one driven without moving.
     axis.controller.halt();
@@ -84,6 +167,35 @@ double StationController::drive(Axis& axis, double now_s, std::optional<double> 
   const auto verdict = axis.supervisor.check(now_s, duty);
   if (!verdict.allow_motion) axis.controller.halt();
   return axis.controller.duty();
+}
+
+double StationController::drive_relay(Axis& axis, double now_s, double target_deg,
+                                      double rate_deg_s) const {
+  double duty = relay_duty(axis.relay.update(target_deg, axis.mount_deg, now_s, rate_deg_s));
+  if (into_limit(axis, duty)) {
+    axis.relay.halt(now_s);
+    duty = 0.0;
+  }
+  const auto verdict = axis.supervisor.check(now_s, duty);
+  if (!verdict.allow_motion) axis.relay.halt(now_s);
+  return axis.duty();
+}
+
+double StationController::drive_setpoint(Axis& axis, double now_s, double target_deg) const {
+  double setpoint = target_deg;
+  const double away = setpoint - axis.mount_deg;
+  // A setpoint beyond a tripped switch becomes "stay here": the box would drive into it.
+  if (into_limit(axis, away)) setpoint = axis.mount_deg;
+  const double error = setpoint - axis.mount_deg;
+  axis.setpoint_duty =
+      std::fabs(error) > axis.drive.setpoint_band_deg ? std::copysign(1.0, error) : 0.0;
+  axis.setpoint_deg = setpoint;
+  const auto verdict = axis.supervisor.check(now_s, axis.setpoint_duty);
+  if (!verdict.allow_motion) {
+    axis.setpoint_deg = axis.mount_deg;
+    axis.setpoint_duty = 0.0;
+  }
+  return axis.setpoint_duty;
 }
 
 bool StationController::into_limit(const Axis& axis, double duty) const {
@@ -96,9 +208,10 @@ bool StationController::into_limit(const Axis& axis, double duty) const {
 Duties StationController::set_limits(const LimitSwitches& limits) {
   limits_ = limits;
   for (Axis* axis : {&az_, &el_}) {
-    if (into_limit(*axis, axis->controller.duty())) axis->controller.halt();
+    // No time here: a relay's dead times then run from its next update.
+    if (into_limit(*axis, axis->duty())) axis->halt(std::numeric_limits<double>::quiet_NaN());
   }
-  return Duties{az_.controller.duty(), el_.controller.duty()};
+  return duties();
 }
 
 std::optional<AzEl> StationController::sky_position(double now_s) const {
@@ -111,14 +224,18 @@ bool StationController::faulted() const {
 }
 
 AxisStatus StationController::status(const Axis& axis) {
-  return AxisStatus{axis.mount_deg, axis.controller.duty(), axis.controller.moving(),
-                    axis.supervisor.fault(), axis.supervisor.reason()};
+  return AxisStatus{axis.mount_deg, axis.duty(), axis.moving(), axis.supervisor.fault(),
+                    axis.supervisor.reason()};
+}
+
+std::uint64_t StationController::starts(const Axis& axis) {
+  return axis.drive.kind == DriveKind::Relay ? axis.relay.starts() : axis.controller.starts();
 }
 
 void StationController::emergency_stop(double now_s) {
   for (Axis* axis : {&az_, &el_}) {
     axis->supervisor.emergency_stop(now_s);
-    axis->controller.halt();
+    axis->halt(now_s);
   }
 }
 

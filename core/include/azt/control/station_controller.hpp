@@ -8,14 +8,31 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "azt/control/axis_controller.hpp"
 #include "azt/control/axis_geometry.hpp"
 #include "azt/control/corrections.hpp"
 #include "azt/control/modes.hpp"
+#include "azt/control/relay_drive.hpp"
 #include "azt/control/supervisor.hpp"
 
 namespace azt::control {
+
+/// How an axis is moved (issue 6 §1): a PWM H-bridge (soft start and stop, AxisController), on/off
+/// relays (RelayDrive: hysteresis, minimum on-time, reversal dead time), or a rotator box that
+/// closes its own loop around a setpoint (seed 001's digital pot: we only send the angle).
+enum class DriveKind : std::uint8_t { Pwm, Relay, Setpoint };
+
+std::string_view to_string(DriveKind kind);
+
+struct AxisDriveConfig {
+  DriveKind kind = DriveKind::Pwm;
+  RelayDriveConfig relay;  ///< Relay: window, minimum on-time, dead times
+  /// Setpoint: the box's own deadband. Further than this from the setpoint the box is driving,
+  /// which is what the supervisor watches for stalls and runaways.
+  double setpoint_band_deg = 2.0;
+};
 
 struct StationControlConfig {
   AxisControlConfig az_control;  ///< lsb_deg is the encoder step of the axis
@@ -25,6 +42,8 @@ struct StationControlConfig {
   AzimuthRange az_range;
   ElevationRange el_range;
   double tick_s = 0.05;
+  AxisDriveConfig az_drive;
+  AxisDriveConfig el_drive;
 };
 
 /// What the station knows of one axis.
@@ -36,9 +55,14 @@ struct AxisStatus {
   std::string reason;  ///< the supervisor's words when faulted
 };
 
+/// What to apply until the next tick. PWM axes: the duty. Relay axes: +1, −1 or 0 (forward,
+/// reverse, released). Setpoint axes: the angle to send (mount degrees) in *_setpoint_deg; their
+/// duty is the direction the box is expected to drive, for display.
 struct Duties {
   double az = 0.0;
   double el = 0.0;
+  std::optional<double> az_setpoint_deg;
+  std::optional<double> el_setpoint_deg;
 };
 
 /// The travel-end switches (issue 6 §2): normally closed, so a broken wire reads as tripped. A
@@ -85,8 +109,9 @@ class StationController {
   [[nodiscard]] AxisStatus az() const { return status(az_); }
   [[nodiscard]] AxisStatus el() const { return status(el_); }
   [[nodiscard]] bool faulted() const;
-  [[nodiscard]] std::uint64_t starts_az() const { return az_.controller.starts(); }
-  [[nodiscard]] std::uint64_t starts_el() const { return el_.controller.starts(); }
+  /// Motor starts since construction (a relay closing, or a PWM move beginning).
+  [[nodiscard]] std::uint64_t starts_az() const { return starts(az_); }
+  [[nodiscard]] std::uint64_t starts_el() const { return starts(el_); }
   [[nodiscard]] const StationControlConfig& config() const { return config_; }
 
   /// Stops both motors now (E-stop or shutdown) and latches an E-stop fault.
@@ -99,8 +124,21 @@ class StationController {
     AxisController controller;
     AxisSupervisor supervisor;
     double mount_deg;
+    AxisDriveConfig drive;
+    RelayDrive relay;
+    std::optional<double> setpoint_deg;  ///< Setpoint axes: what the box was last given
+    double setpoint_duty = 0.0;          ///< Setpoint axes: the direction the box drives
+    [[nodiscard]] double duty() const;
+    [[nodiscard]] bool moving() const;
+    /// Stops the drive now, whatever its kind (a setpoint axis is sent where it stands).
+    void halt(double now_s);
   };
   static AxisStatus status(const Axis& axis);
+  static std::uint64_t starts(const Axis& axis);
+  double drive_pwm(Axis& axis, double now_s, double target_deg, double rate_deg_s) const;
+  double drive_relay(Axis& axis, double now_s, double target_deg, double rate_deg_s) const;
+  double drive_setpoint(Axis& axis, double now_s, double target_deg) const;
+  [[nodiscard]] Duties duties() const;
   double drive(Axis& axis, double now_s, std::optional<double> target_deg, double rate_deg_s) const;
   /// A duty of `axis` that runs into a tripped switch.
   [[nodiscard]] bool into_limit(const Axis& axis, double duty) const;
