@@ -56,6 +56,12 @@ class AntennaBackend {
 /// UsageError naming the device or channel that cannot be opened (nothing is driven then).
 std::unique_ptr<AntennaBackend> make_pwm_backend(boost::asio::io_context& io,
                                                  const DaemonConfig& config);
+struct HardwarePorts;
+/// Per-axis drives and sensors ([hardware.az] / [hardware.el]) on the devices `ports` opens;
+/// throws UsageError naming the key of a device that cannot be had (nothing is driven then).
+std::unique_ptr<AntennaBackend> make_hardware_backend(boost::asio::io_context& io,
+                                                      const DaemonConfig& config,
+                                                      HardwarePorts ports);
 /// The simulated antenna of the [sim] tables, in real time.
 std::unique_ptr<AntennaBackend> make_sim_backend(const DaemonConfig& config);
 /// A Hamlib rotator ([hamlib]); throws UsageError naming the model/device when it cannot open.

@@ -133,6 +133,7 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
                                  "web",
                                  "sequencer",
                                  "gpio",
+                                 "hardware",
                                  "log"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }

@@ -19,6 +19,7 @@
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
 #include "cli_error.hpp"
+#include "axis_io.hpp"
 #include "console_server.hpp"
 #include "guarded_antenna.hpp"
 #include "sequencer_runner.hpp"
@@ -95,7 +96,10 @@ class Daemon {
         ephemeris_(open_ephemeris(config_.sim.station.sky.ephemeris)),
         sky_(*ephemeris_, config_.sim.station),
         modes_(config_.park, config_.out_of_range, config_.sim.setup.el_range.min_deg),
-        gpio_(config_.gpio.any_line() ? linux_os::make_libgpiod_provider(io_) : nullptr),
+        gpio_(config_.gpio.any_line() || config_.hardware.az.drive == "relay" ||
+                      config_.hardware.el.drive == "relay"
+                  ? linux_os::make_libgpiod_provider(io_)
+                  : nullptr),
         sequencer_(make_sequencer()),
         antenna_(make_guarded(make_backend())),
         service_(
@@ -113,6 +117,9 @@ class Daemon {
   std::unique_ptr<AntennaBackend> make_backend() {
     if (config_.backend == "hamlib") return make_hamlib_backend(config_);
     if (config_.backend == "pwm") return make_pwm_backend(io_, config_);
+    if (config_.backend == "hardware") {
+      return make_hardware_backend(io_, config_, HardwarePorts::linux_devices(gpio_.get()));
+    }
     return make_sim_backend(config_);
   }
 

@@ -5,6 +5,7 @@
 
 #include "cli_error.hpp"
 #include "config_file.hpp"
+#include "hardware_config.hpp"
 #include "station_config.hpp"
 
 namespace azt::app {
@@ -140,45 +141,18 @@ linux_os::HubSerialConfig read_hub(const ConfigSection& s) {
   return h;
 }
 
-/// A line is a number on [gpio] chip, or "CHIP:N" for a line on another chip.
-std::optional<linux_os::GpioLineSpec> read_line(const ConfigSection& s, const std::string& key,
-                                                const std::string& chip, bool active_low) {
-  if (!s.has(key)) return std::nullopt;
-  linux_os::GpioLineSpec spec{chip, 0, active_low, "[gpio] " + key};
-  std::int64_t offset = -1;
-  if (s.is_text(key)) {
-    const auto text = s.text(key);
-    const auto colon = text->rfind(':');
-    if (colon == std::string::npos || colon == 0)
-      s.fail(key, "must be a line number or \"CHIP:N\"");
-    spec.chip = text->substr(0, colon);
-    try {
-      std::size_t used = 0;
-      offset = std::stoll(text->substr(colon + 1), &used);
-      if (used != text->size() - colon - 1) offset = -1;
-    } catch (const std::exception&) {
-      offset = -1;
-    }
-  } else {
-    offset = s.integer(key).value_or(-1);
-  }
-  if (offset < 0 || offset > 1023) s.fail(key, "must be a line number 0 to 1023, or \"CHIP:N\"");
-  spec.offset = static_cast<unsigned>(offset);
-  return spec;
-}
-
 GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
   GpioConfig g;
   g.chip = s.text("chip").value_or(g.chip);
   // Normally closed switches to ground with pull-ups: an open switch or a cut wire reads high,
   // which is "tripped"; the radio's PTT output pulls its line low.
   const bool limits_low = s.boolean("limits_active_low").value_or(false);
-  g.estop = read_line(s, "estop", g.chip, s.boolean("estop_active_low").value_or(false));
-  g.az_ccw_limit = read_line(s, "az_ccw_limit", g.chip, limits_low);
-  g.az_cw_limit = read_line(s, "az_cw_limit", g.chip, limits_low);
-  g.el_down_limit = read_line(s, "el_down_limit", g.chip, limits_low);
-  g.el_up_limit = read_line(s, "el_up_limit", g.chip, limits_low);
-  g.ptt = read_line(s, "ptt", g.chip, s.boolean("ptt_active_low").value_or(true));
+  g.estop = read_gpio_line(s, "estop", g.chip, s.boolean("estop_active_low").value_or(false));
+  g.az_ccw_limit = read_gpio_line(s, "az_ccw_limit", g.chip, limits_low);
+  g.az_cw_limit = read_gpio_line(s, "az_cw_limit", g.chip, limits_low);
+  g.el_down_limit = read_gpio_line(s, "el_down_limit", g.chip, limits_low);
+  g.el_up_limit = read_gpio_line(s, "el_up_limit", g.chip, limits_low);
+  g.ptt = read_gpio_line(s, "ptt", g.chip, s.boolean("ptt_active_low").value_or(true));
   const bool outputs_low = s.boolean("sequencer_active_low").value_or(false);
   if (const toml::array* a = s.array("sequencer")) {
     for (std::size_t i = 0; i < a->size(); ++i) {
@@ -289,8 +263,9 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   }
   const ConfigSection antenna = file.section("antenna", {"backend"});
   c.backend = antenna.text("backend").value_or("sim");
-  if (c.backend != "sim" && c.backend != "hamlib" && c.backend != "pwm") {
-    antenna.fail("backend", "must be \"sim\", \"hamlib\" or \"pwm\"");
+  if (c.backend != "sim" && c.backend != "hamlib" && c.backend != "pwm" &&
+      c.backend != "hardware") {
+    antenna.fail("backend", "must be \"sim\", \"hamlib\", \"pwm\" or \"hardware\"");
   }
   const ConfigSection hub = file.section("hub", {"device", "baud", "accept"});
   c.hub = read_hub(hub);

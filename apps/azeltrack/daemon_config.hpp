@@ -11,6 +11,7 @@
 #include "azt/linux/hub_serial_link.hpp"
 #include "azt/proto/target_limits.hpp"
 #include "azt/sequencer/tr_sequencer.hpp"
+#include "hardware_config.hpp"
 #include "sim_config.hpp"
 
 namespace azt::app {
@@ -65,11 +66,12 @@ struct WebConfig {
 struct DaemonConfig {
   SimConfig sim;                      ///< station, sky, control, geometry, and the simulated plant
   std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
-  std::string backend = "sim";        ///< [antenna] backend: sim | hamlib | pwm
+  std::string backend = "sim";  ///< [antenna] backend: sim | hamlib | pwm | hardware
   linux_os::HamlibConfig hamlib;
   linux_os::HubSerialConfig hub;  ///< [hub]: the EncoderHub's serial device (`pwm` backend)
   PwmConfig pwm;
   GpioConfig gpio;
+  HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
   NetServerConfig rotctld{"127.0.0.1", 4533};
   std::vector<SerialServerConfig> serial;
   NetServerConfig pstrotator{"127.0.0.1", 12000};

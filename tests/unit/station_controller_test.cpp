@@ -273,5 +273,19 @@ TEST(StationController, RelayAxisStopsAtATrippedLimitAndOnEStop) {
   EXPECT_DOUBLE_EQ(rig.station.az().duty, 0.0);
 }
 
+TEST(StationController, AnAbsoluteAzimuthSensorKeepsItsTurn) {
+  Rig rig;
+  StationControlConfig c = rig.config();
+  c.az_range = AzimuthRange{0.0, 450.0};
+  c.az_absolute = true;
+  StationController station(c, AzEl{180.0, 10.0});  // believed at 180°, really at 400°
+  station.on_encoder_reading(0.0, 400.0, 10.0);
+  EXPECT_DOUBLE_EQ(station.az().mount_deg, 400.0);
+  c.az_absolute = false;
+  StationController single_turn(c, AzEl{180.0, 10.0});
+  single_turn.on_encoder_reading(0.0, 400.0, 10.0);
+  EXPECT_DOUBLE_EQ(single_turn.az().mount_deg, 40.0) << "a single-turn reading goes to the near side";
+}
+
 }  // namespace
 }  // namespace azt::control

@@ -44,6 +44,9 @@ struct StationControlConfig {
   double tick_s = 0.05;
   AxisDriveConfig az_drive;
   AxisDriveConfig el_drive;
+  /// The azimuth sensor reads the whole travel (a pot across a 450° rotator): its readings are
+  /// mount angles, never resolved to the side nearest the last one as a single-turn encoder's are.
+  bool az_absolute = false;
 };
 
 /// What the station knows of one axis.

@@ -1,0 +1,66 @@
+#pragma once
+// [hardware.az] / [hardware.el]: how each axis of the `hardware` backend is driven and read
+// (issue 6: every drive and sensor of the seeds, chosen per axis; docs/hardware.md).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "azt/control/pot_calibration.hpp"
+#include "azt/control/relay_drive.hpp"
+#include "azt/control/setpoint_drive.hpp"
+#include "azt/linux/gpio.hpp"
+
+namespace azt::app {
+
+class ConfigFile;
+class ConfigSection;
+
+struct HardwareAxisConfig {
+  std::string name;            ///< "az" or "el"
+  std::string drive = "pwm";   ///< pwm | relay | pot
+  std::string sensor = "hub";  ///< hub | mcp3008 | ads1115
+
+  // drive = "relay": forward/reverse lines (CW/CCW, UP/DOWN), or power + polarity (seed 002).
+  std::optional<linux_os::GpioLineSpec> relay_forward;
+  std::optional<linux_os::GpioLineSpec> relay_reverse;
+  std::optional<linux_os::GpioLineSpec> relay_power;
+  std::optional<linux_os::GpioLineSpec> relay_polarity;
+  control::RelayDriveConfig relay;
+  double polarity_settle_s = 0.05;
+
+  // drive = "pot": an MCP41010 in place of the rotator box's control pot (seed 001).
+  std::string spi_device;
+  std::uint32_t spi_hz = 1'000'000;
+  control::SetpointCalibration wiper;
+  double setpoint_band_deg = 2.0;
+
+  // sensor = "mcp3008" (spidev) or "ads1115" (i2c-dev): a potentiometer on the axis.
+  std::string adc_device;
+  unsigned adc_channel = 0;
+  std::uint8_t adc_address = 0x48;  ///< ads1115
+  control::PotInputConfig pot;
+
+  [[nodiscard]] std::string key(const std::string& field) const {
+    return "[hardware." + name + "] " + field;
+  }
+};
+
+/// One axis with the defaults (IBT-2 on [pwm], EncoderHub).
+HardwareAxisConfig default_axis(const std::string& name);
+
+struct HardwareConfig {
+  HardwareAxisConfig az = default_axis("az");
+  HardwareAxisConfig el = default_axis("el");
+  [[nodiscard]] bool uses_hub() const { return az.sensor == "hub" || el.sensor == "hub"; }
+};
+
+/// A GPIO line key of `s`: a number on `chip`, or "CHIP:N"; nullopt when absent. Errors name it.
+std::optional<linux_os::GpioLineSpec> read_gpio_line(const ConfigSection& s, const std::string& key,
+                                                     const std::string& chip, bool active_low);
+
+/// Reads [hardware]; `gpio_chip` is [gpio] chip (relay lines given as bare numbers). Throws
+/// UsageError naming the key.
+HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chip);
+
+}  // namespace azt::app
