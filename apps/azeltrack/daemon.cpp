@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "antenna_backend.hpp"
+#include "axis_io.hpp"
 #include "azt/linux/asio.hpp"
 #include "azt/linux/libgpiod_lines.hpp"
 #include "azt/linux/serial_protocol_server.hpp"
@@ -19,7 +20,6 @@
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
 #include "cli_error.hpp"
-#include "axis_io.hpp"
 #include "console_server.hpp"
 #include "guarded_antenna.hpp"
 #include "sequencer_runner.hpp"

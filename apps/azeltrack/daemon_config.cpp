@@ -240,6 +240,28 @@ std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
   return slots;
 }
 
+/// A relay line that is also a [gpio] line (or another relay) would be driven by two functions.
+void check_relay_lines(const DaemonConfig& c, const ConfigSection& antenna) {
+  std::vector<const linux_os::GpioLineSpec*> all;
+  for (const auto* l : {&c.gpio.estop, &c.gpio.az_ccw_limit, &c.gpio.az_cw_limit,
+                        &c.gpio.el_down_limit, &c.gpio.el_up_limit, &c.gpio.ptt}) {
+    if (*l) all.push_back(&**l);
+  }
+  for (const auto& l : c.gpio.sequencer) all.push_back(&l);
+  for (const HardwareAxisConfig* a : {&c.hardware.az, &c.hardware.el}) {
+    for (const auto* l :
+         {&a->relay_forward, &a->relay_reverse, &a->relay_power, &a->relay_polarity}) {
+      if (!*l) continue;
+      for (const auto* other : all) {
+        if (other->chip == (*l)->chip && other->offset == (*l)->offset) {
+          antenna.fail("backend", (*l)->key + " is the same line as " + other->key);
+        }
+      }
+      all.push_back(&**l);
+    }
+  }
+}
+
 }  // namespace
 
 proto::TargetLimits DaemonConfig::target_limits() const {
@@ -295,6 +317,13 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
                                       "limits_active_low", "ptt", "ptt_active_low", "sequencer",
                                       "sequencer_active_low", "estop_latch_file"}),
                 c.sequencer.outputs.size());
+  c.hardware = read_hardware(file, c.gpio.chip);
+  if (c.backend == "hardware") {
+    if (c.hardware.uses_hub() && c.hub.device.empty()) {
+      antenna.fail("backend", "is \"hardware\" with a hub sensor but [hub] device is not set");
+    }
+    check_relay_lines(c, antenna);
+  }
   c.web = read_web(
       file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));
   c.park = read_park(file, c.sim.setup);

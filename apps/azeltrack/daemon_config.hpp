@@ -66,7 +66,7 @@ struct WebConfig {
 struct DaemonConfig {
   SimConfig sim;                      ///< station, sky, control, geometry, and the simulated plant
   std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
-  std::string backend = "sim";  ///< [antenna] backend: sim | hamlib | pwm | hardware
+  std::string backend = "sim";        ///< [antenna] backend: sim | hamlib | pwm | hardware
   linux_os::HamlibConfig hamlib;
   linux_os::HubSerialConfig hub;  ///< [hub]: the EncoderHub's serial device (`pwm` backend)
   PwmConfig pwm;

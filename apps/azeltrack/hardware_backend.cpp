@@ -141,8 +141,10 @@ class HardwareBackend final : public AntennaBackend {
           // Stamped with when the frame arrived, not with the next tick: staleness counts from
           // the frame.
           const double at = hub_clock_s();
-          if (az) fresh_[0] = Sample{proto::hub_raw_to_deg(f.reading.az_raw, f.reading.az_bits), at};
-          if (el) fresh_[1] = Sample{proto::hub_raw_to_deg(f.reading.el_raw, f.reading.el_bits), at};
+          if (az)
+            fresh_[0] = Sample{proto::hub_raw_to_deg(f.reading.az_raw, f.reading.az_bits), at};
+          if (el)
+            fresh_[1] = Sample{proto::hub_raw_to_deg(f.reading.el_raw, f.reading.el_bits), at};
         },
         [this](const std::string& event) { hub_event_ = event; });
     if (!hub) throw UsageError("[hub] device: " + hub.error().message);
@@ -152,9 +154,9 @@ class HardwareBackend final : public AntennaBackend {
   /// The hub's frames arrive between ticks: their time on the tick's clock is the last tick's
   /// plus the wall time since.
   double hub_clock_s() const {
-    return last_tick_s_ + std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                        last_tick_wall_)
-                              .count();
+    return last_tick_s_ +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - last_tick_wall_)
+               .count();
   }
 
   void read_sensors(double now_s) {

@@ -33,8 +33,9 @@ void read_relay(const ConfigSection& s, HardwareAxisConfig& a, const std::string
   const bool power = a.relay_power || a.relay_polarity;
   if (pair == power || (pair && !(a.relay_forward && a.relay_reverse)) ||
       (power && !(a.relay_power && a.relay_polarity))) {
-    s.fail("drive", "is \"relay\": give relay_forward and relay_reverse, or relay_power and "
-                    "relay_polarity");
+    s.fail("drive",
+           "is \"relay\": give relay_forward and relay_reverse, or relay_power and "
+           "relay_polarity");
   }
   control::RelayDriveConfig r;
   r.window_deg = s.number("window_deg").value_or(r.window_deg);
@@ -58,7 +59,8 @@ void read_pot_drive(const ConfigSection& s, HardwareAxisConfig& a) {
   if (hz < 10'000 || hz > 10'000'000) s.fail("spi_hz", "must be 10000 to 10000000");
   a.spi_hz = static_cast<std::uint32_t>(hz);
   const auto w = two_points(s, "wiper_calibration");
-  if (!w) s.fail("wiper_calibration", "is needed for drive = \"pot\": [wiper_a, deg_a, wiper_b, deg_b]");
+  if (!w)
+    s.fail("wiper_calibration", "is needed for drive = \"pot\": [wiper_a, deg_a, wiper_b, deg_b]");
   auto cal = control::SetpointCalibration::make((*w)[0], (*w)[1], (*w)[2], (*w)[3]);
   if (!cal) s.fail("wiper_calibration", cal.error().message);
   a.wiper = *cal;
@@ -70,12 +72,14 @@ void read_pot_drive(const ConfigSection& s, HardwareAxisConfig& a) {
 void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   a.adc_device = s.text("adc_device").value_or("");
   if (a.adc_device.empty()) {
-    s.fail("adc_device", a.sensor == "mcp3008" ? "is needed for sensor = \"mcp3008\" (/dev/spidevB.C)"
-                                               : "is needed for sensor = \"ads1115\" (/dev/i2c-N)");
+    s.fail("adc_device", a.sensor == "mcp3008"
+                             ? "is needed for sensor = \"mcp3008\" (/dev/spidevB.C)"
+                             : "is needed for sensor = \"ads1115\" (/dev/i2c-N)");
   }
   const unsigned channels = a.sensor == "mcp3008" ? 8 : 4;
   const auto ch = s.integer("adc_channel").value_or(0);
-  if (ch < 0 || ch >= channels) s.fail("adc_channel", "must be 0 to " + std::to_string(channels - 1));
+  if (ch < 0 || ch >= channels)
+    s.fail("adc_channel", "must be 0 to " + std::to_string(channels - 1));
   a.adc_channel = static_cast<unsigned>(ch);
   const auto addr = s.integer("adc_address").value_or(0x48);
   if (addr < 0x48 || addr > 0x4B) s.fail("adc_address", "must be 72 to 75 (0x48–0x4B)");
@@ -90,10 +94,13 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   auto cal = control::PotCalibration::make((*p)[0], (*p)[1], (*p)[2], (*p)[3]);
   if (!cal) s.fail("pot_calibration", cal.error().message);
   a.pot.calibration = *cal;
-  if (const auto lo = s.integer("open_below_counts")) a.pot.open_below_counts = static_cast<std::int32_t>(*lo);
-  if (const auto hi = s.integer("open_above_counts")) a.pot.open_above_counts = static_cast<std::int32_t>(*hi);
+  if (const auto lo = s.integer("open_below_counts"))
+    a.pot.open_below_counts = static_cast<std::int32_t>(*lo);
+  if (const auto hi = s.integer("open_above_counts"))
+    a.pot.open_above_counts = static_cast<std::int32_t>(*hi);
   a.pot.average_samples = static_cast<std::size_t>(s.integer("average_samples").value_or(4));
-  if (auto ok = control::PotInputConfig::make(a.pot); !ok) s.fail("pot_calibration", ok.error().message);
+  if (auto ok = control::PotInputConfig::make(a.pot); !ok)
+    s.fail("pot_calibration", ok.error().message);
 }
 
 HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
@@ -154,13 +161,30 @@ HardwareAxisConfig default_axis(const std::string& name) {
 
 HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chip) {
   const ConfigSection hw = file.section("hardware", {"az", "el"});
-  const std::initializer_list<std::string_view> keys = {
-      "drive",          "sensor",          "relay_forward",   "relay_reverse",
-      "relay_power",    "relay_polarity",  "relay_active_low", "window_deg",
-      "lsb_deg",        "coast_deg",       "min_on_s",        "reversal_dead_s",
-      "polarity_settle_s", "spi_device",   "spi_hz",          "wiper_calibration",
-      "setpoint_band_deg", "adc_device",   "adc_channel",     "adc_address",
-      "pot_calibration", "open_below_counts", "open_above_counts", "average_samples"};
+  const std::initializer_list<std::string_view> keys = {"drive",
+                                                        "sensor",
+                                                        "relay_forward",
+                                                        "relay_reverse",
+                                                        "relay_power",
+                                                        "relay_polarity",
+                                                        "relay_active_low",
+                                                        "window_deg",
+                                                        "lsb_deg",
+                                                        "coast_deg",
+                                                        "min_on_s",
+                                                        "reversal_dead_s",
+                                                        "polarity_settle_s",
+                                                        "spi_device",
+                                                        "spi_hz",
+                                                        "wiper_calibration",
+                                                        "setpoint_band_deg",
+                                                        "adc_device",
+                                                        "adc_channel",
+                                                        "adc_address",
+                                                        "pot_calibration",
+                                                        "open_below_counts",
+                                                        "open_above_counts",
+                                                        "average_samples"};
   HardwareConfig h;
   h.az = read_axis(hw.child("az", keys), "az", gpio_chip);
   h.el = read_axis(hw.child("el", keys), "el", gpio_chip);

@@ -284,7 +284,8 @@ TEST(StationController, AnAbsoluteAzimuthSensorKeepsItsTurn) {
   c.az_absolute = false;
   StationController single_turn(c, AzEl{180.0, 10.0});
   single_turn.on_encoder_reading(0.0, 400.0, 10.0);
-  EXPECT_DOUBLE_EQ(single_turn.az().mount_deg, 40.0) << "a single-turn reading goes to the near side";
+  EXPECT_DOUBLE_EQ(single_turn.az().mount_deg, 40.0)
+      << "a single-turn reading goes to the near side";
 }
 
 }  // namespace

@@ -83,9 +83,9 @@ void StationController::on_encoder_reading(double now_s, double az_deg, double e
   last_encoder_ = AzEl{az_deg, el_deg};
   const CorrectedPosition corrected = apply_corrections(az_deg, el_deg, corrections_);
   // An absolute sensor keeps its turn: only the corrections' (small) shift is added.
-  const double az_mount =
-      config_.az_absolute ? az_deg + std::remainder(corrected.az_deg - az_deg, 360.0)
-                          : plan_azimuth(az_.mount_deg, corrected.az_deg, config_.az_range);
+  const double az_mount = config_.az_absolute
+                              ? az_deg + std::remainder(corrected.az_deg - az_deg, 360.0)
+                              : plan_azimuth(az_.mount_deg, corrected.az_deg, config_.az_range);
   const double el_mount = corrected.el_deg > 270.0 ? corrected.el_deg - 360.0 : corrected.el_deg;
   if (az_.supervisor.on_reading(now_s, az_mount)) az_.mount_deg = az_mount;
   if (el_.supervisor.on_reading(now_s, el_mount)) el_.mount_deg = el_mount;
