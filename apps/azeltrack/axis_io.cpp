@@ -14,18 +14,37 @@
 namespace azt::app {
 namespace {
 
+/// An IBT-2: the bridge's PWMs, and its enables when wired to a GPIO line. The enables go high
+/// with the first drive and low on off(), so a stop or a fault also cuts the bridge in hardware.
 class PwmActuator final : public AxisActuator {
  public:
-  PwmActuator(linux_os::PwmHBridge bridge, std::string what)
-      : bridge_(std::move(bridge)), what_(std::move(what)) {}
+  PwmActuator(linux_os::PwmHBridge bridge, std::unique_ptr<linux_os::GpioOutput> enable,
+              std::string what)
+      : bridge_(std::move(bridge)), enable_(std::move(enable)), what_(std::move(what)) {}
+  ~PwmActuator() override { off(0.0); }
+  PwmActuator(const PwmActuator&) = delete;
+  PwmActuator& operator=(const PwmActuator&) = delete;
+  PwmActuator(PwmActuator&&) = delete;
+  PwmActuator& operator=(PwmActuator&&) = delete;
+
   Result<bool> apply(double now_s, double duty, std::optional<double> /*setpoint*/) override {
+    if (enable_ && duty != 0.0 && !enable_->active()) {
+      if (auto r = enable_->set(true); !r) {
+        off(now_s);
+        return r.error();
+      }
+    }
     return bridge_.apply(now_s, duty);
   }
-  void off(double now_s) override { (void)bridge_.disable(now_s); }
+  void off(double now_s) override {
+    (void)bridge_.disable(now_s);
+    if (enable_) (void)enable_->set(false);
+  }
   [[nodiscard]] std::string describe() const override { return what_; }
 
  private:
   linux_os::PwmHBridge bridge_;
+  std::unique_ptr<linux_os::GpioOutput> enable_;
   std::string what_;
 };
 
@@ -185,8 +204,8 @@ class Ads1115Sensor final : public AxisSensor {
   std::string what_;
 };
 
-std::unique_ptr<linux_os::GpioOutput> relay_line(HardwarePorts& ports,
-                                                 const linux_os::GpioLineSpec& spec) {
+std::unique_ptr<linux_os::GpioOutput> output_line(HardwarePorts& ports,
+                                                  const linux_os::GpioLineSpec& spec) {
   if (ports.gpio == nullptr) throw UsageError(spec.key + ": no GPIO provider");
   auto line = ports.gpio->output(spec, false);  // released until the station asks
   if (!line) throw UsageError(line.error().message);
@@ -219,8 +238,8 @@ std::unique_ptr<AxisActuator> make_actuator(const HardwareAxisConfig& a, const P
                                             HardwarePorts& ports) {
   if (a.drive == "relay") {
     const bool pp = a.relay_power.has_value();
-    auto first = relay_line(ports, pp ? *a.relay_power : *a.relay_forward);
-    auto second = relay_line(ports, pp ? *a.relay_polarity : *a.relay_reverse);
+    auto first = output_line(ports, pp ? *a.relay_power : *a.relay_forward);
+    auto second = output_line(ports, pp ? *a.relay_polarity : *a.relay_reverse);
     return std::make_unique<RelayActuator>(
         std::move(first), std::move(second), pp,
         control::PowerPolarityConfig{a.relay.reversal_dead_s, a.polarity_settle_s},
@@ -243,7 +262,18 @@ std::unique_ptr<AxisActuator> make_actuator(const HardwareAxisConfig& a, const P
     throw UsageError(std::string("[pwm] ") + (a.name == "az" ? "azimuth" : "elevation") + ": " +
                      bridge.error().message);
   }
-  return std::make_unique<PwmActuator>(std::move(bridge).value(), "IBT-2 on sysfs PWM");
+  std::unique_ptr<linux_os::GpioOutput> enable;
+  if (a.enable) {
+    try {
+      enable = output_line(ports, *a.enable);
+    } catch (const UsageError&) {
+      (void)bridge.value().disable(0.0);
+      throw;
+    }
+  }
+  return std::make_unique<PwmActuator>(
+      std::move(bridge).value(), std::move(enable),
+      a.enable ? "IBT-2 on sysfs PWM, enables on GPIO" : "IBT-2 on sysfs PWM");
 }
 
 std::unique_ptr<AxisSensor> make_adc_sensor(const HardwareAxisConfig& a, HardwarePorts& ports) {

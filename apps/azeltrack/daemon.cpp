@@ -96,8 +96,7 @@ class Daemon {
         ephemeris_(open_ephemeris(config_.sim.station.sky.ephemeris)),
         sky_(*ephemeris_, config_.sim.station),
         modes_(config_.park, config_.out_of_range, config_.sim.setup.el_range.min_deg),
-        gpio_(config_.gpio.any_line() || config_.hardware.az.drive == "relay" ||
-                      config_.hardware.el.drive == "relay"
+        gpio_(config_.gpio.any_line() || config_.hardware.uses_gpio()
                   ? linux_os::make_libgpiod_provider(io_)
                   : nullptr),
         sequencer_(make_sequencer()),

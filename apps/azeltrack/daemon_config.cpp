@@ -250,7 +250,7 @@ void check_relay_lines(const DaemonConfig& c, const ConfigSection& antenna) {
   for (const auto& l : c.gpio.sequencer) all.push_back(&l);
   for (const HardwareAxisConfig* a : {&c.hardware.az, &c.hardware.el}) {
     for (const auto* l :
-         {&a->relay_forward, &a->relay_reverse, &a->relay_power, &a->relay_polarity}) {
+         {&a->relay_forward, &a->relay_reverse, &a->relay_power, &a->relay_polarity, &a->enable}) {
       if (!*l) continue;
       for (const auto* other : all) {
         if (other->chip == (*l)->chip && other->offset == (*l)->offset) {

@@ -109,6 +109,9 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
   a.name = name;
   a.drive = s.text("drive").value_or(a.drive);
   a.sensor = s.text("sensor").value_or(a.sensor);
+  a.enable = read_gpio_line(s, "enable", chip, false);
+  if (a.enable && a.drive != "pwm")
+    s.fail("enable", "is for drive = \"pwm\" (the IBT-2's enables)");
   if (a.drive == "relay") {
     read_relay(s, a, chip);
   } else if (a.drive == "pot") {

@@ -21,6 +21,9 @@ struct HardwareAxisConfig {
   std::string drive = "pwm";   ///< pwm | relay | pot
   std::string sensor = "hub";  ///< hub | mcp3008 | ads1115
 
+  // drive = "pwm": the IBT-2's R_EN + L_EN on a GPIO line (absent: tied to 3.3 V).
+  std::optional<linux_os::GpioLineSpec> enable;
+
   // drive = "relay": forward/reverse lines (CW/CCW, UP/DOWN), or power + polarity (seed 002).
   std::optional<linux_os::GpioLineSpec> relay_forward;
   std::optional<linux_os::GpioLineSpec> relay_reverse;
@@ -53,6 +56,9 @@ struct HardwareConfig {
   HardwareAxisConfig az = default_axis("az");
   HardwareAxisConfig el = default_axis("el");
   [[nodiscard]] bool uses_hub() const { return az.sensor == "hub" || el.sensor == "hub"; }
+  [[nodiscard]] bool uses_gpio() const {
+    return az.drive == "relay" || el.drive == "relay" || az.enable || el.enable;
+  }
 };
 
 /// A GPIO line key of `s`: a number on `chip`, or "CHIP:N"; nullopt when absent. Errors name it.

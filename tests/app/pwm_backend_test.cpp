@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "antenna_backend.hpp"
+#include "axis_io.hpp"
 #include "azt/linux/asio.hpp"
 #include "cli_error.hpp"
 #include "config_file.hpp"
@@ -174,6 +175,33 @@ TEST_F(PwmBackendTest, ALimitSwitchEdgeTurnsTheDriveTowardsItOffAtOnce) {
   EXPECT_EQ(duty(1), 0U) << "the switch must not reverse the motor";
   antenna.tick(seconds(), go, control::AzEl{});
   EXPECT_EQ(duty(0), 0U) << "the next tick drove into the switch again";
+}
+
+// The IBT-2's enables on a GPIO line: high while driving, low after a stop.
+TEST_F(PwmBackendTest, TheEnableLineFollowsTheDriveAndDropsOnAStop) {
+  boost::asio::io_context io;
+  DaemonConfig c = config();
+  c.backend = "hardware";
+  c.hardware.az.enable = linux_os::GpioLineSpec{"gpiochip0", 22, false, "[hardware.az] enable"};
+  testing::FakeGpio gpio(io);
+  HardwarePorts ports;
+  ports.gpio = &gpio;
+  auto backend = make_hardware_backend(io, c, ports);
+  EXPECT_FALSE(gpio.outputs["[hardware.az] enable"]) << "enabled before anything was driven";
+  control::Demand go;
+  go.position = control::AzEl{200.0, 10.0};
+  ::write(master_, "\0", 1);
+  for (int i = 0; i < 40 && duty(0) == 0; ++i) {
+    send_frame(180.0, 10.0);
+    io.run_for(std::chrono::milliseconds(20));
+    io.restart();
+    backend->tick(0.05 * i, go, control::AzEl{});
+  }
+  ASSERT_GT(duty(0), 0U);
+  EXPECT_TRUE(gpio.outputs["[hardware.az] enable"]);
+  backend->stop_now(2.0);
+  EXPECT_EQ(duty(0), 0U);
+  EXPECT_FALSE(gpio.outputs["[hardware.az] enable"]);
 }
 
 TEST_F(PwmBackendTest, AMissingChipOrHubIsAClearErrorAndNothingIsDriven) {
