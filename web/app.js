@@ -17,7 +17,7 @@
     loginDismissed: localStorage.getItem('azt.loginbar') === 'hidden',
     sel: null, // what TRACK starts: {body, label, serverName}
     ws: null, connected: false, backoff: 250, attempts: 0, lastMsg: 0, openedAt: 0, retryTimer: 0,
-    trend: [], trendDrawn: 0, skyDrawn: 0, skyListDrawn: 0, faultsKey: '', dopKey: '',
+    trend: [], trendDrawn: 0, skyDrawn: 0, skyListDrawn: 0, faultsKey: '', ioKey: '', dopKey: '',
   };
 
   // ------------------------------------------------------------------ small helpers ----------
@@ -360,6 +360,7 @@
     setText('mini-mode', mode);
     $('mini-mode').className = `mini-mode m-${mode}`;
     renderFaults(Array.isArray(st.faults) ? st.faults : []);
+    renderIo(st.station_io);
     renderMoon(m);
     // trend
     const now = performance.now() / 1000;
@@ -382,6 +383,35 @@
     $('faults').hidden = list.length === 0;
     $('faults-plural').hidden = list.length === 1;
     $('fault-list').replaceChildren(...list.map((f) => h('li', { text: String(f) })));
+  }
+
+  // E-stop, limit switches and the T/R chain (docs/web-api.md "station_io").
+  function renderIo(io) {
+    const key = JSON.stringify(io || null);
+    if (key === S.ioKey) return;
+    S.ioKey = key;
+    const es = io && io.estop ? io.estop : null;
+    const estop = $('io-estop');
+    if (!es || (!es.wired && !es.latched)) { setText(estop, 'not wired'); estop.className = ''; } else {
+      setText(estop, es.latched ? (es.input ? 'PRESSED · latched' : 'latched · clear faults to resume') : 'ready');
+      estop.className = es.latched ? 'io-bad' : '';
+    }
+    const lim = io && io.limits ? io.limits : null;
+    const names = { az_ccw: 'AZ CCW', az_cw: 'AZ CW', el_down: 'EL DOWN', el_up: 'EL UP' };
+    const tripped = lim ? Object.keys(names).filter((k) => lim[k]).map((k) => names[k]) : [];
+    setText('io-limits', !lim ? 'not wired' : tripped.length ? `tripped: ${tripped.join(', ')}` : 'all clear');
+    $('io-limits').className = tripped.length ? 'io-bad' : '';
+    const seq = io && io.sequencer ? io.sequencer : null;
+    let ptt = '—';
+    if (seq) {
+      ptt = seq.timed_out ? 'time-out: release PTT' : seq.inhibited ? 'inhibited' : seq.transmitting ? 'TRANSMIT'
+        : seq.ptt ? 'keying…' : 'receive';
+      if (!seq.wired) ptt += ' (no GPIO lines)';
+    }
+    setText('io-ptt', ptt);
+    $('io-ptt').className = seq && (seq.transmitting || seq.timed_out) ? 'io-bad' : '';
+    const outs = seq && Array.isArray(seq.outputs) ? seq.outputs : [];
+    $('io-seq').replaceChildren(...outs.map((o) => h('span', { class: `out${o.on ? ' on' : ''}`, text: String(o.name) })));
   }
 
   function renderMoon(m) {

@@ -184,6 +184,17 @@ async function main() {
       if (s.target.name !== 'Moon' || s.mode !== 'TRACK') throw new Error(`daemon: ${s.mode} ${s.target.name}`);
     });
 
+    await scenario('the station I/O panel shows the T/R chain and what is wired', page, async () => {
+      await page.click('#nav-main');
+      await until('the T/R chain', async () => (await text(page, '#io-seq')).includes('amplifier'), 3000);
+      const io = (await state()).station_io;
+      const names = io.sequencer.outputs.map((o) => o.name).join(',');
+      if (names !== 'preamp,trx_relay,amplifier,radio') throw new Error(`sequencer outputs: ${names}`);
+      if (io.sequencer.outputs.some((o) => o.on)) throw new Error('an output is keyed with no PTT');
+      if ((await text(page, '#io-estop')) !== 'not wired') throw new Error(`E-stop: ${await text(page, '#io-estop')}`);
+      if ((await page.$$('#io-seq .out.on')).length !== 0) throw new Error('an output is lit');
+    });
+
     await scenario('+0.01° changes the running total and the antenna follows', page, async () => {
       await page.click('#nav-manual');
       await page.fill('#man-az', '200');

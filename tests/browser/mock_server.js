@@ -294,6 +294,14 @@ function stateObject() {
     station: { ...cfg.station },
     clock: { source: 'system' },
     faults: sim.faults.slice(),
+    station_io: {
+      estop: { wired: false, input: false, latched: false },
+      limits: null,
+      sequencer: {
+        wired: false, ptt: false, inhibited: false, transmitting: false, timed_out: false, hold: false,
+        outputs: ['preamp', 'trx_relay', 'amplifier', 'radio'].map((name) => ({ name, on: false })),
+      },
+    },
     servers: { rotctld: '127.0.0.1:4533', web: `127.0.0.1:${PORT}` },
   };
 }
