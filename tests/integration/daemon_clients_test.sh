@@ -243,6 +243,35 @@ device = \"pty:$tmp/x\""
 expect_usage_error "unknown serial protocol" serve --config "$tmp/bad.toml"
 grep -q 'line [0-9]*: \[serial#1\].protocol' "$tmp/err" && ok ||
   bad "error does not name the key and line: $(cat "$tmp/err")"
+# A GPIO chip that does not exist (none on a build machine): the libgpiod adapter's error names
+# the key and the chip, and nothing starts.
+write_config "$tmp/nogpio.toml" "$rport" 0 "
+[gpio]
+chip = \"gpiochip-azt-missing\"
+estop = 26"
+expect_usage_error "missing GPIO chip" serve --config "$tmp/nogpio.toml"
+grep -q '\[gpio\] estop (gpiochip-azt-missing line 26)' "$tmp/err" && ok ||
+  bad "GPIO error does not name the key and the chip: $(cat "$tmp/err")"
+write_config "$tmp/nospi.toml" "$rport" 0 "
+[antenna]
+backend = \"hardware\"
+[hardware.az]
+drive = \"pot\"
+spi_device = \"$tmp/no-spidev\"
+wiper_calibration = [0, 0.0, 255, 450.0]
+sensor = \"mcp3008\"
+adc_device = \"$tmp/no-spidev.1\"
+pot_calibration = [0, 0.0, 1023, 450.0]
+[hardware.el]
+drive = \"pot\"
+spi_device = \"$tmp/no-spidev.2\"
+wiper_calibration = [0, 0.0, 255, 180.0]
+sensor = \"mcp3008\"
+adc_device = \"$tmp/no-spidev.3\"
+pot_calibration = [0, 0.0, 1023, 90.0]"
+expect_usage_error "missing spidev" serve --config "$tmp/nospi.toml"
+grep -q '\[hardware.az\] adc_device: .*no-spidev.1: No such file' "$tmp/err" && ok ||
+  bad "SPI error does not name the key and the device: $(cat "$tmp/err")"
 printf 'schema_version = 99\n' >"$tmp/future.toml"
 expect_usage_error "future schema" serve --config "$tmp/future.toml"
 
