@@ -288,5 +288,18 @@ TEST(StationController, AnAbsoluteAzimuthSensorKeepsItsTurn) {
       << "a single-turn reading goes to the near side";
 }
 
+// Found by the pass simulation: a shaft that coasts a hair past the 450° stop read as 90°, a
+// latched encoder-jump fault.
+TEST(StationController, AReadingJustPastTheOverlapStopStaysOnItsSide) {
+  Rig rig;
+  StationControlConfig c = rig.config();
+  c.az_range = AzimuthRange{0.0, 450.0};
+  StationController station(c, AzEl{449.99, 10.0});
+  station.on_encoder_reading(0.0, 89.99, 10.0);
+  station.on_encoder_reading(0.05, 90.001, 10.0);  // 450.001 on the mount
+  EXPECT_NEAR(station.az().mount_deg, 450.001, 1e-9);
+  EXPECT_FALSE(station.faulted());
+}
+
 }  // namespace
 }  // namespace azt::control

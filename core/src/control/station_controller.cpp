@@ -1,5 +1,6 @@
 #include "azt/control/station_controller.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -21,6 +22,13 @@ double relay_duty(RelayCommand command) {
       break;
   }
   return 0.0;
+}
+
+/// Readings may lie a little past the travel (a shaft coasting past the soft limit at a stop):
+/// they are still placed on the side the mount is on, never across the whole turn.
+AzimuthRange reading_range(const AzimuthRange& travel) {
+  constexpr double kOvertravelDeg = 20.0;
+  return AzimuthRange{travel.min_deg - kOvertravelDeg, travel.max_deg + kOvertravelDeg};
 }
 
 }  // namespace
@@ -83,9 +91,10 @@ void StationController::on_encoder_reading(double now_s, double az_deg, double e
   last_encoder_ = AzEl{az_deg, el_deg};
   const CorrectedPosition corrected = apply_corrections(az_deg, el_deg, corrections_);
   // An absolute sensor keeps its turn: only the corrections' (small) shift is added.
-  const double az_mount = config_.az_absolute
-                              ? az_deg + std::remainder(corrected.az_deg - az_deg, 360.0)
-                              : plan_azimuth(az_.mount_deg, corrected.az_deg, config_.az_range);
+  const double az_mount =
+      config_.az_absolute
+          ? az_deg + std::remainder(corrected.az_deg - az_deg, 360.0)
+          : plan_azimuth(az_.mount_deg, corrected.az_deg, reading_range(config_.az_range));
   const double el_mount = corrected.el_deg > 270.0 ? corrected.el_deg - 360.0 : corrected.el_deg;
   if (az_.supervisor.on_reading(now_s, az_mount)) az_.mount_deg = az_mount;
   if (el_.supervisor.on_reading(now_s, el_mount)) el_.mount_deg = el_mount;
@@ -117,7 +126,12 @@ Duties StationController::tick(double now_s, const Demand& demand, const AzEl& r
   std::optional<double> az_target;
   std::optional<double> el_target;
   AzEl rate = rate_deg_s;
-  if (demand.position) {
+  if (demand.position && demand.mount) {
+    // A planned mount position: only ever clamped into the travel, as a last line of defence.
+    az_target =
+        std::clamp(demand.position->az_deg, config_.az_range.min_deg, config_.az_range.max_deg);
+    el_target = plan_elevation(demand.position->el_deg, config_.el_range);
+  } else if (demand.position) {
     az_target = plan_azimuth(az_.mount_deg, demand.position->az_deg, config_.az_range);
     el_target = plan_elevation(demand.position->el_deg, config_.el_range);
   } else if (demand.jog) {
@@ -219,6 +233,8 @@ Duties StationController::set_limits(const LimitSwitches& limits) {
 
 std::optional<AzEl> StationController::sky_position(double now_s) const {
   if (faulted() || az_.supervisor.stale(now_s) || el_.supervisor.stale(now_s)) return std::nullopt;
+  // Past the zenith on a flip mount the beam looks the other way: (az + 180, 180 − el).
+  if (el_.mount_deg > 90.0) return AzEl{wrap_360(az_.mount_deg + 180.0), 180.0 - el_.mount_deg};
   return AzEl{wrap_360(az_.mount_deg), el_.mount_deg};
 }
 

@@ -41,6 +41,10 @@ struct Demand {
   std::optional<AzEl> position;  ///< nullopt: do not move (STOP, or holding)
   std::string reason;            ///< for the status line: "tracking Moon", "holding: Moon set"
   std::optional<Jog> jog;        ///< a continuous move (EXT `M`); `position` is then nullopt
+  /// `position` is in mount angles (azimuth counting past 360 on overlap rotators, elevation up to
+  /// 180 on flip mounts), chosen by a pass plan: driven as given, never re-planned to the nearest
+  /// side, so a pass never unwinds mid-way.
+  bool mount = false;
 };
 
 /// Which mode is active and what it asks for. Pure: the tracker feeds it the sky position of the

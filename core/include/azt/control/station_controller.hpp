@@ -107,7 +107,8 @@ class StationController {
   Duties set_limits(const LimitSwitches& limits);
   [[nodiscard]] const LimitSwitches& limits() const { return limits_; }
 
-  /// The sky position (azimuth 0..360), or nullopt while a reading is stale or an axis is faulted.
+  /// The sky position (azimuth 0..360; a flip mount past the zenith is turned back into sky
+  /// terms), or nullopt while a reading is stale or an axis is faulted.
   [[nodiscard]] std::optional<AzEl> sky_position(double now_s) const;
   [[nodiscard]] AxisStatus az() const { return status(az_); }
   [[nodiscard]] AxisStatus el() const { return status(el_); }
