@@ -55,19 +55,7 @@ void print_catalogue(bool json) {
 
 SkySettings settings_from(const SkyOptions& o) {
   SkySettings s;
-  const double alt_m = parse_number_option("--alt", o.alt);
-  if (!o.grid.empty()) {
-    if (!o.lat.empty() || !o.lon.empty())
-      throw UsageError("give either --grid or --lat/--lon, not both");
-    s.observer = observer_from_grid(o.grid, alt_m);
-    s.grid = o.grid;
-  } else {
-    if (o.lat.empty() || o.lon.empty())
-      throw UsageError("the station is needed: --lat and --lon, or --grid");
-    s.observer = observer_from_coordinates(parse_number_option("--lat", o.lat),
-                                           parse_number_option("--lon", o.lon), alt_m);
-    s.grid = grid_of(s.observer);
-  }
+  s.observer = observer_from_options(o.grid, o.lat, o.lon, o.alt, s.grid);
   if (!o.dx_grid.empty()) {
     s.dx = observer_from_grid(o.dx_grid, 0.0);
     s.dx_grid = o.dx_grid;

@@ -19,6 +19,8 @@ Runner add_serve_command(CLI::App& app);
 Runner add_config_command(CLI::App& app);
 Runner add_web_command(CLI::App& app);
 Runner add_seq_sim_command(CLI::App& app);
+Runner add_sat_command(CLI::App& app);
+Runner add_passes_command(CLI::App& app);
 
 /// Parses a finite decimal number given to `option`; throws UsageError otherwise
 /// (CLI11 would accept "nan" and "inf").

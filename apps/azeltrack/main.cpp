@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
   const azt::app::Runner config = azt::app::add_config_command(app);
   const azt::app::Runner web = azt::app::add_web_command(app);
   const azt::app::Runner seq_sim = azt::app::add_seq_sim_command(app);
+  const azt::app::Runner sat = azt::app::add_sat_command(app);
+  const azt::app::Runner passes = azt::app::add_passes_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
@@ -65,6 +67,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("config")) return config();
     if (app.got_subcommand("web")) return web();
     if (app.got_subcommand("seq-sim")) return seq_sim();
+    if (app.got_subcommand("sat")) return sat();
+    if (app.got_subcommand("passes")) return passes();
   } catch (const azt::app::UsageError& e) {
     azt::app::print_error(e.what());
     return azt::app::kExitUsage;

@@ -10,6 +10,7 @@
 #include "azt/astro/erfa_ephemeris.hpp"
 #include "azt/astro/maidenhead.hpp"
 #include "cli_error.hpp"
+#include "commands.hpp"
 #ifdef AZT_HAVE_SWISS
 #include "azt/astro/swiss_ephemeris.hpp"
 #endif
@@ -109,6 +110,25 @@ astro::TimeScales time_scales_at(const astro::UtcInstant& utc, double dut1_s) {
         time->tai_minus_utc_s);
   }
   return *time;
+}
+
+astro::Observer observer_from_options(const std::string& grid, const std::string& lat,
+                                      const std::string& lon, const std::string& alt,
+                                      std::string& grid_out) {
+  const double alt_m = parse_number_option("--alt", alt);
+  if (!grid.empty()) {
+    if (!lat.empty() || !lon.empty())
+      throw UsageError("give either --grid or --lat/--lon, not both");
+    grid_out = grid;
+    return observer_from_grid(grid, alt_m);
+  }
+  if (lat.empty() || lon.empty()) {
+    throw UsageError("the station is needed: --lat and --lon, or --grid");
+  }
+  const astro::Observer o = observer_from_coordinates(parse_number_option("--lat", lat),
+                                                      parse_number_option("--lon", lon), alt_m);
+  grid_out = grid_of(o);
+  return o;
 }
 
 }  // namespace azt::app

@@ -29,6 +29,11 @@ struct SkySettings {
 astro::Observer observer_from_grid(const std::string& grid, double height_m);
 /// Observer from coordinates. Throws UsageError naming the bad value.
 astro::Observer observer_from_coordinates(double lat_deg, double lon_deg, double height_m);
+/// The station from the command line: `grid`, or `lat` and `lon` (texts as typed), at `alt`
+/// metres. Throws UsageError for both, neither, or a bad number. `grid_out` gets its locator.
+astro::Observer observer_from_options(const std::string& grid, const std::string& lat,
+                                      const std::string& lon, const std::string& alt,
+                                      std::string& grid_out);
 /// The station's own locator, 6 characters, for display.
 std::string grid_of(const astro::Observer& observer);
 /// Checks DUT1: throws UsageError beyond ±10 s, warns beyond ±0.9 s.
