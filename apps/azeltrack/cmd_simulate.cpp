@@ -1,4 +1,5 @@
 // `azeltrack simulate`: the real controller against the simulated antenna in virtual time.
+#include <cmath>
 #include <ctime>
 #include <iomanip>
 #include <iostream>
@@ -6,11 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "azt/sim/pass_sim.hpp"
 #include "azt/sim/sky_track.hpp"
 #include "azt/sim/station_sim.hpp"
 #include "cli_error.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
+#include "satellites.hpp"
 #include "sim_config.hpp"
 
 namespace azt::app {
@@ -22,6 +25,7 @@ struct SimulateOptions {
   std::string from;
   std::string hours = "6";
   std::string to_az, to_el;
+  std::string tle, sat;
   bool json = false;
 };
 
@@ -74,11 +78,77 @@ sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double
   return sim::simulate_tracking(c.setup, sim::make_sky_track(track), hours * 3600.0);
 }
 
+/// The next pass of --sat after --from, flown by the real controller on the simulated plant
+/// (issue 7 §3): the mount is the configuration's travel and plant rates.
+int run_pass(const SimConfig& c, const SimulateOptions& o) {
+  if (o.tle.empty() || o.sat.empty()) throw UsageError("pass needs --tle FILE and --sat NAME");
+  const SatelliteCatalogue cat = SatelliteCatalogue::load(o.tle);
+  const Satellite& sat = cat.find(o.sat);
+  astro::UtcInstant from = utc_now();
+  if (!o.from.empty()) {
+    auto parsed = astro::parse_iso8601_utc(o.from);
+    if (!parsed) throw UsageError("--from: " + parsed.error().message);
+    from = *parsed;
+  }
+  const double dut1 = c.station.sky.dut1_s;
+  const astro::Observer& site = c.station.sky.observer;
+  auto passes = find_satellite_passes(sat, from, 48.0, orbit::HorizonMask::flat(0.0), dut1, site);
+  if (!passes) throw std::runtime_error(passes.error().message);
+  const orbit::Pass* next = nullptr;
+  for (const auto& p : passes.value()) {
+    if (!p.starts_before_window && !p.ends_after_window) {
+      next = &p;
+      break;
+    }
+  }
+  if (next == nullptr)
+    throw std::runtime_error("no whole pass of " + sat.elements.label() + " in 48 h");
+  std::vector<track::SkyPoint> sky;
+  const auto seconds = static_cast<long>(std::floor(next->los_s - next->aos_s));
+  for (long i = 0; i <= seconds; ++i) {
+    const double t = next->aos_s + static_cast<double>(i);
+    auto l = look(sat, utc_plus(from, t), dut1, site);
+    if (!l) throw std::runtime_error(l.error().message);
+    sky.push_back({t, l->az_deg, l->el_deg});
+  }
+  track::MountGeometry mount;
+  mount.az = c.setup.az_range;
+  mount.el = c.setup.el_range;
+  mount.max_az_rate_deg_s = c.setup.az_plant.max_rate_deg_s;
+  mount.max_el_rate_deg_s = c.setup.el_plant.max_rate_deg_s;
+  const double prep_s = std::min(600.0, next->aos_s);
+  const std::clock_t cpu_start = std::clock();
+  auto r = sim::simulate_pass(sky, mount, c.setup,
+                              {c.setup.az_plant.start_deg, c.setup.el_plant.start_deg}, prep_s);
+  if (!r) throw std::runtime_error(r.error().message);
+  const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  const auto iso = [&from](double t) { return astro::format_iso8601_utc(utc_plus(from, t)); };
+  const nlohmann::json j{{"scenario", "pass"},
+                         {"sat", sat.elements.label()},
+                         {"aos", iso(next->aos_s)},
+                         {"tca", iso(next->tca_s)},
+                         {"los", iso(next->los_s)},
+                         {"max_el_deg", next->max_el_deg},
+                         {"flip", r->flip},
+                         {"max_error_deg", r->max_error_deg},
+                         {"rms_error_deg", r->rms_error_deg},
+                         {"max_error_beyond_plan_deg", r->max_excess_deg},
+                         {"az_travel_deg", r->az_travel_deg},
+                         {"pass_span_deg", r->pass_span_deg},
+                         {"unwinds", r->unwinds},
+                         {"faults", r->faults},
+                         {"prepositioning_s", prep_s},
+                         {"cpu_s", cpu_s}};
+  std::cout << (o.json ? j.dump() : j.dump(2)) << '\n';
+  return 0;
+}
+
 int run_simulate(const SimulateOptions& o) {
-  if (o.scenario != "moon" && o.scenario != "sun" && o.scenario != "slew") {
-    throw UsageError("--scenario must be moon, sun or slew");
+  if (o.scenario != "moon" && o.scenario != "sun" && o.scenario != "slew" && o.scenario != "pass") {
+    throw UsageError("--scenario must be moon, sun, slew or pass");
   }
   const SimConfig config = sim_config_from(ConfigFile::load(o.config));
+  if (o.scenario == "pass") return run_pass(config, o);
   const double hours = parse_number_option("--hours", o.hours);
   if (hours <= 0.0 || hours > 48.0) throw UsageError("--hours must be in (0, 48]");
   const std::clock_t cpu_start = std::clock();
@@ -108,11 +178,13 @@ Runner add_simulate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Run the real controller against the simulated antenna in virtual time");
   cmd->add_option("--config", opts->config, "Configuration file (default examples/sim.toml)");
-  cmd->add_option("--scenario", opts->scenario, "moon, sun or slew")->required();
+  cmd->add_option("--scenario", opts->scenario, "moon, sun, slew or pass")->required();
   cmd->add_option("--from", opts->from, "Start instant, ISO 8601 UTC (default now)");
   cmd->add_option("--hours", opts->hours, "Tracking duration in simulated hours (default 6)");
   cmd->add_option("--to-az", opts->to_az, "Slew target azimuth, degrees");
   cmd->add_option("--to-el", opts->to_el, "Slew target elevation, degrees");
+  cmd->add_option("--tle", opts->tle, "pass: the element sets (TLE or OMM)");
+  cmd->add_option("--sat", opts->sat, "pass: the satellite, by name or NORAD number");
   cmd->add_flag("--json", opts->json, "One JSON line instead of indented JSON");
   return [opts] { return run_simulate(*opts); };
 }

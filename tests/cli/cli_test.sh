@@ -100,4 +100,38 @@ expect_usage_error "simulate bad encoder bits" simulate --config "$tmp/bits.toml
 printf '[station]\ngrid = "FN06"\n[control]\nwindow_deg = 3\n' >"$tmp/window.toml"
 expect_usage_error "simulate window too large" simulate --config "$tmp/window.toml" --scenario slew --to-az 1 --to-el 1
 
+# Satellites (issue 7): look angles against skyfield's (computed with the same UT1 by
+# tests/conformance/skyfield_sat_oracle.py: az 64.06290598896 el -4.43866229916 range 2899.55251 km
+# range rate 6.7753018521 km/s), Doppler, passes, the pass simulation, and bad input.
+iss=(--tle "$root/tests/data/sat/iss_2024.tle")
+sat_station=(--lat 46.2 --lon -79.4 --alt 300)
+json_check "sat: skyfield's look angles" \
+  "abs(j['az_deg']-64.06290598896)<1e-6 and abs(j['el_deg']+4.43866229916)<1e-6 and abs(j['range_km']-2899.55251)<1e-4 and abs(j['range_rate_km_s']-6.7753018521)<1e-6" \
+  sat iss "${iss[@]}" "${sat_station[@]}" --at 2024-03-01T14:00:00Z --dut1 0.1591558755216056 --json
+json_check "sat: downlink and uplink Doppler" \
+  "abs(j['downlink_hz'] - 437.8e6*(1-j['range_rate_km_s']/299792.458)) < 1e-3 and abs(j['uplink_hz'] - 145.9e6/(1-j['range_rate_km_s']/299792.458)) < 1e-3 and j['downlink_doppler_hz'] < 0" \
+  sat 25544 "${iss[@]}" "${sat_station[@]}" --at 2024-03-01T14:00:00Z --downlink-mhz 437.8 --uplink-mhz 145.9 --json
+json_check "sat: a refused entry does not hide the good one" "j['sat'] == 'ISS (ZARYA)'" \
+  sat "iss (zarya)" --tle "$root/tests/data/sat/mixed.tle" "${sat_station[@]}" --at 2024-03-01T14:00:00Z --json
+"$bin" passes iss "${iss[@]}" "${sat_station[@]}" --from 2024-03-01T00:00:00Z --hours 24 --json >"$tmp/passes" 2>"$tmp/err"
+"$py" - "$tmp/passes" <<'PY' && ok || bad "passes: $(head -c 300 "$tmp/passes") $(cat "$tmp/err")"
+import json, sys
+p = [json.loads(l) for l in open(sys.argv[1])]
+assert len(p) == 7, len(p)
+assert all(x['aos'] < x['tca'] < x['los'] and 0 < x['max_el_deg'] <= 90 for x in p)
+assert all(k in p[0] for k in ['aos', 'tca', 'los', 'max_el_deg', 'aos_az_deg', 'los_az_deg'])
+assert abs(max(x['max_el_deg'] for x in p) - 54.0) < 0.5
+PY
+"$bin" passes iss "${iss[@]}" "${sat_station[@]}" --from 2024-03-01T00:00:00Z --hours 24 --mask 0:10,180:20 --json >"$tmp/masked" 2>/dev/null
+[ "$(wc -l <"$tmp/masked")" -lt 7 ] && ok || bad "a horizon mask did not remove low passes"
+json_check "simulate pass: no unwind, the plant within 2° of the plan" \
+  "j['unwinds'] == 0 and j['faults'] == [] and j['max_error_beyond_plan_deg'] < 2 and j['az_travel_deg'] <= j['pass_span_deg'] + 10" \
+  "${sim[@]}" --scenario pass "${iss[@]}" --sat iss --from 2024-03-01T13:30:00Z --json
+expect_usage_error "sat without --tle" sat iss "${sat_station[@]}"
+expect_usage_error "sat not in the file" sat hubble "${iss[@]}" "${sat_station[@]}"
+grep -q "hubble" "$tmp/err" && ok || bad "unknown satellite error does not name it: $(cat "$tmp/err")"
+expect_usage_error "passes: bad mask" passes iss "${iss[@]}" "${sat_station[@]}" --mask 0:5,x
+expect_usage_error "passes: mask out of order" passes iss "${iss[@]}" "${sat_station[@]}" --mask 90:5,10:5
+expect_usage_error "sat: no station" sat iss "${iss[@]}"
+
 finish
