@@ -117,7 +117,7 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
                                  "geometry",       "corrections", "park", "sim",        "target",
                                  "antenna",        "hamlib",      "hub",  "pwm",        "rotctld",
                                  "serial",         "pstrotator",  "web",  "sequencer",  "gpio",
-                                 "hardware",       "log"})) {
+                                 "hardware",       "satellites",  "log"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }

@@ -103,6 +103,13 @@ const DaemonConsole::Snapshot& DaemonConsole::snapshot() {
 
 json DaemonConsole::target_json() {
   const control::Mode mode = p_.modes.mode();
+  if (mode == control::Mode::Track && following_satellite()) {
+    const json s = p_.satellites->status(p_.unix_s());
+    return {{"name", p_.modes.who()},
+            {"az_deg", s.value("az_deg", json(nullptr))},
+            {"el_deg", s.value("el_deg", json(nullptr))},
+            {"satellite", s}};
+  }
   if (mode == control::Mode::Track && p_.sky.target()) {
     const auto fix = p_.sky.at(p_.unix_s());
     return {{"name", p_.sky.target()->name},
@@ -227,7 +234,11 @@ json DaemonConsole::config() {
 json DaemonConsole::targets() {
   json bands = json::array();
   for (const auto& b : astro::eme_bands()) bands.push_back(std::string(b.name));
-  return {{"targets", snapshot().targets}, {"park", config()["park"]}, {"bands", bands}};
+  return {
+      {"targets", snapshot().targets},
+      {"satellites", p_.satellites != nullptr ? p_.satellites->list(p_.unix_s()) : json::array()},
+      {"park", config()["park"]},
+      {"bands", bands}};
 }
 
 json DaemonConsole::sky(double hours) {
@@ -253,6 +264,7 @@ json DaemonConsole::sky(double hours) {
   }
   out["moon_path"] = moon_path;
   out["sun_path"] = sun_path;
+  out["pass_path"] = following_satellite() ? p_.satellites->pass_track() : json::array();
   return out;
 }
 
@@ -301,7 +313,21 @@ json DaemonConsole::act(const std::string& action, const json& body) {
   throw ApiError(404, "", "no such action: " + action);
 }
 
+bool DaemonConsole::following_satellite() const {
+  return p_.satellites != nullptr && p_.satellites->following() &&
+         p_.modes.who().rfind("sat:", 0) == 0;
+}
+
 json DaemonConsole::act_target(const json& body) {
+  if (body.contains("name") && text(body, "name").rfind("sat:", 0) == 0) {
+    if (p_.satellites == nullptr) throw ApiError(400, "name", "no satellite catalogue");
+    const auto here = p_.antenna.position(p_.monotonic_s());
+    auto r = p_.satellites->follow(text(body, "name").substr(4), p_.unix_s(),
+                                   here ? here->az_mount_deg : 0.0);
+    if (!r) throw ApiError(400, "name", r.error().message);
+    p_.modes.track("sat:" + r.value());
+    return {{"mode", "TRACK"}, {"target", "sat:" + r.value()}};
+  }
   if (body.contains("name")) {
     const std::string name = text(body, "name");
     const auto target = find_station_target(p_.config.sim.station, name);

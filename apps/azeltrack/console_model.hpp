@@ -15,6 +15,7 @@
 #include "azt/control/modes.hpp"
 #include "config_store.hpp"
 #include "daemon_config.hpp"
+#include "satellite_tracker.hpp"
 #include "sky_follower.hpp"
 #include "web_api.hpp"
 
@@ -28,6 +29,7 @@ struct ConsoleParts {
   SkyFollower& sky;
   control::ModeController& modes;
   AntennaBackend& antenna;
+  SatelliteTracker* satellites;         ///< null: no satellite catalogue
   std::function<double()> monotonic_s;  ///< the control loop's clock
   std::function<double()> unix_s;       ///< UTC seconds since 1970
   nlohmann::json servers;               ///< where each server listens, for the state
@@ -59,6 +61,8 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json target_json();
 
   nlohmann::json act_target(const nlohmann::json& body);
+  /// TRACK of a satellite chosen here or in the configuration (not a sky target).
+  [[nodiscard]] bool following_satellite() const;
   nlohmann::json act_correction(const nlohmann::json& body);
   nlohmann::json act_station(const nlohmann::json& body);
   nlohmann::json act_band(const nlohmann::json& body);

@@ -22,6 +22,7 @@
 #include "cli_error.hpp"
 #include "console_server.hpp"
 #include "guarded_antenna.hpp"
+#include "satellite_tracker.hpp"
 #include "sequencer_runner.hpp"
 #include "sky_follower.hpp"
 #include "sky_setup.hpp"
@@ -101,6 +102,8 @@ class Daemon {
                   : nullptr),
         sequencer_(make_sequencer()),
         antenna_(make_guarded(make_backend())),
+        satellites_(satellite_settings(),
+                    [](const std::string& line) { spdlog::info("{}", line); }),
         service_(
             modes_, *antenna_, config_.target_limits(), config_.sim.setup.el_range,
             "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
@@ -158,7 +161,32 @@ class Daemon {
     return guarded;
   }
 
+  SatelliteSettings satellite_settings() const {
+    SatelliteSettings s;
+    if (!config_.satellites.file.empty()) {
+      const std::filesystem::path file(config_.satellites.file);
+      s.file = file.is_absolute()
+                   ? file.string()
+                   : (std::filesystem::path(options_.config_path).parent_path() / file).string();
+    }
+    s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
+    s.dut1_s = config_.sim.station.sky.dut1_s;
+    s.site = config_.sim.station.sky.observer;
+    s.mount.az = config_.sim.setup.az_range;
+    s.mount.el = config_.sim.setup.el_range;
+    s.mount.max_az_rate_deg_s = config_.sim.setup.az_plant.max_rate_deg_s;
+    s.mount.max_el_rate_deg_s = config_.sim.setup.el_plant.max_rate_deg_s;
+    return s;
+  }
+
+  /// Where the mount's azimuth is (for choosing a pass's wrap side), or the configured start.
+  double mount_az() const {
+    const auto p = antenna_->position(now_s());
+    return p ? p->az_mount_deg : config_.sim.setup.az_plant.start_deg;
+  }
+
   int run() {
+    satellites_.poll_file(unix_now_s());
     start_target();
     open_servers();
     signals_.async_wait([this](boost::system::error_code ec, int signal) {
@@ -191,6 +219,12 @@ class Daemon {
 
   void start_target() {
     if (config_.start_target == "stop" || guard_->estop_latched()) return;
+    if (config_.start_target.rfind("sat:", 0) == 0) {
+      auto r = satellites_.follow(config_.start_target.substr(4), unix_now_s(), mount_az());
+      if (!r) throw UsageError("[target].name: " + r.error().message);
+      modes_.track("sat:" + r.value());
+      return;
+    }
     const auto target = sky_.find(config_.start_target);
     if (!target) {
       throw UsageError("[target].name '" + config_.start_target +
@@ -252,7 +286,7 @@ class Daemon {
     }
     console_ = std::make_unique<ConsoleServer>(
         io_,
-        ConsoleParts{config_, store_, *ephemeris_, sky_, modes_, *antenna_,
+        ConsoleParts{config_, store_, *ephemeris_, sky_, modes_, *antenna_, &satellites_,
                      [this] { return now_s(); }, [] { return unix_now_s(); }, servers,
                      [this] {
                        nlohmann::json io = guard_->state();
@@ -284,12 +318,21 @@ class Daemon {
   void tick() {
     const double now = now_s();
     modes_.update(now);
-    std::optional<SkyFix> fix;
-    if (modes_.mode() == control::Mode::Track) {
-      fix = sky_.at(unix_now_s());
+    satellites_.poll_file(unix_now_s());
+    if (modes_.mode() == control::Mode::Track && satellites_.following() &&
+        modes_.who().rfind("sat:", 0) == 0) {
+      control::AzEl rate;
+      const control::Demand demand = satellites_.demand(unix_now_s(), mount_az(), rate);
+      antenna_->tick(now, demand, rate);
+    } else {
+      std::optional<SkyFix> fix;
+      if (modes_.mode() == control::Mode::Track) {
+        fix = sky_.at(unix_now_s());
+      }
+      const control::Demand demand =
+          modes_.demand(fix ? std::optional(fix->position) : std::nullopt);
+      antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
     }
-    const control::Demand demand = modes_.demand(fix ? std::optional(fix->position) : std::nullopt);
-    antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
     report_faults();
     // Mode changes by PC programs and new faults reach open consoles at once.
     std::string summary = std::string(control::to_string(modes_.mode())) + " " + modes_.who() +
@@ -340,6 +383,7 @@ class Daemon {
   std::unique_ptr<SequencerRunner> sequencer_;
   GuardedAntenna* guard_ = nullptr;
   std::unique_ptr<AntennaBackend> antenna_;
+  SatelliteTracker satellites_;
   RateLimitedLog log_;
   StationService service_;
   asio::signal_set signals_;

@@ -6,6 +6,7 @@
 #include "cli_error.hpp"
 #include "config_file.hpp"
 #include "hardware_config.hpp"
+#include "satellites.hpp"
 #include "station_config.hpp"
 
 namespace azt::app {
@@ -278,10 +279,12 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.sim = sim_config_from(file);
   const ConfigSection target = file.section("target", {"name"});
   c.start_target = target.text("name").value_or("moon");
-  if (c.start_target != "stop" && !find_station_target(c.sim.station, c.start_target)) {
+  // "sat:NAME" is looked up in the satellite catalogue when the daemon starts.
+  if (c.start_target != "stop" && c.start_target.rfind("sat:", 0) != 0 &&
+      !find_station_target(c.sim.station, c.start_target)) {
     target.fail("name", "'" + c.start_target +
-                            "' is not a target of this station: sun, moon, a [sky] source, or "
-                            "\"stop\"");
+                            "' is not a target of this station: sun, moon, a [sky] source, "
+                            "sat:NAME, or \"stop\"");
   }
   const ConfigSection antenna = file.section("antenna", {"backend"});
   c.backend = antenna.text("backend").value_or("sim");
@@ -323,6 +326,14 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
       antenna.fail("backend", "is \"hardware\" with a hub sensor but [hub] device is not set");
     }
     check_relay_lines(c, antenna);
+  }
+  const ConfigSection sats = file.section("satellites", {"file", "mask"});
+  c.satellites.file = sats.text("file").value_or("");
+  c.satellites.mask = sats.text("mask").value_or("0");
+  try {
+    (void)parse_horizon_mask("mask", c.satellites.mask);
+  } catch (const UsageError& e) {
+    sats.fail("mask", std::string(e.what()).substr(6));
   }
   c.web = read_web(
       file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));

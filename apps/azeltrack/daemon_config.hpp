@@ -53,6 +53,12 @@ struct GpioConfig {
   [[nodiscard]] bool any_line() const;
 };
 
+/// [satellites]: the element-set catalogue the daemon tracks satellites from (issue 7).
+struct SatellitesConfig {
+  std::string file;        ///< TLE or OMM; relative to the configuration's directory; empty: none
+  std::string mask = "0";  ///< horizon: one elevation, or "AZ:MIN_EL,…" sectors
+};
+
 /// [web]: the console's HTTP server and who may act through it (docs/web-api.md).
 struct WebConfig {
   std::string bind = "127.0.0.1";
@@ -72,6 +78,7 @@ struct DaemonConfig {
   PwmConfig pwm;
   GpioConfig gpio;
   HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
+  SatellitesConfig satellites;
   NetServerConfig rotctld{"127.0.0.1", 4533};
   std::vector<SerialServerConfig> serial;
   NetServerConfig pstrotator{"127.0.0.1", 12000};

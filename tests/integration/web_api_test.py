@@ -73,6 +73,23 @@ def wait_for(what, probe, seconds=10.0):
     return False
 
 
+def tle_with_epoch_now():
+    """An ISS element set whose epoch is now, so its passes are the next hours' (issue 7)."""
+    import datetime
+    def checksum(line):
+        s = sum(int(c) if c.isdigit() else (1 if c == "-" else 0) for c in line[:68])
+        return line[:68] + str(s % 10)
+    now = datetime.datetime.now(datetime.timezone.utc)
+    day = (now - datetime.datetime(now.year, 1, 1, tzinfo=datetime.timezone.utc)).total_seconds()
+    epoch = "%02d%012.8f" % (now.year % 100, day / 86400 + 1)
+    l1 = "1 25544U 98067A   %s  .00016717  00000-0  30119-3 0  999" % epoch
+    l2 = "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110"
+    return "ISS (ZARYA)\n%s\n%s\n" % (checksum(l1), checksum(l2))
+
+
+with open(os.path.join(TMP, "sats.tle"), "w") as f:
+    f.write(tle_with_epoch_now())
+
 with open(CONFIG, "w") as f:
     f.write(f"""schema_version = 1
 # a comment that every save must keep
@@ -90,6 +107,8 @@ port = 0
 port = 0
 [web]
 port = {PORT}
+[satellites]
+file = "sats.tle"
 """)
 subprocess.run([BIN, "web", "password", "--config", CONFIG], input=b"a-long-password\n",
                check=True, capture_output=True)
@@ -151,6 +170,27 @@ try:
         code, r = request("POST", "/api/target", body, TOKEN)
         check(code == 400 and r.get("field") == field, f"target {body}: {code} {r}")
     check(state()["mode"] == "MAN", "a refused target changed the mode")
+
+    # A satellite (issue 7 §3): listed with its next pass, tracked as a target, pre-positioned
+    # to where its planned pass starts.
+    sats = request("GET", "/api/targets")[1]["satellites"]
+    check(len(sats) == 1 and sats[0]["name"] == "ISS (ZARYA)" and "next_pass" in sats[0],
+          f"satellites listed: {sats}")
+    code, r = request("POST", "/api/target", {"name": "sat:iss"}, TOKEN)
+    t = state()["target"]
+    check(code == 200 and t["name"] == "sat:ISS (ZARYA)" and t["satellite"]["phase"] in
+          ("waiting for AOS", "tracking") and t["satellite"]["aos"] < t["satellite"]["los"],
+          f"track sat:iss: {code} {r} {t}")
+    path = request("GET", "/api/sky?hours=1")[1]["pass_path"]
+    check(len(path) > 10, f"the planned pass on the sky plot: {len(path)} points")
+    if t["satellite"]["phase"] == "waiting for AOS" and path:
+        start = path[0]
+        wait_for("the antenna pre-positioned at AOS",
+                 lambda: abs(((state()["antenna"]["az_deg"] - start["az_deg"]) + 180) % 360 - 180)
+                 < 1.0 and abs(state()["antenna"]["el_deg"] - max(start["el_deg"], 0)) < 1.0, 60)
+    code, r = request("POST", "/api/target", {"name": "sat:hubble"}, TOKEN)
+    check(code == 400 and r.get("field") == "name" and "hubble" in r.get("error", "") + str(r),
+          f"unknown satellite: {code} {r}")
     code, _ = request("POST", "/api/stop", None, TOKEN)
     check(code == 200 and state()["mode"] == "STOP", "stop")
 

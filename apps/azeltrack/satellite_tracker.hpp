@@ -1,0 +1,76 @@
+#pragma once
+// A satellite as the daemon's target (issue 7 §2, §3): the next pass is planned as a whole at
+// selection (or after the previous LOS), the antenna is pre-positioned to where the plan starts,
+// and through the pass the planned mount position is the demand (never re-planned to the nearest
+// side mid-pass). The catalogue file is re-read when it changes (replaced atomically by whatever
+// fetches it); a file that no longer parses keeps the old catalogue.
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "azt/control/modes.hpp"
+#include "azt/orbit/passes.hpp"
+#include "azt/track/pass_plan.hpp"
+#include "satellites.hpp"
+
+namespace azt::app {
+
+struct SatelliteSettings {
+  std::string file;  ///< the catalogue (TLE or OMM); empty: no satellites
+  orbit::HorizonMask mask;
+  double dut1_s = 0.0;
+  astro::Observer site;
+  track::MountGeometry mount;
+};
+
+class SatelliteTracker {
+ public:
+  SatelliteTracker(SatelliteSettings settings, std::function<void(const std::string&)> log);
+
+  /// Re-reads the file if its modification time changed (checked every 10 s of `unix_s`).
+  void poll_file(double unix_s);
+  [[nodiscard]] const SatelliteCatalogue& catalogue() const { return catalogue_; }
+
+  /// Starts following a satellite (name or NORAD number); the error names it.
+  Result<std::string> follow(const std::string& name_or_norad, double unix_s, double mount_az_deg);
+  void stop() { following_.reset(); }
+  [[nodiscard]] bool following() const { return following_.has_value(); }
+
+  /// The demand at `unix_s`: the planned mount position (pre-positioning before AOS), or
+  /// nothing to do (hold) when no pass is found. `rate` gets the plan's rate for feed-forward.
+  control::Demand demand(double unix_s, double mount_az_deg, control::AzEl& rate);
+
+  /// {"sat","norad","phase","aos","tca","los","max_el_deg","flip","element_age_days","stale",
+  /// "az_deg","el_deg"} for the followed satellite; null when none.
+  [[nodiscard]] nlohmann::json status(double unix_s) const;
+  /// Every satellite with its position and next pass (computed at most once a minute).
+  nlohmann::json list(double unix_s);
+  /// The followed satellite's planned pass as sky points (for the sky plot), every 10 s.
+  [[nodiscard]] nlohmann::json pass_track() const;
+
+ private:
+  struct Planned {
+    orbit::Pass pass;  ///< times are Unix seconds
+    track::PassPlan plan;
+    std::vector<track::SkyPoint> sky;
+  };
+  void plan_next(double unix_s, double mount_az_deg);
+  [[nodiscard]] const Satellite* current() const;
+
+  SatelliteSettings s_;
+  std::function<void(const std::string&)> log_;
+  SatelliteCatalogue catalogue_;
+  std::optional<double> file_mtime_;
+  double last_poll_s_ = -1e9;
+  std::optional<std::string> following_;  ///< NORAD number of the followed satellite
+  std::optional<Planned> planned_;
+  double next_plan_s_ = -1e9;  ///< when to search again after finding no pass
+  std::string problem_;        ///< why there is no plan (decayed, no pass in 48 h)
+  nlohmann::json list_cache_;
+  double list_at_s_ = -1e9;
+};
+
+}  // namespace azt::app
