@@ -541,6 +541,15 @@
       });
       out.unshift(sv('path', { class: cls, d, id: labels ? 'sky-moon-path' : 'sky-sun-path' }));
     }
+    if (Array.isArray(sky.pass_path) && sky.pass_path.length) {
+      let d = ''; let up = false;
+      for (const p of sky.pass_path) {
+        if (!isNum(p.el_deg) || p.el_deg < 0) { up = false; continue; }
+        const [x, y] = proj(p.az_deg, p.el_deg);
+        d += `${up ? 'L' : 'M'}${x.toFixed(1)} ${y.toFixed(1)}`; up = true;
+      }
+      out.push(sv('path', { class: 'ppath', d, id: 'sky-pass-path' }));
+    }
     skyEls.paths.replaceChildren(...out);
     const srcs = [];
     for (const o of (Array.isArray(sky.now) ? sky.now : [])) {
@@ -627,6 +636,7 @@
       const b = [...box.children].find((x) => x.dataset.name === o.name);
       if (b) { setText(b.lastChild, posText(o)); b.classList.toggle('down', o.el_deg < 0); }
     }
+    renderSatellites();
     const park = (S.targets && S.targets.park) || [];
     for (let n = 1; n <= 4; n++) {
       const p = park.find((x) => x.slot === n);
@@ -635,6 +645,25 @@
       setText(b.lastChild, p ? `az ${deg(p.az_deg, 1)} · el ${deg(p.el_deg, 1)}` : 'not set');
     }
     markActiveTarget();
+  }
+  function renderSatellites() {
+    const sats = (S.targets && Array.isArray(S.targets.satellites)) ? S.targets.satellites : [];
+    const box = $('satellites');
+    const key = JSON.stringify(sats.map((o) => [o.norad, o.name, o.next_pass, o.el_deg && Math.round(o.el_deg)]));
+    if (box.dataset.key === key) return;
+    box.dataset.key = key;
+    if (!sats.length) { box.replaceChildren(h('p', { class: 'dimtxt', text: 'No satellite catalogue ([satellites] file).' })); return; }
+    box.replaceChildren(...sats.map((o) => {
+      const np = o.next_pass;
+      const t = np ? new Date(np.aos) : null;
+      let info = np && t && !Number.isNaN(t.getTime())
+        ? `AOS ${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())} · max ${deg(np.max_el_deg, 0)}` : 'no pass in 24 h';
+      if (isNum(o.el_deg) && o.el_deg >= 0) info = `up now · el ${deg(o.el_deg, 1)}`;
+      const stale = isNum(o.element_age_days) && Math.abs(o.element_age_days) > 7;
+      return h('button', { type: 'button', class: 'tgt sat', 'data-name': `sat:${o.name}`, 'data-norad': o.norad },
+        h('span', { class: 'tn', text: o.name }),
+        h('span', { class: `tp${stale ? ' stale' : ''}`, text: stale ? `${info} · elements ${Math.round(o.element_age_days)} d old` : info }));
+    }));
   }
   function markActiveTarget() {
     const st = S.state || {};
@@ -912,6 +941,10 @@
     // targets
     $('tgt-sun').addEventListener('click', () => track({ name: 'sun' }, 'Sun', $('tgt-sun')));
     $('tgt-moon').addEventListener('click', () => track({ name: 'moon' }, 'Moon', $('tgt-moon')));
+    $('satellites').addEventListener('click', (ev) => {
+      const b = ev.target.closest('button[data-norad]');
+      if (b) track({ name: `sat:${b.dataset.norad}` }, b.firstChild.textContent, b);
+    });
     $('sources').addEventListener('click', (ev) => {
       const b = ev.target.closest('button[data-name]');
       if (b) track({ name: b.dataset.name }, b.dataset.name, b);

@@ -106,8 +106,8 @@ json DaemonConsole::target_json() {
   if (mode == control::Mode::Track && following_satellite()) {
     const json s = p_.satellites->status(p_.unix_s());
     return {{"name", p_.modes.who()},
-            {"az_deg", s.value("az_deg", json(nullptr))},
-            {"el_deg", s.value("el_deg", json(nullptr))},
+            {"az_deg", s.value("aim_az_deg", json(nullptr))},
+            {"el_deg", s.value("aim_el_deg", json(nullptr))},
             {"satellite", s}};
   }
   if (mode == control::Mode::Track && p_.sky.target()) {

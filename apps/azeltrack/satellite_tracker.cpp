@@ -165,6 +165,11 @@ nlohmann::json SatelliteTracker::status(double unix_s) const {
     j["range_rate_km_s"] = l->range_rate_km_s;
   }
   if (planned_) {
+    // Where the antenna is meant to point now: the satellite during the pass, where the pass
+    // starts before it (so the console's pointing error means something while waiting).
+    const track::SkyPoint aim = track::mount_to_sky(planned_->plan.at(unix_s));
+    j["aim_az_deg"] = aim.az_deg;
+    j["aim_el_deg"] = aim.el_deg;
     j["phase"] = unix_s < planned_->pass.aos_s ? "waiting for AOS" : "tracking";
     j["aos"] = iso(planned_->pass.aos_s);
     j["tca"] = iso(planned_->pass.tca_s);

@@ -66,6 +66,18 @@ async function stopDaemon() {
   await exited;
 }
 
+// An ISS element set whose epoch is now, so that its next pass is within hours (issue 7).
+function tleWithEpochNow() {
+  const checksum = (l) => l.slice(0, 68) + String([...l.slice(0, 68)].reduce((a, c) =>
+    a + (c >= '0' && c <= '9' ? Number(c) : c === '-' ? 1 : 0), 0) % 10);
+  const now = new Date();
+  const day = (now - Date.UTC(now.getUTCFullYear(), 0, 1)) / 86400000 + 1;
+  const epoch = `${String(now.getUTCFullYear() % 100).padStart(2, '0')}${day.toFixed(8).padStart(12, '0')}`;
+  const l1 = `1 25544U 98067A   ${epoch}  .00016717  00000-0  30119-3 0  999`;
+  const l2 = '2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110';
+  return `ISS (ZARYA)\n${checksum(l1)}\n${checksum(l2)}\n`;
+}
+
 function writeConfig() {
   // 16-bit encoders and no movement window, so 0.01° steps are visible; a fast plant.
   fs.writeFileSync(config, `schema_version = 1
@@ -90,7 +102,10 @@ port = 0
 port = 0
 [web]
 port = ${port}
+[satellites]
+file = "sats.tle"
 `);
+  fs.writeFileSync(path.join(path.dirname(config), 'sats.tle'), tleWithEpochNow());
   const r = spawnSync(bin, ['web', 'password', '--config', config], { input: `${PASSWORD}\n` });
   if (r.status !== 0) throw new Error(`web password: ${r.stderr}`);
 }
@@ -193,6 +208,22 @@ async function main() {
       if (io.sequencer.outputs.some((o) => o.on)) throw new Error('an output is keyed with no PTT');
       if ((await text(page, '#io-estop')) !== 'not wired') throw new Error(`E-stop: ${await text(page, '#io-estop')}`);
       if ((await page.$$('#io-seq .out.on')).length !== 0) throw new Error('an output is lit');
+    });
+
+    await scenario('a satellite is listed with its next pass, and tracking it plots the pass', page, async () => {
+      await page.click('#nav-targets');
+      await until('the satellite button', () => page.isVisible('#satellites button[data-norad="25544"]'), 5000);
+      const label = await text(page, '#satellites button[data-norad="25544"]');
+      if (!/ISS/.test(label) || !/(AOS|up now)/.test(label)) throw new Error(`satellite button: ${label}`);
+      await page.click('#satellites button[data-norad="25544"]');
+      await until('TRACK of the satellite', async () => (await state()).target.name === 'sat:ISS (ZARYA)', 5000);
+      const sat = (await state()).target.satellite;
+      if (!sat || !sat.aos || !['waiting for AOS', 'tracking'].includes(sat.phase)) {
+        throw new Error(`satellite status: ${JSON.stringify(sat)}`);
+      }
+      await page.click('#nav-sky');
+      await until('the planned pass on the sky plot', async () => (await page.$('#sky-pass-path')) !== null, 8000);
+      await page.click('#nav-main');
     });
 
     await scenario('+0.01° changes the running total and the antenna follows', page, async () => {

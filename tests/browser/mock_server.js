@@ -317,7 +317,12 @@ function targetsObject() {
     const p = topo(radecVec(src[2], src[3], 1e12), jd, st);
     targets.push({ name: src[0], kind: 'source', az_deg: round(p.az, 2), el_deg: round(p.el, 2) });
   }
-  return { targets, park: cfg.park.map((p) => ({ ...p })), bands: BANDS.slice() };
+  // One satellite, as the daemon lists a [satellites] file's entries (the mock does not track it).
+  const aos = new Date(Date.now() + 20 * 60000).toISOString();
+  const los = new Date(Date.now() + 30 * 60000).toISOString();
+  const satellites = [{ name: 'ISS (ZARYA)', norad: '25544', element_age_days: 0.4, az_deg: 300.1, el_deg: -20.5,
+    next_pass: { aos, los, max_el_deg: 41.2 } }];
+  return { targets, satellites, park: cfg.park.map((p) => ({ ...p })), bands: BANDS.slice() };
 }
 
 function skyObject(hours) {
