@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <sstream>
 
 #include "azt/linux/atomic_file.hpp"
-#include "azt/orbit/tle.hpp"
-#include "azt/util/parse_number.hpp"
 #include "cli_error.hpp"
+#include "element_sets.hpp"
 
 namespace azt::app {
 namespace {
@@ -28,13 +26,9 @@ bool all_digits(const std::string& s) {
 SatelliteCatalogue SatelliteCatalogue::parse(std::string_view text, const std::string& source) {
   SatelliteCatalogue c;
   c.source_ = source;
-  orbit::TleParse parsed = orbit::parse_tle_catalogue(text);
-  for (const auto& e : parsed.errors) {
-    std::string line = source;
-    line += ": ";
-    line += e;
-    c.errors_.push_back(std::move(line));
-  }
+  // TLE or OMM (XML, JSON, KVN, CSV): errors already name the source and the entry.
+  ElementSetFile parsed = parse_element_sets(text, source);
+  c.errors_ = std::move(parsed.errors);
   for (auto& e : parsed.sets) {
     auto sgp4 = orbit::Sgp4::make(e);
     if (!sgp4) {
@@ -110,35 +104,6 @@ Result<std::vector<orbit::Pass>> find_satellite_passes(const Satellite& sat,
     return look(sat, utc_plus(from, t), dut1_s, site);
   };
   return orbit::find_passes(at, search);
-}
-
-orbit::HorizonMask parse_horizon_mask(const std::string& option, const std::string& text) {
-  std::vector<std::pair<double, double>> sectors;
-  if (text.find(':') == std::string::npos) {
-    const auto v = parse_finite_double(text);
-    if (!v) throw UsageError(option + ": '" + text + "' is not a number of degrees");
-    sectors.emplace_back(0.0, *v);
-  } else {
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-      const auto colon = item.find(':');
-      const auto az = parse_finite_double(item.substr(0, colon));
-      const auto el =
-          colon == std::string::npos ? std::nullopt : parse_finite_double(item.substr(colon + 1));
-      if (!az || !el) {
-        std::string why = option;
-        why += ": '";
-        why += item;
-        why += "' is not AZ:MIN_EL (e.g. 0:5,90:10)";
-        throw UsageError(why);
-      }
-      sectors.emplace_back(*az, *el);
-    }
-  }
-  auto mask = orbit::HorizonMask::make(std::move(sectors));
-  if (!mask) throw UsageError(option + ": " + mask.error().message);
-  return mask.value();
 }
 
 }  // namespace azt::app

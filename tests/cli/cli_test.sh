@@ -127,6 +127,11 @@ PY
 json_check "simulate pass: no unwind, the plant within 2° of the plan" \
   "j['unwinds'] == 0 and j['faults'] == [] and j['max_error_beyond_plan_deg'] < 2 and j['az_travel_deg'] <= j['pass_span_deg'] + 10" \
   "${sim[@]}" --scenario pass "${iss[@]}" --sat iss --from 2024-03-01T13:30:00Z --json
+for fmt in json xml kvn csv; do
+  json_check "sat from OMM $fmt agrees with the TLE" \
+    "abs(j['az_deg']-162.529305592)<1e-6 and abs(j['el_deg']+41.278899837)<1e-6" \
+    sat 25544 --tle "$root/tests/data/omm/catalogue.$fmt" "${sat_station[@]}" --at 2024-03-02T00:00:00Z --json
+done
 expect_usage_error "sat without --tle" sat iss "${sat_station[@]}"
 expect_usage_error "sat not in the file" sat hubble "${iss[@]}" "${sat_station[@]}"
 grep -q "hubble" "$tmp/err" && ok || bad "unknown satellite error does not name it: $(cat "$tmp/err")"
