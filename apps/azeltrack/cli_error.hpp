@@ -19,4 +19,8 @@ inline constexpr int kExitFailure = 1;
 /// Prints "azeltrack: error: <message>" on stderr.
 void print_error(const std::string& message);
 
+/// Parses a finite decimal number given to `option`; throws UsageError otherwise
+/// (CLI11 would accept "nan" and "inf").
+double parse_number_option(const std::string& option, const std::string& text);
+
 }  // namespace azt::app

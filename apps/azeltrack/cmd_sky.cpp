@@ -150,12 +150,6 @@ int run_sky(const SkyOptions& o) {
 
 }  // namespace
 
-double parse_number_option(const std::string& option, const std::string& text) {
-  auto value = parse_finite_double(text);
-  if (!value) throw UsageError(option + ": '" + text + "' is not a finite decimal number");
-  return *value;
-}
-
 Runner add_sky_command(CLI::App& app) {
   auto opts = std::make_shared<SkyOptions>();
   CLI::App* cmd = app.add_subcommand(

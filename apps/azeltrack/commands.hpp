@@ -4,6 +4,8 @@
 
 #include <functional>
 
+#include "cli_error.hpp"
+
 namespace azt::app {
 
 /// Each subcommand registers its options on `app` and returns what to run after parsing.
@@ -22,8 +24,5 @@ Runner add_seq_sim_command(CLI::App& app);
 Runner add_sat_command(CLI::App& app);
 Runner add_passes_command(CLI::App& app);
 
-/// Parses a finite decimal number given to `option`; throws UsageError otherwise
-/// (CLI11 would accept "nan" and "inf").
-double parse_number_option(const std::string& option, const std::string& text);
 
 }  // namespace azt::app
