@@ -637,6 +637,7 @@
       if (b) { setText(b.lastChild, posText(o)); b.classList.toggle('down', o.el_deg < 0); }
     }
     renderSatellites();
+    renderSpacecraft(list.filter((x) => x.kind === 'spacecraft'));
     const park = (S.targets && S.targets.park) || [];
     for (let n = 1; n <= 4; n++) {
       const p = park.find((x) => x.slot === n);
@@ -645,6 +646,21 @@
       setText(b.lastChild, p ? `az ${deg(p.az_deg, 1)} · el ${deg(p.el_deg, 1)}` : 'not set');
     }
     markActiveTarget();
+  }
+  function renderSpacecraft(crafts) {
+    const box = $('spacecraft');
+    const key = JSON.stringify(crafts.map((o) => [o.name, o.description, o.frequency_mhz, o.error || '',
+      isNum(o.el_deg) ? Math.round(o.el_deg * 10) : null]));
+    if (box.dataset.key === key) return;
+    box.dataset.key = key;
+    if (!crafts.length) { box.replaceChildren(h('p', { class: 'dimtxt', text: 'None configured.' })); return; }
+    box.replaceChildren(...crafts.map((o) => {
+      const f = isNum(o.frequency_mhz) && o.frequency_mhz > 0 ? ` · ${o.frequency_mhz} MHz` : '';
+      const where = o.error ? 'outside its table' : posText(o);
+      return h('button', { type: 'button', class: 'tgt src', 'data-name': o.name, title: o.description || '' },
+        h('span', { class: 'tn', text: o.name }),
+        h('span', { class: 'tp', text: `${o.description ? `${o.description}${f} · ` : f ? `${f.slice(3)} · ` : ''}${where}` }));
+    }));
   }
   function renderSatellites() {
     const sats = (S.targets && Array.isArray(S.targets.satellites)) ? S.targets.satellites : [];
@@ -941,6 +957,10 @@
     // targets
     $('tgt-sun').addEventListener('click', () => track({ name: 'sun' }, 'Sun', $('tgt-sun')));
     $('tgt-moon').addEventListener('click', () => track({ name: 'moon' }, 'Moon', $('tgt-moon')));
+    $('spacecraft').addEventListener('click', (ev) => {
+      const b = ev.target.closest('button[data-name]');
+      if (b) track({ name: b.dataset.name }, b.dataset.name, b);
+    });
     $('satellites').addEventListener('click', (ev) => {
       const b = ev.target.closest('button[data-norad]');
       if (b) track({ name: `sat:${b.dataset.norad}` }, b.firstChild.textContent, b);

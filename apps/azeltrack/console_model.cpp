@@ -44,6 +44,8 @@ std::string kind_name(astro::Target::Kind kind) {
       return "source";
     case astro::Target::Kind::RaDec:
       return "radec";
+    case astro::Target::Kind::Spacecraft:
+      return "spacecraft";
   }
   return "radec";
 }
@@ -70,6 +72,26 @@ const DaemonConsole::Snapshot& DaemonConsole::snapshot() {
     const StationConfig& station = p_.config.sim.station;
     const SkySnapshot sky(p_.ephemeris, station.sky, astro::UtcInstant::from_unix_seconds(now));
     for (const auto& target : station.targets) {
+      if (target.kind == astro::Target::Kind::Spacecraft) {
+        // Outside its table a spacecraft is listed without a position; the others go on.
+        json t{{"name", target.name},
+               {"kind", "spacecraft"},
+               {"description", target.description},
+               {"frequency_mhz", target.frequency_mhz},
+               {"az_deg", nullptr},
+               {"el_deg", nullptr}};
+        try {
+          const TargetReport r = sky.observe(target);
+          t["az_deg"] = r.observation.place.az_deg;
+          t["el_deg"] = r.observation.el_deg;
+          t["range_km"] = r.observation.place.distance_km.value_or(0.0);
+          t["range_rate_km_s"] = r.observation.place.range_rate_km_s.value_or(0.0);
+        } catch (const UsageError& e) {
+          t["error"] = e.what();
+        }
+        s.targets.push_back(std::move(t));
+        continue;
+      }
       const TargetReport r = sky.observe(target);
       json t{{"name", target.name},
              {"kind", kind_name(target.kind)},

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 
 #include "azt/astro/bands.hpp"
 #include "azt/astro/maidenhead.hpp"
 #include "azt/astro/target.hpp"
+#include "azt/linux/atomic_file.hpp"
 #include "cli_error.hpp"
 #include "config_file.hpp"
 
@@ -94,6 +96,31 @@ void read_atmosphere(const ConfigSection& s, SkySettings& sky) {
   sky.atmosphere = *atm;
 }
 
+/// [[spacecraft]]: bodies from JPL Horizons vector tables (seed 000's DSN page). A file that does
+/// not read or parse is refused here, naming the entry, rather than found missing mid-session.
+void read_spacecraft(const ConfigFile& file, StationConfig& config) {
+  for (const ConfigSection& s :
+       file.section_array("spacecraft", {"name", "file", "description", "frequency_mhz"})) {
+    const auto name = s.text("name");
+    const auto path = s.text("file");
+    if (!name || name->empty()) s.fail("name", "is required");
+    if (!path || path->empty()) s.fail("file", "is required: a JPL Horizons vector table");
+    const std::filesystem::path where =
+        std::filesystem::path(*path).is_absolute()
+            ? std::filesystem::path(*path)
+            : std::filesystem::path(file.path()).parent_path() / *path;
+    auto text = linux_os::read_file(where.string());
+    if (!text) s.fail("file", text.error().message);
+    auto table = astro::SpacecraftTable::parse_horizons_vectors(text.value());
+    if (!table) s.fail("file", where.string() + ": " + table.error().message);
+    const double f = s.number("frequency_mhz").value_or(0.0);
+    if (f < 0.0 || f > 1e6) s.fail("frequency_mhz", "must be 0 to 1e6 MHz");
+    config.targets.push_back(astro::Target::spacecraft(
+        *name, std::make_shared<const astro::SpacecraftTable>(std::move(table).value()),
+        s.text("description").value_or(""), f));
+  }
+}
+
 }  // namespace
 
 StationConfig station_config_from(const ConfigFile& file) {
@@ -103,6 +130,7 @@ StationConfig station_config_from(const ConfigFile& file) {
   read_atmosphere(file.section("atmosphere", {"refraction", "pressure_hpa", "temperature_c",
                                               "relative_humidity"}),
                   config.sky);
+  read_spacecraft(file, config);
   return config;
 }
 

@@ -17,6 +17,7 @@ import urllib.error
 import urllib.request
 
 BIN = os.path.realpath(sys.argv[1])
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
 TMP = tempfile.mkdtemp(prefix="azt-web-api-")
 CONFIG = os.path.join(TMP, "azeltrack.toml")
 passed = 0
@@ -109,6 +110,11 @@ port = 0
 port = {PORT}
 [satellites]
 file = "sats.tle"
+[[spacecraft]]
+name = "Moon table"
+file = "{os.path.join(ROOT, "tests/data/horizons/moon_vectors_csv_kms.txt")}"
+description = "a Horizons vector table (March 2025: outside its span now)"
+frequency_mhz = 8420.0
 """)
 subprocess.run([BIN, "web", "password", "--config", CONFIG], input=b"a-long-password\n",
                check=True, capture_output=True)
@@ -170,6 +176,13 @@ try:
         code, r = request("POST", "/api/target", body, TOKEN)
         check(code == 400 and r.get("field") == field, f"target {body}: {code} {r}")
     check(state()["mode"] == "MAN", "a refused target changed the mode")
+
+    # A spacecraft from a Horizons table (issue 7 §1): listed with its description and frequency;
+    # outside its table's span it has no position, and the daemon carries on.
+    crafts = [t for t in request("GET", "/api/targets")[1]["targets"] if t["kind"] == "spacecraft"]
+    check(len(crafts) == 1 and crafts[0]["frequency_mhz"] == 8420.0 and "Horizons" in
+          crafts[0]["description"] and crafts[0]["az_deg"] is None and "error" in crafts[0],
+          f"spacecraft listed: {crafts}")
 
     # A satellite (issue 7 §3): listed with its next pass, tracked as a target, pre-positioned
     # to where its planned pass starts.

@@ -215,6 +215,28 @@ Result<Place> observe_moon(const Ephemeris& ephemeris, const Epoch& epoch, const
   return place_of_body(epoch, st, r, vel_x);
 }
 
+Result<Place> observe_tabulated(const SpacecraftTable& table, const Epoch& epoch,
+                                const Station& st) {
+  const PosVel& earth = epoch.earth_sun.earth_bary;
+  const Vec3 sun_to_earth = sub(earth.pos_au, epoch.earth_sun.sun_bary.pos_au);
+  const Vec3 earth_accel = kepler_acceleration(sun_to_earth, kGmSun);
+  const Vec3 obs{st.eb[0], st.eb[1], st.eb[2]};
+  // As for the Moon, in the barycentric frame; the body's own state comes from the table at the
+  // emission time (a deep-space probe's light time is minutes to hours: no extrapolation).
+  double tau_d = 0.0;
+  Vec3 r{};
+  Vec3 vel_x{};
+  for (int it = 0; it <= kLightTimeIterations; ++it) {
+    const PosVel e = extrapolate_back(earth, earth_accel, tau_d);
+    auto b = table.at(JulianDate{epoch.time.tt.jd1, epoch.time.tt.jd2 - tau_d});
+    if (!b) return b.error();
+    r = sub(add(e.pos_au, b->pos_au), obs);
+    vel_x = add(e.vel_au_d, b->vel_au_d);
+    tau_d = norm(r) / kSpeedOfLightAuPerDay;
+  }
+  return place_of_body(epoch, st, r, vel_x);
+}
+
 Place observe_icrs(const Epoch& epoch, const Station& st, double ra_deg, double dec_deg) {
   eraASTROM astrom = to_astrom(st);
   double ri = 0, di = 0;

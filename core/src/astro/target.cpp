@@ -35,11 +35,13 @@ Result<Target> parse_radec(std::string_view spec, std::string_view original) {
 
 }  // namespace
 
-Target Target::sun() { return Target{Kind::Sun, "Sun", nullptr, 0.0, 0.0}; }
-Target Target::moon() { return Target{Kind::Moon, "Moon", nullptr, 0.0, 0.0}; }
+Target Target::sun() { return Target{Kind::Sun, "Sun", nullptr, 0.0, 0.0, nullptr, "", 0.0}; }
+Target Target::moon() { return Target{Kind::Moon, "Moon", nullptr, 0.0, 0.0, nullptr, "", 0.0}; }
 
 Target Target::radio_source(const RadioSource& source) {
-  return Target{Kind::Source, std::string(source.name), &source, source.ra_deg, source.dec_deg};
+  return Target{
+      Kind::Source, std::string(source.name), &source, source.ra_deg, source.dec_deg, nullptr, "",
+      0.0};
 }
 
 Result<Target> Target::radec(double ra_deg, double dec_deg) {
@@ -49,7 +51,8 @@ Result<Target> Target::radec(double ra_deg, double dec_deg) {
   if (!std::isfinite(dec_deg) || dec_deg < -90.0 || dec_deg > 90.0) {
     return fail("Dec must be in [-90, 90] degrees");
   }
-  return Target{Kind::RaDec, format_radec_name(ra_deg, dec_deg), nullptr, ra_deg, dec_deg};
+  return Target{
+      Kind::RaDec, format_radec_name(ra_deg, dec_deg), nullptr, ra_deg, dec_deg, nullptr, "", 0.0};
 }
 
 Result<Target> parse_target(std::string_view text) {
@@ -61,6 +64,17 @@ Result<Target> parse_target(std::string_view text) {
   if (const RadioSource* s = find_radio_source(text)) return Target::radio_source(*s);
   return fail("unknown target '" + std::string(text) +
               "' (sun, moon, a catalogue name from 'azeltrack sky --list', or radec:RA,DEC)");
+}
+
+Target Target::spacecraft(std::string name, std::shared_ptr<const SpacecraftTable> table,
+                          std::string description, double frequency_mhz) {
+  Target t;
+  t.kind = Kind::Spacecraft;
+  t.name = std::move(name);
+  t.table = std::move(table);
+  t.description = std::move(description);
+  t.frequency_mhz = frequency_mhz;
+  return t;
 }
 
 Result<Observation> observe(const Target& target, const Ephemeris& ephemeris, const Epoch& epoch,
@@ -80,6 +94,13 @@ Result<Observation> observe(const Target& target, const Ephemeris& ephemeris, co
     case Target::Kind::RaDec:
       place = observe_icrs(epoch, station, target.ra_deg, target.dec_deg);
       break;
+    case Target::Kind::Spacecraft: {
+      if (!target.table) return fail(target.name + ": no ephemeris table");
+      auto craft = observe_tabulated(*target.table, epoch, station);
+      if (!craft) return fail(target.name + ": " + craft.error().message);
+      place = *craft;
+      break;
+    }
   }
   const double el_deg =
       place.el_geometric_deg +

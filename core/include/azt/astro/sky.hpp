@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "azt/astro/ephemeris.hpp"
+#include "azt/astro/horizons.hpp"
 #include "azt/astro/observer.hpp"
 #include "azt/astro/refraction.hpp"
 #include "azt/astro/time_scales.hpp"
@@ -62,6 +63,12 @@ Place observe_sun(const Epoch& epoch, const Station& station);
 /// The Moon's centre, light time (barycentric frame), annual + diurnal aberration.
 Result<Place> observe_moon(const Ephemeris& ephemeris, const Epoch& epoch, const Station& station);
 /// A fixed ICRS direction (J2000 catalogue place): light deflection by the Sun, aberration.
+/// A body from a geocentric table (a JPL Horizons vector file): its state at the emission time
+/// t − τ read from the table, the Earth carried back as for the Moon, so light time, aberration
+/// and parallax are those of the Moon's path. Errors outside the table's span.
+Result<Place> observe_tabulated(const SpacecraftTable& table, const Epoch& epoch,
+                                const Station& station);
+
 Place observe_icrs(const Epoch& epoch, const Station& station, double ra_deg, double dec_deg);
 
 /// Echo delay (s) for a one-way distance.

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 
 #include "azt/astro/catalogue.hpp"
 #include "azt/astro/ephemeris.hpp"
+#include "azt/astro/horizons.hpp"
 #include "azt/astro/refraction.hpp"
 #include "azt/astro/sky.hpp"
 #include "azt/util/result.hpp"
@@ -13,16 +15,23 @@ namespace azt::astro {
 
 /// Something in the sky the antenna can follow.
 struct Target {
-  enum class Kind { Sun, Moon, Source, RaDec };
+  enum class Kind { Sun, Moon, Source, RaDec, Spacecraft };
   Kind kind = Kind::Moon;
   std::string name;                     ///< display name
   const RadioSource* source = nullptr;  ///< for Kind::Source
   double ra_deg = 0.0;                  ///< ICRS/J2000, for Source and RaDec
   double dec_deg = 0.0;
+  /// Kind::Spacecraft: geocentric states from a JPL Horizons vector table (seed 000's DSN page),
+  /// shared by every copy of the target; what it is, and the frequency to listen on.
+  std::shared_ptr<const SpacecraftTable> table;
+  std::string description;
+  double frequency_mhz = 0.0;
 
   static Target sun();
   static Target moon();
   static Target radio_source(const RadioSource& source);
+  static Target spacecraft(std::string name, std::shared_ptr<const SpacecraftTable> table,
+                           std::string description, double frequency_mhz);
   /// RA in [0, 360), Dec in [−90, 90]; error otherwise.
   static Result<Target> radec(double ra_deg, double dec_deg);
 };
