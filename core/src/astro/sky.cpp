@@ -191,50 +191,49 @@ Place observe_sun(const Epoch& epoch, const Station& st) {
   return place_of_body(epoch, st, sub(emitted.pos_au, obs), emitted.vel_au_d);
 }
 
-Result<Place> observe_moon(const Ephemeris& ephemeris, const Epoch& epoch, const Station& st) {
-  auto moon = ephemeris.moon_geocentric(epoch.time.tt);
-  if (!moon) return moon.error();
+namespace {
+
+/// A body given geocentrically, observed with light time in the barycentric frame:
+/// X(t−τ) = E(t−τ) + B(t−τ), the Earth carried back from t, the body from `body_at(τ)`. Doing it
+/// geocentrically would drop the Earth's own motion during τ (~39 km for the Moon, 20″).
+template <typename BodyAt>
+Result<Place> observe_geocentric(const Epoch& epoch, const Station& st, const BodyAt& body_at) {
   const PosVel& earth = epoch.earth_sun.earth_bary;
   const Vec3 sun_to_earth = sub(earth.pos_au, epoch.earth_sun.sun_bary.pos_au);
   const Vec3 earth_accel = kepler_acceleration(sun_to_earth, kGmSun);
-  const Vec3 moon_accel = kepler_acceleration(moon->pos_au, kGmEarthMoon);
   const Vec3 obs{st.eb[0], st.eb[1], st.eb[2]};
-
-  // Light time in the barycentric frame: X(t−τ) = E(t−τ) + M(t−τ), both carried back from t.
-  // Doing it geocentrically would drop the Earth's own motion during τ (~39 km, 20″).
   double tau_d = 0.0;
   Vec3 r{};
   Vec3 vel_x{};
   for (int it = 0; it <= kLightTimeIterations; ++it) {
     const PosVel e = extrapolate_back(earth, earth_accel, tau_d);
-    const PosVel m = extrapolate_back(*moon, moon_accel, tau_d);
-    r = sub(add(e.pos_au, m.pos_au), obs);
-    vel_x = add(e.vel_au_d, m.vel_au_d);
-    tau_d = norm(r) / kSpeedOfLightAuPerDay;
-  }
-  return place_of_body(epoch, st, r, vel_x);
-}
-
-Result<Place> observe_tabulated(const SpacecraftTable& table, const Epoch& epoch,
-                                const Station& st) {
-  const PosVel& earth = epoch.earth_sun.earth_bary;
-  const Vec3 sun_to_earth = sub(earth.pos_au, epoch.earth_sun.sun_bary.pos_au);
-  const Vec3 earth_accel = kepler_acceleration(sun_to_earth, kGmSun);
-  const Vec3 obs{st.eb[0], st.eb[1], st.eb[2]};
-  // As for the Moon, in the barycentric frame; the body's own state comes from the table at the
-  // emission time (a deep-space probe's light time is minutes to hours: no extrapolation).
-  double tau_d = 0.0;
-  Vec3 r{};
-  Vec3 vel_x{};
-  for (int it = 0; it <= kLightTimeIterations; ++it) {
-    const PosVel e = extrapolate_back(earth, earth_accel, tau_d);
-    auto b = table.at(JulianDate{epoch.time.tt.jd1, epoch.time.tt.jd2 - tau_d});
+    const Result<PosVel> b = body_at(tau_d);
     if (!b) return b.error();
     r = sub(add(e.pos_au, b->pos_au), obs);
     vel_x = add(e.vel_au_d, b->vel_au_d);
     tau_d = norm(r) / kSpeedOfLightAuPerDay;
   }
   return place_of_body(epoch, st, r, vel_x);
+}
+
+}  // namespace
+
+Result<Place> observe_moon(const Ephemeris& ephemeris, const Epoch& epoch, const Station& st) {
+  auto moon = ephemeris.moon_geocentric(epoch.time.tt);
+  if (!moon) return moon.error();
+  const Vec3 moon_accel = kepler_acceleration(moon->pos_au, kGmEarthMoon);
+  return observe_geocentric(epoch, st, [&](double tau_d) -> Result<PosVel> {
+    return extrapolate_back(*moon, moon_accel, tau_d);
+  });
+}
+
+Result<Place> observe_tabulated(const SpacecraftTable& table, const Epoch& epoch,
+                                const Station& st) {
+  // The table is read at the emission time: a deep-space probe's light time is minutes to
+  // hours, too long to extrapolate over.
+  return observe_geocentric(epoch, st, [&](double tau_d) {
+    return table.at(JulianDate{epoch.time.tt.jd1, epoch.time.tt.jd2 - tau_d});
+  });
 }
 
 Place observe_icrs(const Epoch& epoch, const Station& st, double ra_deg, double dec_deg) {

@@ -3,31 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "azt/astro/hermite.hpp"
 #include "azt/util/format_number.hpp"
 
 namespace azt::astro {
 namespace {
 
 constexpr double kMaxNodes = 100000.0;
-
-/// Cubic Hermite interpolation of a state between two nodes `h` days apart, at s ∈ [0, 1]
-/// (position from the basis polynomials, velocity from their derivatives divided by h).
-PosVel hermite(const PosVel& a, const PosVel& b, double h, double s) {
-  const double s2 = s * s;
-  const double s3 = s2 * s;
-  const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s;
-  const double h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-  const double d00 = 6 * s2 - 6 * s, d10 = 3 * s2 - 4 * s + 1;
-  const double d01 = -6 * s2 + 6 * s, d11 = 3 * s2 - 2 * s;
-  PosVel out;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const double pa = a.pos_au[i], pb = b.pos_au[i];
-    const double va = a.vel_au_d[i] * h, vb = b.vel_au_d[i] * h;
-    out.pos_au[i] = h00 * pa + h10 * va + h01 * pb + h11 * vb;
-    out.vel_au_d[i] = (d00 * pa + d10 * va + d01 * pb + d11 * vb) / h;
-  }
-  return out;
-}
 
 }  // namespace
 
