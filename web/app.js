@@ -662,12 +662,25 @@
         h('span', { class: 'tp', text: `${o.description ? `${o.description}${f} · ` : f ? `${f.slice(3)} · ` : ''}${where}` }));
     }));
   }
+  // Every satellite's passes in the next 24 h, merged in time order (the first 15).
+  function renderPasses(sats) {
+    const rows = [];
+    for (const o of sats) for (const p of (Array.isArray(o.passes) ? o.passes : [])) rows.push({ name: o.name, ...p });
+    rows.sort((a, b) => (a.aos < b.aos ? -1 : a.aos > b.aos ? 1 : 0));
+    const hm = (iso) => { const t = new Date(iso); return Number.isNaN(t.getTime()) ? '—' : `${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())}`; };
+    const table = $('sat-passes');
+    table.hidden = rows.length === 0;
+    table.tBodies[0].replaceChildren(...rows.slice(0, 15).map((r) => h('tr', {},
+      h('td', { text: r.name }), h('td', { text: hm(r.aos) }), h('td', { text: deg(r.aos_az_deg, 0) }),
+      h('td', { text: deg(r.max_el_deg, 0) }), h('td', { text: hm(r.los) }), h('td', { text: deg(r.los_az_deg, 0) }))));
+  }
   function renderSatellites() {
     const sats = (S.targets && Array.isArray(S.targets.satellites)) ? S.targets.satellites : [];
     const box = $('satellites');
     const key = JSON.stringify(sats.map((o) => [o.norad, o.name, o.next_pass, o.el_deg && Math.round(o.el_deg)]));
     if (box.dataset.key === key) return;
     box.dataset.key = key;
+    renderPasses(sats);
     if (!sats.length) { box.replaceChildren(h('p', { class: 'dimtxt', text: 'No satellite catalogue ([satellites] file).' })); return; }
     box.replaceChildren(...sats.map((o) => {
       const np = o.next_pass;

@@ -199,12 +199,19 @@ nlohmann::json SatelliteTracker::list(double unix_s) {
       j["error"] = l.error().message;
     }
     auto passes = find_satellite_passes(sat, now, 24.0, s_.mask, s_.dut1_s, s_.site);
-    if (passes && !passes.value().empty()) {
-      const auto& p = passes.value().front();
-      j["next_pass"] = {{"aos", iso(unix_s + p.aos_s)},
-                        {"los", iso(unix_s + p.los_s)},
-                        {"max_el_deg", p.max_el_deg}};
+    nlohmann::json upcoming = nlohmann::json::array();
+    if (passes) {
+      for (const auto& p : passes.value()) {
+        upcoming.push_back({{"aos", iso(unix_s + p.aos_s)},
+                            {"tca", iso(unix_s + p.tca_s)},
+                            {"los", iso(unix_s + p.los_s)},
+                            {"max_el_deg", p.max_el_deg},
+                            {"aos_az_deg", p.aos_az_deg},
+                            {"los_az_deg", p.los_az_deg}});
+      }
     }
+    if (!upcoming.empty()) j["next_pass"] = upcoming.front();
+    j["passes"] = std::move(upcoming);
     out.push_back(std::move(j));
   }
   list_cache_ = out;

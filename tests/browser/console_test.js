@@ -215,6 +215,8 @@ async function main() {
       await until('the satellite button', () => page.isVisible('#satellites button[data-norad="25544"]'), 5000);
       const label = await text(page, '#satellites button[data-norad="25544"]');
       if (!/ISS/.test(label) || !/(AOS|up now)/.test(label)) throw new Error(`satellite button: ${label}`);
+      await until('the upcoming passes', () => page.isVisible('#sat-passes tbody tr'), 5000);
+      if ((await page.$$('#sat-passes tbody tr')).length < 2) throw new Error('fewer than 2 ISS passes in 24 h');
       await page.click('#satellites button[data-norad="25544"]');
       await until('TRACK of the satellite', async () => (await state()).target.name === 'sat:ISS (ZARYA)', 5000);
       const sat = (await state()).target.satellite;

@@ -321,7 +321,8 @@ function targetsObject() {
   const aos = new Date(Date.now() + 20 * 60000).toISOString();
   const los = new Date(Date.now() + 30 * 60000).toISOString();
   const satellites = [{ name: 'ISS (ZARYA)', norad: '25544', element_age_days: 0.4, az_deg: 300.1, el_deg: -20.5,
-    next_pass: { aos, los, max_el_deg: 41.2 } }];
+    next_pass: { aos, los, max_el_deg: 41.2 },
+    passes: [{ aos, tca: aos, los, max_el_deg: 41.2, aos_az_deg: 210, los_az_deg: 40 }] }];
   return { targets, satellites, park: cfg.park.map((p) => ({ ...p })), bands: BANDS.slice() };
 }
 
