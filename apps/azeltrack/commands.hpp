@@ -24,5 +24,4 @@ Runner add_seq_sim_command(CLI::App& app);
 Runner add_sat_command(CLI::App& app);
 Runner add_passes_command(CLI::App& app);
 
-
 }  // namespace azt::app
