@@ -46,12 +46,8 @@ std::string_view format_name(Format format) {
 
 bool has_kvn_header_line(std::string_view text) {
   constexpr std::string_view kVersionKey = "CCSDS_OMM_VERS";
-  while (!text.empty()) {
-    const std::size_t end = text.find('\n');
-    const std::string_view line = trim(text.substr(0, end));
-    if (line.substr(0, kVersionKey.size()) == kVersionKey) return true;
-    if (end == std::string_view::npos) break;
-    text.remove_prefix(end + 1);
+  for (const std::string_view raw : split_lines(text)) {
+    if (trim(raw).substr(0, kVersionKey.size()) == kVersionKey) return true;
   }
   return false;
 }

@@ -12,6 +12,7 @@
 #include "azt/orbit/elements.hpp"
 #include "azt/orbit/tle.hpp"
 #include "azt/util/result.hpp"
+#include "azt/util/text_lines.hpp"
 
 namespace azt::app {
 
@@ -61,10 +62,10 @@ OmmRecords read_omm_kvn(std::string_view text);
 OmmRecords read_omm_csv(std::string_view text);
 
 /// Blanks, tabs, CR and LF off both ends.
-std::string_view trim(std::string_view text);
+inline std::string_view trim(std::string_view text) { return azt::trim(text, " \t\r\n"); }
 
 /// The lines of a text without their "\n" or "\r\n"; line i is number i + 1.
-std::vector<std::string_view> split_lines(std::string_view text);
+using azt::split_lines;
 
 /// Byte offset → 1-based line number, by binary search over the line starts.
 class LineIndex {

@@ -9,6 +9,7 @@
 #include "azt/astro/hermite.hpp"
 #include "azt/util/format_number.hpp"
 #include "azt/util/parse_number.hpp"
+#include "azt/util/text_lines.hpp"
 
 // Layout of Horizons text output: astroquery's test data (jplhorizons/tests/data/ceres_vectors.txt,
 // ceres_ephemerides.txt) and API v1.2 replies; https://ssd-api.jpl.nasa.gov/doc/horizons.html.
@@ -24,26 +25,6 @@ constexpr double kFullTurnDeg = 360.0;
 constexpr double kHalfTurnDeg = 180.0;
 
 using Lines = std::vector<std::string_view>;
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t");
-  return s.substr(first, last - first + 1);
-}
-
-Lines split_lines(std::string_view text) {
-  Lines lines;
-  while (!text.empty()) {
-    const auto end = text.find('\n');
-    std::string_view line = text.substr(0, end);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    lines.push_back(line);
-    if (end == std::string_view::npos) break;
-    text.remove_prefix(end + 1);
-  }
-  return lines;
-}
 
 std::vector<std::string_view> split_commas(std::string_view line) {
   std::vector<std::string_view> fields;

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "azt/util/parse_number.hpp"
+#include "azt/util/text_lines.hpp"
 
 namespace azt::orbit {
 
@@ -466,13 +467,7 @@ TleParse parse_tle_catalogue(std::string_view text, const TleOptions& options) {
   if (text.substr(0, kUtf8Bom.size()) == kUtf8Bom) text.remove_prefix(kUtf8Bom.size());
   CatalogueReader reader(options);
   int number = 0;
-  while (!text.empty()) {
-    const std::size_t end = text.find('\n');
-    const std::string_view line = text.substr(0, end);
-    reader.feed(line, ++number);
-    if (end == std::string_view::npos) break;
-    text.remove_prefix(end + 1);
-  }
+  for (const std::string_view line : split_lines(text)) reader.feed(line, ++number);
   return reader.finish();
 }
 
