@@ -142,6 +142,15 @@ linux_os::HubSerialConfig read_hub(const ConfigSection& s) {
   return h;
 }
 
+/// The first of `seen` on the same chip and line as `line`, or null.
+const linux_os::GpioLineSpec* same_line(const std::vector<const linux_os::GpioLineSpec*>& seen,
+                                        const linux_os::GpioLineSpec& line) {
+  for (const auto* other : seen) {
+    if (other->chip == line.chip && other->offset == line.offset) return other;
+  }
+  return nullptr;
+}
+
 GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
   GpioConfig g;
   g.chip = s.text("chip").value_or(g.chip);
@@ -173,18 +182,12 @@ GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
   g.estop_latch_file = s.text("estop_latch_file").value_or("");
   // One line, one job: a line named twice would be requested twice (EBUSY) or, worse, wired to two
   // functions.
-  std::vector<const linux_os::GpioLineSpec*> all;
-  for (const auto* l :
-       {&g.estop, &g.az_ccw_limit, &g.az_cw_limit, &g.el_down_limit, &g.el_up_limit, &g.ptt}) {
-    if (*l) all.push_back(&**l);
-  }
-  for (const auto& l : g.sequencer) all.push_back(&l);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      if (all[i]->chip == all[j]->chip && all[i]->offset == all[j]->offset) {
-        s.fail(all[i]->key.substr(7), "is the same line as " + all[j]->key);
-      }
+  std::vector<const linux_os::GpioLineSpec*> seen;
+  for (const auto* l : g.lines()) {
+    if (const auto* other = same_line(seen, *l)) {
+      s.fail(l->key.substr(7), "is the same line as " + other->key);
     }
+    seen.push_back(l);
   }
   return g;
 }
@@ -243,22 +246,13 @@ std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
 
 /// A relay line that is also a [gpio] line (or another relay) would be driven by two functions.
 void check_relay_lines(const DaemonConfig& c, const ConfigSection& antenna) {
-  std::vector<const linux_os::GpioLineSpec*> all;
-  for (const auto* l : {&c.gpio.estop, &c.gpio.az_ccw_limit, &c.gpio.az_cw_limit,
-                        &c.gpio.el_down_limit, &c.gpio.el_up_limit, &c.gpio.ptt}) {
-    if (*l) all.push_back(&**l);
-  }
-  for (const auto& l : c.gpio.sequencer) all.push_back(&l);
+  std::vector<const linux_os::GpioLineSpec*> seen = c.gpio.lines();
   for (const HardwareAxisConfig* a : {&c.hardware.az, &c.hardware.el}) {
-    for (const auto* l :
-         {&a->relay_forward, &a->relay_reverse, &a->relay_power, &a->relay_polarity, &a->enable}) {
-      if (!*l) continue;
-      for (const auto* other : all) {
-        if (other->chip == (*l)->chip && other->offset == (*l)->offset) {
-          antenna.fail("backend", (*l)->key + " is the same line as " + other->key);
-        }
+    for (const auto* l : a->gpio_lines()) {
+      if (const auto* other = same_line(seen, *l)) {
+        antenna.fail("backend", l->key + " is the same line as " + other->key);
       }
-      all.push_back(&**l);
+      seen.push_back(l);
     }
   }
 }
@@ -347,9 +341,13 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   return c;
 }
 
-bool GpioConfig::any_line() const {
-  return estop || az_ccw_limit || az_cw_limit || el_down_limit || el_up_limit || ptt ||
-         !sequencer.empty();
+std::vector<const linux_os::GpioLineSpec*> GpioConfig::lines() const {
+  std::vector<const linux_os::GpioLineSpec*> out;
+  for (const auto* l : {&estop, &az_ccw_limit, &az_cw_limit, &el_down_limit, &el_up_limit, &ptt}) {
+    if (*l) out.push_back(&**l);
+  }
+  for (const auto& l : sequencer) out.push_back(&l);
+  return out;
 }
 
 DaemonConfig load_daemon_config(const std::string& path) {

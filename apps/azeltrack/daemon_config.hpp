@@ -50,7 +50,9 @@ struct GpioConfig {
   std::vector<linux_os::GpioLineSpec> sequencer;  ///< one per [sequencer] output, keying order
   std::string estop_latch_file;  ///< empty: "estop.latched" beside the configuration file
 
-  [[nodiscard]] bool any_line() const;
+  /// Every configured line, inputs first, then the sequencer outputs.
+  [[nodiscard]] std::vector<const linux_os::GpioLineSpec*> lines() const;
+  [[nodiscard]] bool any_line() const { return !lines().empty(); }
 };
 
 /// [satellites]: the element-set catalogue the daemon tracks satellites from (issue 7).

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "azt/control/pot_calibration.hpp"
 #include "azt/control/relay_drive.hpp"
@@ -44,6 +45,15 @@ struct HardwareAxisConfig {
   std::uint8_t adc_address = 0x48;  ///< ads1115
   control::PotInputConfig pot;
 
+  /// The GPIO lines this axis uses (relays, bridge enables).
+  [[nodiscard]] std::vector<const linux_os::GpioLineSpec*> gpio_lines() const {
+    std::vector<const linux_os::GpioLineSpec*> out;
+    for (const auto* l : {&relay_forward, &relay_reverse, &relay_power, &relay_polarity, &enable}) {
+      if (*l) out.push_back(&**l);
+    }
+    return out;
+  }
+
   [[nodiscard]] std::string key(const std::string& field) const {
     return "[hardware." + name + "] " + field;
   }
@@ -57,7 +67,7 @@ struct HardwareConfig {
   HardwareAxisConfig el = default_axis("el");
   [[nodiscard]] bool uses_hub() const { return az.sensor == "hub" || el.sensor == "hub"; }
   [[nodiscard]] bool uses_gpio() const {
-    return az.drive == "relay" || el.drive == "relay" || az.enable || el.enable;
+    return !az.gpio_lines().empty() || !el.gpio_lines().empty();
   }
 };
 
