@@ -103,22 +103,12 @@ int run_pass(const SimConfig& c, const SimulateOptions& o) {
   }
   if (next == nullptr)
     throw std::runtime_error("no whole pass of " + sat.elements.label() + " in 48 h");
-  std::vector<track::SkyPoint> sky;
-  const auto seconds = static_cast<long>(std::floor(next->los_s - next->aos_s));
-  for (long i = 0; i <= seconds; ++i) {
-    const double t = next->aos_s + static_cast<double>(i);
-    auto l = look(sat, utc_plus(from, t), dut1, site);
-    if (!l) throw std::runtime_error(l.error().message);
-    sky.push_back({t, l->az_deg, l->el_deg});
-  }
-  track::MountGeometry mount;
-  mount.az = c.setup.az_range;
-  mount.el = c.setup.el_range;
-  mount.max_az_rate_deg_s = c.setup.az_plant.max_rate_deg_s;
-  mount.max_el_rate_deg_s = c.setup.el_plant.max_rate_deg_s;
+  auto sky = sample_pass(sat, from, *next, dut1, site);
+  if (!sky) throw std::runtime_error(sky.error().message);
+  const track::MountGeometry mount = sim::mount_geometry(c.setup);
   const double prep_s = std::min(600.0, next->aos_s);
   const std::clock_t cpu_start = std::clock();
-  auto r = sim::simulate_pass(sky, mount, c.setup,
+  auto r = sim::simulate_pass(sky.value(), mount, c.setup,
                               {c.setup.az_plant.start_deg, c.setup.el_plant.start_deg}, prep_s);
   if (!r) throw std::runtime_error(r.error().message);
   const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;

@@ -19,6 +19,7 @@
 #include "azt/linux/udp_datagram_server.hpp"
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
+#include "azt/sim/pass_sim.hpp"
 #include "cli_error.hpp"
 #include "console_server.hpp"
 #include "guarded_antenna.hpp"
@@ -172,10 +173,7 @@ class Daemon {
     s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
     s.dut1_s = config_.sim.station.sky.dut1_s;
     s.site = config_.sim.station.sky.observer;
-    s.mount.az = config_.sim.setup.az_range;
-    s.mount.el = config_.sim.setup.el_range;
-    s.mount.max_az_rate_deg_s = config_.sim.setup.az_plant.max_rate_deg_s;
-    s.mount.max_el_rate_deg_s = config_.sim.setup.el_plant.max_rate_deg_s;
+    s.mount = sim::mount_geometry(config_.sim.setup);
     return s;
   }
 

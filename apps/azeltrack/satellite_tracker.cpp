@@ -97,17 +97,13 @@ void SatelliteTracker::plan_next(double unix_s, double mount_az_deg) {
   const orbit::Pass& p = passes.value().front();
   Planned next;
   next.pass = p;
-  // Sampled every second from AOS (or now, mid-pass) to LOS.
-  const auto seconds = static_cast<long>(std::floor(p.los_s - p.aos_s));
-  for (long i = 0; i <= seconds; ++i) {
-    const double t = p.aos_s + static_cast<double>(i);
-    auto l = look(*sat, utc_plus(from, t), s_.dut1_s, s_.site);
-    if (!l) {
-      problem_ = l.error().message;
-      return;
-    }
-    next.sky.push_back({unix_s + t, l->az_deg, l->el_deg});
+  // Sampled every second from AOS (or now, mid-pass) to LOS, in Unix seconds.
+  auto sky = sample_pass(*sat, from, p, s_.dut1_s, s_.site, unix_s);
+  if (!sky) {
+    problem_ = sky.error().message;
+    return;
   }
+  next.sky = std::move(sky).value();
   if (next.sky.size() < 2) {
     problem_ = "the pass is too short to plan";
     return;

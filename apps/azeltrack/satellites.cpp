@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "azt/linux/atomic_file.hpp"
 #include "cli_error.hpp"
@@ -104,6 +105,22 @@ Result<std::vector<orbit::Pass>> find_satellite_passes(const Satellite& sat,
     return look(sat, utc_plus(from, t), dut1_s, site);
   };
   return orbit::find_passes(at, search);
+}
+
+Result<std::vector<track::SkyPoint>> sample_pass(const Satellite& sat,
+                                                 const astro::UtcInstant& from,
+                                                 const orbit::Pass& pass, double dut1_s,
+                                                 const astro::Observer& site,
+                                                 double time_offset_s) {
+  std::vector<track::SkyPoint> sky;
+  const auto seconds = static_cast<long>(std::floor(pass.los_s - pass.aos_s));
+  for (long i = 0; i <= seconds; ++i) {
+    const double t = pass.aos_s + static_cast<double>(i);
+    auto l = look(sat, utc_plus(from, t), dut1_s, site);
+    if (!l) return l.error();
+    sky.push_back({time_offset_s + t, l->az_deg, l->el_deg});
+  }
+  return sky;
 }
 
 }  // namespace azt::app

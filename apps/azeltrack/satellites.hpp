@@ -16,6 +16,7 @@
 #include "azt/orbit/look_angles.hpp"
 #include "azt/orbit/passes.hpp"
 #include "azt/orbit/sgp4.hpp"
+#include "azt/track/pass_plan.hpp"
 #include "azt/util/result.hpp"
 
 namespace azt::app {
@@ -63,6 +64,14 @@ Result<std::vector<orbit::Pass>> find_satellite_passes(const Satellite& sat,
                                                        const astro::UtcInstant& from, double hours,
                                                        const orbit::HorizonMask& mask,
                                                        double dut1_s, const astro::Observer& site);
+
+/// The pass sampled every second from its AOS to its LOS (pass times are seconds after `from`);
+/// each point's time is its pass time plus `time_offset_s`. The error names the satellite.
+Result<std::vector<track::SkyPoint>> sample_pass(const Satellite& sat,
+                                                 const astro::UtcInstant& from,
+                                                 const orbit::Pass& pass, double dut1_s,
+                                                 const astro::Observer& site,
+                                                 double time_offset_s = 0.0);
 
 /// "0:5,90:10,180:3": sector start azimuths and their minimum elevations; or one number for a
 /// flat horizon. Throws UsageError naming `option`.

@@ -64,6 +64,15 @@ std::vector<track::SkyPoint> synthetic_pass(const SyntheticPass& p) {
   return out;
 }
 
+track::MountGeometry mount_geometry(const StationSimSetup& setup) {
+  track::MountGeometry m;
+  m.az = setup.az_range;
+  m.el = setup.el_range;
+  m.max_az_rate_deg_s = setup.az_plant.max_rate_deg_s;
+  m.max_el_rate_deg_s = setup.el_plant.max_rate_deg_s;
+  return m;
+}
+
 Result<PassSimResult> simulate_pass(const std::vector<track::SkyPoint>& sky,
                                     const track::MountGeometry& mount, const StationSimSetup& setup,
                                     control::AzEl start, double prep_s) {

@@ -27,6 +27,9 @@ std::vector<track::SkyPoint> synthetic_pass(const SyntheticPass& p);
 /// The highest elevation of such a pass (closed form).
 double synthetic_max_el_deg(double altitude_km, double offset_deg);
 
+/// The mount a station setup describes: its travel and its plants' full-speed rates.
+track::MountGeometry mount_geometry(const StationSimSetup& setup);
+
 struct PassSimResult {
   bool flip = false;
   double max_error_deg = 0.0;  ///< beam to satellite, from AOS to LOS
