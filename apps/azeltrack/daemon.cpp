@@ -317,6 +317,7 @@ class Daemon {
     const double now = now_s();
     modes_.update(now);
     satellites_.poll_file(unix_now_s());
+    satellites_.refresh_passes(unix_now_s());
     if (modes_.mode() == control::Mode::Track && satellites_.following() &&
         modes_.who().rfind("sat:", 0) == 0) {
       control::AzEl rate;

@@ -51,7 +51,7 @@ void SatelliteTracker::poll_file(double unix_s) {
     return;
   }
   catalogue_ = std::move(fresh);
-  list_at_s_ = -1e9;
+  upcoming_.clear();
   log_("satellites: " + std::to_string(catalogue_.satellites().size()) + " element sets from " +
        s_.file);
   // The followed satellite's new elements give a new plan (not mid-pass: the old one finishes).
@@ -179,12 +179,37 @@ nlohmann::json SatelliteTracker::status(double unix_s) const {
   return j;
 }
 
-nlohmann::json SatelliteTracker::list(double unix_s) {
-  if (unix_s - list_at_s_ < 60.0 && !list_cache_.is_null()) return list_cache_;
-  list_at_s_ = unix_s;
+void SatelliteTracker::refresh_passes(double unix_s) {
+  const auto& sats = catalogue_.satellites();
+  if (sats.empty()) return;
+  if (upcoming_.size() != sats.size()) upcoming_.assign(sats.size(), Upcoming{});
+  next_refresh_ %= sats.size();
+  Upcoming& u = upcoming_[next_refresh_];
+  const Satellite& sat = sats[next_refresh_];
+  next_refresh_ = (next_refresh_ + 1) % sats.size();
+  if (unix_s - u.at_s < 60.0) return;  // each satellite's list at most once a minute
+  u.at_s = unix_s;
+  u.passes = nlohmann::json::array();
+  const astro::UtcInstant now = astro::UtcInstant::from_unix_seconds(unix_s);
+  auto passes = find_satellite_passes(sat, now, 24.0, s_.mask, s_.dut1_s, s_.site);
+  if (!passes) return;
+  for (const auto& p : passes.value()) {
+    u.passes.push_back({{"aos", iso(unix_s + p.aos_s)},
+                        {"tca", iso(unix_s + p.tca_s)},
+                        {"los", iso(unix_s + p.los_s)},
+                        {"max_el_deg", p.max_el_deg},
+                        {"aos_az_deg", p.aos_az_deg},
+                        {"los_az_deg", p.los_az_deg}});
+  }
+}
+
+nlohmann::json SatelliteTracker::list(double unix_s) const {
   nlohmann::json out = nlohmann::json::array();
   const astro::UtcInstant now = astro::UtcInstant::from_unix_seconds(unix_s);
-  for (const auto& sat : catalogue_.satellites()) {
+  const auto& sats = catalogue_.satellites();
+  for (std::size_t i = 0; i < sats.size(); ++i) {
+    const Satellite& sat = sats[i];
+    // Where it is now costs one propagation; the passes come from refresh_passes().
     nlohmann::json j{{"name", sat.elements.label()},
                      {"norad", sat.elements.catalog},
                      {"element_age_days", element_age_days(sat.elements, now)}};
@@ -194,23 +219,13 @@ nlohmann::json SatelliteTracker::list(double unix_s) {
     } else {
       j["error"] = l.error().message;
     }
-    auto passes = find_satellite_passes(sat, now, 24.0, s_.mask, s_.dut1_s, s_.site);
-    nlohmann::json upcoming = nlohmann::json::array();
-    if (passes) {
-      for (const auto& p : passes.value()) {
-        upcoming.push_back({{"aos", iso(unix_s + p.aos_s)},
-                            {"tca", iso(unix_s + p.tca_s)},
-                            {"los", iso(unix_s + p.los_s)},
-                            {"max_el_deg", p.max_el_deg},
-                            {"aos_az_deg", p.aos_az_deg},
-                            {"los_az_deg", p.los_az_deg}});
-      }
-    }
-    if (!upcoming.empty()) j["next_pass"] = upcoming.front();
-    j["passes"] = std::move(upcoming);
+    const nlohmann::json passes = i < upcoming_.size() && !upcoming_[i].passes.is_null()
+                                      ? upcoming_[i].passes
+                                      : nlohmann::json::array();
+    if (!passes.empty()) j["next_pass"] = passes.front();
+    j["passes"] = passes;
     out.push_back(std::move(j));
   }
-  list_cache_ = out;
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -46,8 +47,13 @@ class SatelliteTracker {
   /// {"sat","norad","phase","aos","tca","los","max_el_deg","flip","element_age_days","stale",
   /// "az_deg","el_deg"} for the followed satellite; null when none.
   [[nodiscard]] nlohmann::json status(double unix_s) const;
-  /// Every satellite with its position and next pass (computed at most once a minute).
-  nlohmann::json list(double unix_s);
+  /// Every satellite with its position now and its passes in the next 24 h (as last found by
+  /// refresh_passes()).
+  [[nodiscard]] nlohmann::json list(double unix_s) const;
+  /// Finds the next day's passes of one satellite, the next in turn, each at most once a minute:
+  /// called every control tick, so a large catalogue never stalls the loop (a satellite's 24-hour
+  /// search is about a millisecond; all of a hundred at once would be a tenth of a second).
+  void refresh_passes(double unix_s);
   /// The followed satellite's planned pass as sky points (for the sky plot), every 10 s.
   [[nodiscard]] nlohmann::json pass_track() const;
 
@@ -69,8 +75,12 @@ class SatelliteTracker {
   std::optional<Planned> planned_;
   double next_plan_s_ = -1e9;  ///< when to search again after finding no pass
   std::string problem_;        ///< why there is no plan (decayed, no pass in 48 h)
-  nlohmann::json list_cache_;
-  double list_at_s_ = -1e9;
+  struct Upcoming {
+    double at_s = -1e9;
+    nlohmann::json passes;  ///< null until first found
+  };
+  std::vector<Upcoming> upcoming_;  ///< per catalogue entry, same order
+  std::size_t next_refresh_ = 0;
 };
 
 }  // namespace azt::app
