@@ -1,7 +1,5 @@
 #include "guarded_antenna.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 
 #include "azt/linux/atomic_file.hpp"
