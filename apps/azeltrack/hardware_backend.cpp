@@ -90,7 +90,7 @@ class HardwareBackend final : public AntennaBackend {
 
   void stop_now(double now_s) override {
     station_.emergency_stop(now_s);
-    const control::Duties d = station_.set_limits(station_.limits());
+    const control::Duties d = station_.duties();
     for (std::size_t i = 0; i < drives_.size(); ++i) {
       if (!drives_.at(i)) continue;
       (void)drives_.at(i)->apply(now_s, 0.0, i == 0 ? d.az_setpoint_deg : d.el_setpoint_deg);

@@ -106,6 +106,8 @@ class StationController {
   /// drive towards a tripped switch already at zero.
   Duties set_limits(const LimitSwitches& limits);
   [[nodiscard]] const LimitSwitches& limits() const { return limits_; }
+  /// What the drives should apply now (as the last tick, set_limits() or a stop left it).
+  [[nodiscard]] Duties duties() const;
 
   /// The sky position (azimuth 0..360; a flip mount past the zenith is turned back into sky
   /// terms), or nullopt while a reading is stale or an axis is faulted.
@@ -142,7 +144,6 @@ class StationController {
   double drive_pwm(Axis& axis, double now_s, double target_deg, double rate_deg_s) const;
   double drive_relay(Axis& axis, double now_s, double target_deg, double rate_deg_s) const;
   double drive_setpoint(Axis& axis, double now_s, double target_deg) const;
-  [[nodiscard]] Duties duties() const;
   double drive(Axis& axis, double now_s, std::optional<double> target_deg, double rate_deg_s) const;
   /// A duty of `axis` that runs into a tripped switch.
   [[nodiscard]] bool into_limit(const Axis& axis, double duty) const;
