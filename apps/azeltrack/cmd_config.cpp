@@ -57,8 +57,12 @@ Runner add_config_command(CLI::App& app) {
       return 0;
     }
     ConfigStore store = open_logged(opts->path);
+    const std::size_t logged = store.notices().size();
     auto saved = store.set(opts->key, opts->value);
     if (!saved) throw UsageError(saved.error().message);
+    for (std::size_t i = logged; i < store.notices().size(); ++i) {
+      spdlog::warn("{}", store.notices()[i]);  // a corrupt file set aside while saving
+    }
     return 0;
   };
 }

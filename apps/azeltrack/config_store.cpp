@@ -40,14 +40,10 @@ struct Loaded {
   std::vector<std::string> notices;
 };
 
-/// Reads, falls back to the backup only for corruption, migrates, validates. Throws UsageError.
-Loaded load(const std::string& path) {
-  auto text = linux_os::load_with_backup(path, parses_as_toml);
-  if (!text) throw UsageError("config " + text.error().message);
+/// Parses `text` (read from `name`), migrates in memory, validates. Throws UsageError.
+Loaded parse_loaded(std::string text, const std::string& name, const std::string& path) {
   Loaded out;
-  out.from_backup = text->from_backup;
-  if (out.from_backup) out.notices.push_back("config " + text->warning);
-  const ConfigFile file = ConfigFile::parse(text->text, out.from_backup ? path + ".bak" : path);
+  const ConfigFile file = ConfigFile::parse(text, name);
   out.config = daemon_config_from(file);
   for (const auto& change : file.migration().changes) {
     std::string notice = "config " + path + ": migrated in memory: ";
@@ -57,8 +53,57 @@ Loaded load(const std::string& path) {
   }
   out.root = file.root();
   out.migrated = !file.migration().changes.empty();
-  out.text = std::move(text.value().text);
+  out.text = std::move(text);
   return out;
+}
+
+/// Reads, falls back to the backup only for corruption, migrates, validates. Throws UsageError.
+Loaded load(const std::string& path) {
+  auto text = linux_os::load_with_backup(path, parses_as_toml);
+  if (!text) throw UsageError("config " + text.error().message);
+  const bool from_backup = text->from_backup;
+  std::vector<std::string> notices;
+  if (from_backup) notices.push_back("config " + text->warning);
+  Loaded out = parse_loaded(std::move(text.value().text), from_backup ? path + ".bak" : path, path);
+  out.from_backup = from_backup;
+  notices.insert(notices.end(), out.notices.begin(), out.notices.end());
+  out.notices = std::move(notices);
+  return out;
+}
+
+/// The text a save starts from: the primary as it is now, or, when it is corrupt, the base's
+/// own version if that is known to be the newest good one (ConfigStore's class comment).
+/// Sets `corrupt` when the primary must be set aside.
+Result<std::string> current_text(const ConfigStore::SaveBase& base, bool& corrupt,
+                                 std::vector<std::string>& notices) {
+  const std::string& path = base.path;
+  std::string problem;
+  if (auto primary = linux_os::read_file(path); primary.ok()) {
+    auto valid = parses_as_toml(*primary);
+    if (valid.ok()) return std::move(primary).value();
+    problem = valid.error().message;
+  } else {
+    problem = primary.error().message;
+  }
+  corrupt = true;
+  const std::string head = "'" + path + "' is corrupt (" + problem + ")";
+  if (base.text_from_backup) {
+    return fail(head + " and this program's settings came from '" + path +
+                ".bak', which lacks the last change saved before the corruption; nothing saved: "
+                "repair '" +
+                path + "', or copy '" + path + ".bak' over it to accept losing that change");
+  }
+  // After this program's last save, FILE.bak is the version before it; if FILE.bak is this
+  // program's own version, someone saved after it, and that save is what the corruption lost.
+  if (auto backup = linux_os::read_file(path + ".bak"); backup.ok() && *backup == base.text) {
+    return fail(head +
+                " and another program saved it after this one last did; that save "
+                "cannot be recovered here; nothing saved: repair '" +
+                path + "' or restore it from '" + path + ".bak' (the version before that save)");
+  }
+  notices.push_back("config " + head + ": set aside as '" + path +
+                    ".corrupt'; saved from the version this program last wrote or loaded");
+  return base.text;
 }
 
 /// Splits "park.2.az_deg" at the dots; empty segments are an error.
@@ -135,7 +180,13 @@ ConfigStore ConfigStore::open(const std::string& path) {
   Loaded loaded = load(path);
   ConfigStore store(path, std::move(loaded.root), std::move(loaded.config));
   store.notices_ = std::move(loaded.notices);
-  store.primary_corrupt_ = loaded.from_backup;
+  store.text_ = std::move(loaded.text);
+  store.text_from_backup_ = loaded.from_backup;
+  // Temps of writers killed mid-save (each a full copy of the file): nobody will finish them.
+  if (const std::size_t n = linux_os::remove_stale_temp_files(path); n > 0) {
+    store.notices_.push_back("config " + path + ": removed " + std::to_string(n) +
+                             " temp file(s) left by interrupted saves");
+  }
   return store;
 }
 
@@ -148,40 +199,58 @@ std::string ConfigStore::serialize(const toml::table& root) {
   return out.str();
 }
 
-Result<bool> ConfigStore::update(const std::function<void(toml::table&)>& change) {
-  auto lock = linux_os::FileLock::acquire(path_ + ".lock");
+ConfigStore::SaveBase ConfigStore::save_base() const {
+  return SaveBase{path_, text_, text_from_backup_};
+}
+
+Result<ConfigStore::Saved> ConfigStore::save_change(const SaveBase& base, const Change& change) {
+  const std::string& path = base.path;
+  auto lock = linux_os::FileLock::acquire(path + ".lock", base.lock_wait_s);
   if (!lock) return lock.error();
-  toml::table root;
+  Saved saved;
   bool corrupt = false;
-  std::string text;
-  DaemonConfig config;
+  // Another writer may have saved since we loaded: change what is on disk now.
+  auto text = current_text(base, corrupt, saved.notices);
+  if (!text) return text.error();
   try {
-    // Another writer may have saved since we loaded: change what is on disk now.
-    Loaded current = load(path_);
-    root = std::move(current.root);
-    corrupt = current.from_backup;
-    change(root);
+    Loaded current = parse_loaded(std::move(text).value(), path, path);
+    saved.root = std::move(current.root);
+    change(saved.root);
     // Keep the author's comments and layout where the change allows; a migration rewrites.
     std::optional<std::string> edited;
-    if (!current.migrated) edited = edit_toml_text(current.text, toml::parse(current.text), root);
-    text = edited ? std::move(*edited) : serialize(root);
-    config = daemon_config_from(ConfigFile::parse(text, path_));
+    if (!current.migrated) {
+      edited = edit_toml_text(current.text, toml::parse(current.text), saved.root);
+    }
+    saved.text = edited ? std::move(*edited) : serialize(saved.root);
+    saved.config = daemon_config_from(ConfigFile::parse(saved.text, path));
   } catch (const UsageError& e) {
     return fail(e.what());
   }
   if (corrupt) {
     // Keep the corrupt primary for a post-mortem, and out of the .bak rotation.
     std::error_code ec;
-    std::filesystem::rename(path_, path_ + ".corrupt", ec);
-    if (ec && std::filesystem::exists(path_)) {
-      return fail("cannot set the corrupt '" + path_ + "' aside: " + ec.message());
+    std::filesystem::rename(path, path + ".corrupt", ec);
+    if (ec && std::filesystem::exists(path)) {
+      return fail("cannot set the corrupt '" + path + "' aside: " + ec.message());
     }
   }
-  auto written = linux_os::write_file_atomically(path_, text);
-  if (!written) return written;
-  root_ = std::move(root);
-  config_ = std::move(config);
-  primary_corrupt_ = false;
+  auto written = linux_os::write_file_atomically(path, saved.text);
+  if (!written) return written.error();
+  return saved;
+}
+
+void ConfigStore::commit(Saved saved) {
+  root_ = std::move(saved.root);
+  config_ = std::move(saved.config);
+  text_ = std::move(saved.text);
+  text_from_backup_ = false;
+}
+
+Result<bool> ConfigStore::update(const Change& change) {
+  auto saved = save_change(save_base(), change);
+  if (!saved) return saved.error();
+  for (auto& notice : saved.value().notices) notices_.push_back(std::move(notice));
+  commit(std::move(saved).value());
   return true;
 }
 

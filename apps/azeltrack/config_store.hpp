@@ -27,6 +27,15 @@ namespace azt::app {
 /// keeping the previous version as `FILE.bak`. A failed change leaves the file untouched.
 /// A save keeps the file's comments and layout, replacing only the text of what changed
 /// (config_text_edit.hpp); only a schema migration or an unusual change rewrites it whole.
+///
+/// A corrupt primary found while saving is never silently replaced by the older `.bak` (that
+/// would drop the last save): the save starts from the version this process last wrote or
+/// loaded, and the corrupt file is set aside as `FILE.corrupt`; when that version is known to
+/// be older than the lost file (it came from the backup, or another program saved after it),
+/// the save is refused, naming what would be lost.
+///
+/// The daemon saves off its event loop: save_base() on the loop, save_change() on a worker
+/// (it waits for the lock and fsyncs), commit() back on the loop. update() is the three at once.
 class ConfigStore {
  public:
   /// Throws UsageError (key and line, or both files' problems) when nothing usable is found.
@@ -37,9 +46,32 @@ class ConfigStore {
   /// Things to log loudly: a fallback to the backup, migrations applied in memory.
   [[nodiscard]] const std::vector<std::string>& notices() const { return notices_; }
 
+  using Change = std::function<void(toml::table&)>;
+
   /// Applies `change` to the current document and saves it if the result is valid. `change` may
   /// throw UsageError to refuse. On success config() is the saved configuration.
-  Result<bool> update(const std::function<void(toml::table&)>& change);
+  Result<bool> update(const Change& change);
+
+  /// What a save starts from, copied so that the save may run on another thread.
+  struct SaveBase {
+    std::string path;
+    std::string text;               ///< the version this process last wrote or loaded
+    bool text_from_backup = false;  ///< loaded from FILE.bak because the primary was corrupt
+    double lock_wait_s = 5.0;       ///< how long to wait for another program's lock
+  };
+  /// A save that reached the disk, to commit() on the thread that owns the store.
+  struct Saved {
+    toml::table root;
+    DaemonConfig config;
+    std::string text;
+    std::vector<std::string> notices;  ///< to log: a corrupt primary set aside
+  };
+  [[nodiscard]] SaveBase save_base() const;
+  /// Locks, re-reads, applies `change`, validates and writes. Touches no member of any store:
+  /// safe on a worker thread while the store is read elsewhere.
+  static Result<Saved> save_change(const SaveBase& base, const Change& change);
+  /// Makes `saved` the store's configuration (after save_change succeeded).
+  void commit(Saved saved);
 
   /// `key` is dotted ("control.window_deg", "station.grid"); `value` is a TOML value
   /// ("0.2", "\"FN31\"", "true"); `[[array]]` items are addressed as "park.2.az_deg".
@@ -58,7 +90,8 @@ class ConfigStore {
   toml::table root_;
   DaemonConfig config_;
   std::vector<std::string> notices_;
-  bool primary_corrupt_ = false;  ///< loaded from .bak: set the bad primary aside before saving
+  std::string text_;               ///< the file's text as this process last wrote or loaded it
+  bool text_from_backup_ = false;  ///< text_ came from FILE.bak (the primary was corrupt at open)
 };
 
 }  // namespace azt::app

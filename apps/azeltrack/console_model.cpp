@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <memory>
 
 #include "azt/astro/bands.hpp"
 #include "azt/astro/time_scales.hpp"
@@ -26,6 +29,25 @@ double number(const json& body, const std::string& key) {
 std::optional<double> optional_number(const json& body, const std::string& key) {
   if (!body.contains(key)) return std::nullopt;
   return number(body, key);
+}
+
+/// An integer field in [lo, hi], checked before it is narrowed: 4294967297 is refused, never
+/// taken for 1 (issue 12 row 9). nlohmann keeps large positives as unsigned, so both are read.
+std::int64_t whole_number(const json& body, const std::string& key, std::int64_t lo,
+                          std::int64_t hi, const std::string& message) {
+  const auto it = body.find(key);
+  if (it == body.end()) throw ApiError(400, key, message);
+  if (it->is_number_unsigned()) {
+    const auto v = it->get<std::uint64_t>();
+    if (v > static_cast<std::uint64_t>(hi) || static_cast<std::int64_t>(v) < lo) {
+      throw ApiError(400, key, message);
+    }
+    return static_cast<std::int64_t>(v);
+  }
+  if (!it->is_number_integer()) throw ApiError(400, key, message);
+  const auto v = it->get<std::int64_t>();
+  if (v < lo || v > hi) throw ApiError(400, key, message);
+  return v;
 }
 
 std::string text(const json& body, const std::string& key) {
@@ -290,18 +312,36 @@ json DaemonConsole::sky(double hours) {
   return out;
 }
 
-void DaemonConsole::save(const std::string& field,
-                         const std::function<void(toml::table&)>& change) {
-  auto saved = p_.store.update(change);
-  if (saved) return;
+void DaemonConsole::save(const std::string& field, ConfigStore::Change change,
+                         std::function<json()> apply, ActDone done) {
+  // The lock wait, the writes and the fsyncs run on the worker; the store and the running
+  // station change only back on the loop, in the order the saves were asked for.
+  auto outcome = std::make_shared<Result<ConfigStore::Saved>>(
+      fail("the save was interrupted (see the daemon's log)"));
+  ConfigStore::SaveBase base = p_.store.save_base();
+  p_.offload([base = std::move(base), change = std::move(change),
+              outcome] { *outcome = ConfigStore::save_change(base, change); },
+             [this, field, apply = std::move(apply), done = std::move(done), outcome] {
+               if (!*outcome) {
+                 done(ActResult{json::object(), save_refusal(field, outcome->error().message)});
+                 return;
+               }
+               for (const auto& notice : outcome->value().notices) p_.log(notice);
+               p_.store.commit(std::move(*outcome).value());
+               done(ActResult{apply(), std::nullopt});
+             });
+}
+
+ApiError DaemonConsole::save_refusal(const std::string& field, std::string message) const {
   // "config FILE: line N: [station].grid …" -> "[station].grid …": the page shows it by the field.
-  std::string message = saved.error().message;
   const std::string prefix = "config " + p_.store.path() + ": ";
   if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
   if (message.rfind("line ", 0) == 0 && message.find(": ") != std::string::npos) {
     message.erase(0, message.find(": ") + 2);
   }
-  throw ApiError(400, field, message);
+  // Another program holding the file is "not now", not a bad value.
+  const bool busy = message.find("is held by another program") != std::string::npos;
+  return ApiError(busy ? 503 : 400, field, message);
 }
 
 void DaemonConsole::apply_corrections(const control::PositionCorrections& corrections) {
@@ -309,30 +349,37 @@ void DaemonConsole::apply_corrections(const control::PositionCorrections& correc
   (void)p_.antenna.set_corrections(corrections);
 }
 
-json DaemonConsole::act(const std::string& action, const json& body) {
+void DaemonConsole::act(const std::string& action, const json& body, ActDone done) {
   if (action == "target") {
     json out = act_target(body);
     mark_commander("console");
-    return out;
+    done(ActResult{std::move(out), std::nullopt});
+    return;
   }
   if (action == "stop") {
     p_.modes.stop(true);
     mark_commander("console");
-    return json::object();
+    done(ActResult{});
+    return;
   }
   if (action == "faults/clear") {
     p_.antenna.clear_faults();
-    return json::object();
+    done(ActResult{});
+    return;
   }
-  if (action == "correction") return act_correction(body);
-  if (action == "config/station") return act_station(body);
-  if (action == "config/band") return act_band(body);
-  if (action == "config/dx") return act_dx(body);
-  if (action == "config/offsets") return act_offsets(body);
-  if (action == "config/tilt") return act_tilt(body);
-  if (action == "config/park") return act_park(body);
-  if (action == "config/control") return act_control(body);
-  throw ApiError(404, "", "no such action: " + action);
+  using Act = void (DaemonConsole::*)(const json&, ActDone);
+  static const std::map<std::string, Act, std::less<>> kSaves = {
+      {"correction", &DaemonConsole::act_correction},
+      {"config/station", &DaemonConsole::act_station},
+      {"config/band", &DaemonConsole::act_band},
+      {"config/dx", &DaemonConsole::act_dx},
+      {"config/offsets", &DaemonConsole::act_offsets},
+      {"config/tilt", &DaemonConsole::act_tilt},
+      {"config/park", &DaemonConsole::act_park},
+      {"config/control", &DaemonConsole::act_control}};
+  const auto it = kSaves.find(action);
+  if (it == kSaves.end()) throw ApiError(404, "", "no such action: " + action);
+  (this->*(it->second))(body, std::move(done));
 }
 
 bool DaemonConsole::following_satellite() const {
@@ -369,9 +416,8 @@ json DaemonConsole::act_target(const json& body) {
     return {{"mode", "TRACK"}, {"target", target->name}};
   }
   if (body.contains("park")) {
-    const auto& slot = body["park"];
-    if (!slot.is_number_integer()) throw ApiError(400, "park", "park must be a slot number 1 to 4");
-    auto r = p_.modes.park(slot.get<int>());
+    const auto slot = whole_number(body, "park", 1, 4, "park must be a slot number 1 to 4");
+    auto r = p_.modes.park(static_cast<int>(slot));
     if (!r) throw ApiError(400, "park", r.error().message);
     return {{"mode", "PARK"}};
   }
@@ -389,158 +435,213 @@ json DaemonConsole::act_target(const json& body) {
   throw ApiError(400, "name", "expected name, ra_deg/dec_deg, park or az_deg/el_deg");
 }
 
-json DaemonConsole::act_correction(const json& body) {
-  control::PositionCorrections c = p_.config.sim.setup.corrections;
-  if (body.value("reset", false)) {
-    c.user.reset();
-  } else {
-    const std::string axis = text(body, "axis");
+void DaemonConsole::act_correction(const json& body, ActDone done) {
+  const bool reset = body.value("reset", false);
+  std::string axis;
+  std::int32_t steps = 0;
+  if (!reset) {
+    axis = text(body, "axis");
     if (axis != "az" && axis != "el") throw ApiError(400, "axis", "axis must be \"az\" or \"el\"");
-    const auto& steps = body.contains("steps") ? body["steps"] : json(nullptr);
-    if (!steps.is_number_integer() || std::abs(steps.get<long long>()) > 1000) {
-      throw ApiError(400, "steps",
-                     "steps must be an integer number of 0.01° steps, |steps| ≤ 1000");
-    }
-    const auto n = static_cast<std::int32_t>(steps.get<long long>());
-    const bool whole = axis == "az" ? c.user.nudge_az(n) : c.user.nudge_el(n);
-    if (!whole) throw ApiError(400, "steps", "the correction is at its ±10.00° limit");
+    steps = static_cast<std::int32_t>(
+        whole_number(body, "steps", -1000, 1000,
+                     "steps must be an integer number of 0.01° steps, |steps| ≤ 1000"));
   }
-  save("corrections", [&c](toml::table& root) {
-    toml::table& t = table_at(root, "corrections");
-    t.insert_or_assign("az_user_deg", c.user.az_deg());
-    t.insert_or_assign("el_user_deg", c.user.el_deg());
-  });
-  apply_corrections(c);
-  return {{"az_user_deg", c.user.az_deg()}, {"el_user_deg", c.user.el_deg()}};
+  // The nudge applies to the value in the file now, and only that axis is written: a value set
+  // meanwhile by `azeltrack config set` is never overwritten from this process's memory.
+  save(
+      reset ? "corrections" : "steps",
+      [reset, axis, steps](toml::table& root) {
+        toml::table& t = table_at(root, "corrections");
+        if (reset) {
+          t.insert_or_assign("az_user_deg", 0.0);
+          t.insert_or_assign("el_user_deg", 0.0);
+          return;
+        }
+        auto c = control::UserCorrections::from_deg(t["az_user_deg"].value_or(0.0),
+                                                    t["el_user_deg"].value_or(0.0));
+        if (!c) throw UsageError("[corrections]: " + c.error().message);
+        control::UserCorrections user = c.value();
+        const bool whole = axis == "az" ? user.nudge_az(steps) : user.nudge_el(steps);
+        if (!whole) throw UsageError("the correction is at its ±10.00° limit");
+        t.insert_or_assign(axis + "_user_deg", axis == "az" ? user.az_deg() : user.el_deg());
+      },
+      [this] {
+        const auto& c = p_.store.config().sim.setup.corrections;
+        apply_corrections(c);
+        return json{{"az_user_deg", c.user.az_deg()}, {"el_user_deg", c.user.el_deg()}};
+      },
+      std::move(done));
 }
 
-json DaemonConsole::act_station(const json& body) {
+void DaemonConsole::act_station(const json& body, ActDone done) {
+  ConfigStore::Change change;
   if (body.contains("grid")) {
-    const std::string grid = text(body, "grid");
-    save("grid", [&grid](toml::table& root) {
+    change = [grid = text(body, "grid")](toml::table& root) {
       toml::table& s = table_at(root, "station");
       s.insert_or_assign("grid", grid);
       s.erase("lat_deg");  // the locator's centre becomes the position
       s.erase("lon_deg");
-    });
+    };
   } else {
     const double lat = number(body, "lat_deg");
     const double lon = number(body, "lon_deg");
     const auto alt = optional_number(body, "alt_m");
-    save("lat_deg", [&](toml::table& root) {
+    change = [lat, lon, alt](toml::table& root) {
       toml::table& s = table_at(root, "station");
       s.insert_or_assign("lat_deg", lat);
       s.insert_or_assign("lon_deg", lon);
       if (alt) s.insert_or_assign("alt_m", *alt);
       s.erase("grid");  // derived from the position
-    });
+    };
   }
-  p_.config.sim.station = p_.store.config().sim.station;
-  if (p_.sky.target()) {
-    const auto again = find_station_target(p_.config.sim.station, p_.sky.target()->name);
-    p_.sky.follow(again ? *again : *p_.sky.target());  // recomputed for the new place
-  }
-  snapshot_.unix_s = -1.0;
-  return {{"station", config()["station"]}};
+  save(
+      body.contains("grid") ? "grid" : "lat_deg", std::move(change),
+      [this] {
+        p_.config.sim.station = p_.store.config().sim.station;
+        if (p_.sky.target()) {
+          const auto again = find_station_target(p_.config.sim.station, p_.sky.target()->name);
+          p_.sky.follow(again ? *again : *p_.sky.target());  // recomputed for the new place
+        }
+        snapshot_.unix_s = -1.0;
+        return json{{"station", config()["station"]}};
+      },
+      std::move(done));
 }
 
-json DaemonConsole::act_band(const json& body) {
-  const std::string band = text(body, "band");
-  save("band",
-       [&band](toml::table& root) { table_at(root, "sky").insert_or_assign("band", band); });
-  p_.config.sim.station.band_name = p_.store.config().sim.station.band_name;
-  p_.config.sim.station.sky.freq_mhz = p_.store.config().sim.station.sky.freq_mhz;
-  snapshot_.unix_s = -1.0;
-  return {{"band", p_.config.sim.station.band_name}};
+void DaemonConsole::act_band(const json& body, ActDone done) {
+  save(
+      "band",
+      [band = text(body, "band")](toml::table& root) {
+        table_at(root, "sky").insert_or_assign("band", band);
+      },
+      [this] {
+        p_.config.sim.station.band_name = p_.store.config().sim.station.band_name;
+        p_.config.sim.station.sky.freq_mhz = p_.store.config().sim.station.sky.freq_mhz;
+        snapshot_.unix_s = -1.0;
+        return json{{"band", p_.config.sim.station.band_name}};
+      },
+      std::move(done));
 }
 
-json DaemonConsole::act_dx(const json& body) {
-  const std::string dx = text(body, "dx_grid");
-  save("dx_grid", [&dx](toml::table& root) {
-    toml::table& sky = table_at(root, "sky");
-    if (dx.empty()) {
-      sky.erase("dx_grid");
-    } else {
-      sky.insert_or_assign("dx_grid", dx);
-    }
-  });
-  p_.config.sim.station.sky.dx = p_.store.config().sim.station.sky.dx;
-  p_.config.sim.station.sky.dx_grid = p_.store.config().sim.station.sky.dx_grid;
-  snapshot_.unix_s = -1.0;
-  return {{"dx_grid", p_.config.sim.station.sky.dx_grid}};
+void DaemonConsole::act_dx(const json& body, ActDone done) {
+  save(
+      "dx_grid",
+      [dx = text(body, "dx_grid")](toml::table& root) {
+        toml::table& sky = table_at(root, "sky");
+        if (dx.empty()) {
+          sky.erase("dx_grid");
+        } else {
+          sky.insert_or_assign("dx_grid", dx);
+        }
+      },
+      [this] {
+        p_.config.sim.station.sky.dx = p_.store.config().sim.station.sky.dx;
+        p_.config.sim.station.sky.dx_grid = p_.store.config().sim.station.sky.dx_grid;
+        snapshot_.unix_s = -1.0;
+        return json{{"dx_grid", p_.config.sim.station.sky.dx_grid}};
+      },
+      std::move(done));
 }
 
-json DaemonConsole::act_offsets(const json& body) {
+void DaemonConsole::act_offsets(const json& body, ActDone done) {
   const auto az = optional_number(body, "az_offset_deg");
   const auto el = optional_number(body, "el_offset_deg");
   if (!az && !el) throw ApiError(400, "az_offset_deg", "give az_offset_deg and/or el_offset_deg");
-  save(az ? "az_offset_deg" : "el_offset_deg", [&](toml::table& root) {
-    toml::table& t = table_at(root, "corrections");
-    if (az) t.insert_or_assign("az_offset_deg", *az);
-    if (el) t.insert_or_assign("el_offset_deg", *el);
-  });
-  apply_corrections(p_.store.config().sim.setup.corrections);
-  return json::object();
+  save(
+      az ? "az_offset_deg" : "el_offset_deg",
+      [az, el](toml::table& root) {
+        toml::table& t = table_at(root, "corrections");
+        if (az) t.insert_or_assign("az_offset_deg", *az);
+        if (el) t.insert_or_assign("el_offset_deg", *el);
+      },
+      [this] {
+        apply_corrections(p_.store.config().sim.setup.corrections);
+        return json::object();
+      },
+      std::move(done));
 }
 
-json DaemonConsole::act_tilt(const json& body) {
-  std::array<double, control::TiltTable::kEntries> entries =
-      p_.config.sim.setup.corrections.tilt.entries_deg();
+void DaemonConsole::act_tilt(const json& body, ActDone done) {
+  constexpr std::size_t kEntries = control::TiltTable::kEntries;
+  std::optional<std::vector<double>> whole;
+  std::size_t index = 0;
+  double value = 0.0;
   if (body.contains("tilt_el_deg")) {
     const auto& a = body["tilt_el_deg"];
-    if (!a.is_array() || a.size() != entries.size()) {
+    if (!a.is_array() || a.size() != kEntries) {
       throw ApiError(400, "tilt_el_deg", "tilt_el_deg must be an array of 60 numbers");
     }
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-      if (!a[i].is_number()) throw ApiError(400, "tilt_el_deg", "tilt_el_deg must hold numbers");
-      entries[i] = a[i].get<double>();
+    whole.emplace();
+    for (const auto& e : a) {
+      if (!e.is_number()) throw ApiError(400, "tilt_el_deg", "tilt_el_deg must hold numbers");
+      whole->push_back(e.get<double>());
     }
   } else {
-    const auto& index = body.contains("index") ? body["index"] : json(nullptr);
-    if (!index.is_number_integer() || index.get<long long>() < 0 ||
-        index.get<long long>() >= static_cast<long long>(entries.size())) {
-      throw ApiError(400, "index", "index must be 0 to 59");
-    }
-    entries[static_cast<std::size_t>(index.get<long long>())] = number(body, "value");
+    index = static_cast<std::size_t>(
+        whole_number(body, "index", 0, kEntries - 1, "index must be 0 to 59"));
+    value = number(body, "value");
   }
-  save("tilt_el_deg", [&entries](toml::table& root) {
-    toml::array a;
-    for (const double e : entries) a.push_back(e);
-    table_at(root, "corrections").insert_or_assign("tilt_el_deg", a);
-  });
-  apply_corrections(p_.store.config().sim.setup.corrections);
-  return json::object();
+  // One entry changes one entry of the table in the file now, not the table in memory.
+  save(
+      "tilt_el_deg",
+      [whole, index, value](toml::table& root) {
+        toml::table& t = table_at(root, "corrections");
+        toml::array a;
+        if (whole) {
+          for (const double e : *whole) a.push_back(e);
+        } else {
+          if (const toml::array* old = t["tilt_el_deg"].as_array()) a = *old;
+          if (a.empty()) {
+            for (std::size_t i = 0; i < kEntries; ++i) a.push_back(0.0);
+          }
+          if (index >= a.size())
+            throw UsageError("[corrections] tilt_el_deg has no entry " + std::to_string(index));
+          a.replace(a.cbegin() + static_cast<std::ptrdiff_t>(index), value);
+        }
+        t.insert_or_assign("tilt_el_deg", a);
+      },
+      [this] {
+        apply_corrections(p_.store.config().sim.setup.corrections);
+        return json::object();
+      },
+      std::move(done));
 }
 
-json DaemonConsole::act_park(const json& body) {
-  const auto& slot_json = body.contains("slot") ? body["slot"] : json(nullptr);
-  if (!slot_json.is_number_integer() || slot_json.get<int>() < 1 || slot_json.get<int>() > 4) {
-    throw ApiError(400, "slot", "slot must be 1 to 4");
-  }
-  const auto slot = static_cast<std::size_t>(slot_json.get<int>());
-  auto slots = p_.modes.park_slots();
-  control::ParkSlot& s = slots[slot - 1];
-  if (body.contains("name")) s.name = text(body, "name");
-  if (body.contains("az_deg")) s.position.az_deg = number(body, "az_deg");
-  if (body.contains("el_deg")) s.position.el_deg = number(body, "el_deg");
-  save(body.contains("az_deg") ? "az_deg" : "el_deg", [&slots, slot](toml::table& root) {
-    // Write every slot up to this one, so the numbering in the file is the console's.
-    toml::array a;
-    if (const toml::array* old = root["park"].as_array()) a = *old;
-    while (a.size() < slot) a.push_back(toml::table{});
-    for (std::size_t i = 0; i < slot; ++i) {
-      *a.get(i)->as_table() = toml::table{{"name", slots[i].name},
-                                          {"az_deg", slots[i].position.az_deg},
-                                          {"el_deg", slots[i].position.el_deg}};
-    }
-    root.insert_or_assign("park", a);
-  });
-  p_.config.park = p_.store.config().park;
-  p_.modes.set_park_slots(p_.config.park);
-  return json::object();
+void DaemonConsole::act_park(const json& body, ActDone done) {
+  const auto slot =
+      static_cast<std::size_t>(whole_number(body, "slot", 1, 4, "slot must be 1 to 4"));
+  std::optional<std::string> name;
+  if (body.contains("name")) name = text(body, "name");
+  const auto az = optional_number(body, "az_deg");
+  const auto el = optional_number(body, "el_deg");
+  // Only this slot's given keys change in the file; slots missing before it are written with
+  // what the station runs with, so the file's numbering stays the console's.
+  save(
+      az ? "az_deg" : "el_deg",
+      [slot, name, az, el, running = p_.modes.park_slots()](toml::table& root) {
+        toml::array a;
+        if (const toml::array* old = root["park"].as_array()) a = *old;
+        while (a.size() < slot) {
+          const control::ParkSlot& s = running[a.size()];
+          a.push_back(toml::table{
+              {"name", s.name}, {"az_deg", s.position.az_deg}, {"el_deg", s.position.el_deg}});
+        }
+        toml::table* item = a.get(slot - 1)->as_table();
+        if (item == nullptr) throw UsageError("park." + std::to_string(slot) + " is not a table");
+        if (name) item->insert_or_assign("name", *name);
+        if (az) item->insert_or_assign("az_deg", *az);
+        if (el) item->insert_or_assign("el_deg", *el);
+        root.insert_or_assign("park", a);
+      },
+      [this] {
+        p_.config.park = p_.store.config().park;
+        p_.modes.set_park_slots(p_.config.park);
+        return json::object();
+      },
+      std::move(done));
 }
 
-json DaemonConsole::act_control(const json& body) {
+void DaemonConsole::act_control(const json& body, ActDone done) {
   std::vector<std::string> keys;
   for (const char* key : {"window_deg", "ramp_s", "tracking_speed"}) {
     if (body.contains(key)) keys.emplace_back(key);
@@ -549,17 +650,23 @@ json DaemonConsole::act_control(const json& body) {
   std::vector<double> values;
   values.reserve(keys.size());
   for (const auto& k : keys) values.push_back(number(body, k));
-  save(keys.front(), [&](toml::table& root) {
-    toml::table& t = table_at(root, "control");
-    for (std::size_t i = 0; i < keys.size(); ++i) t.insert_or_assign(keys[i], values[i]);
-  });
-  for (const auto& k : keys) {
-    const std::string name = "control." + k;
-    if (std::find(restart_needed_.begin(), restart_needed_.end(), name) == restart_needed_.end()) {
-      restart_needed_.push_back(name);
-    }
-  }
-  return {{"restart_needed", restart_needed_}};
+  save(
+      keys.front(),
+      [keys, values](toml::table& root) {
+        toml::table& t = table_at(root, "control");
+        for (std::size_t i = 0; i < keys.size(); ++i) t.insert_or_assign(keys[i], values[i]);
+      },
+      [this, keys] {
+        for (const auto& k : keys) {
+          const std::string name = "control." + k;
+          if (std::find(restart_needed_.begin(), restart_needed_.end(), name) ==
+              restart_needed_.end()) {
+            restart_needed_.push_back(name);
+          }
+        }
+        return json{{"restart_needed", restart_needed_}};
+      },
+      std::move(done));
 }
 
 }  // namespace azt::app

@@ -15,6 +15,7 @@
 #include "azt/control/modes.hpp"
 #include "config_store.hpp"
 #include "daemon_config.hpp"
+#include "off_loop.hpp"
 #include "satellite_tracker.hpp"
 #include "sky_follower.hpp"
 #include "web_api.hpp"
@@ -35,6 +36,9 @@ struct ConsoleParts {
   nlohmann::json servers;               ///< where each server listens, for the state
   /// The station's hard inputs and the T/R sequencer ({"estop","limits","sequencer"}).
   std::function<nlohmann::json()> station_io;
+  /// Where saves run: the daemon's worker thread (off the event loop), or run_inline in tests.
+  Offload offload = run_inline;
+  std::function<void(const std::string&)> log = [](const std::string&) {};
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -47,7 +51,7 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json config() override;
   nlohmann::json targets() override;
   nlohmann::json sky(double hours) override;
-  nlohmann::json act(const std::string& action, const nlohmann::json& body) override;
+  void act(const std::string& action, const nlohmann::json& body, ActDone done) override;
 
  private:
   /// Sun, Moon and every target at one whole second, computed once per second.
@@ -63,18 +67,22 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json act_target(const nlohmann::json& body);
   /// TRACK of a satellite chosen here or in the configuration (not a sky target).
   [[nodiscard]] bool following_satellite() const;
-  nlohmann::json act_correction(const nlohmann::json& body);
-  nlohmann::json act_station(const nlohmann::json& body);
-  nlohmann::json act_band(const nlohmann::json& body);
-  nlohmann::json act_dx(const nlohmann::json& body);
-  nlohmann::json act_offsets(const nlohmann::json& body);
-  nlohmann::json act_tilt(const nlohmann::json& body);
-  nlohmann::json act_park(const nlohmann::json& body);
-  nlohmann::json act_control(const nlohmann::json& body);
+  // The settings: each validates the body at once (ApiError), then saves off the loop.
+  void act_correction(const nlohmann::json& body, ActDone done);
+  void act_station(const nlohmann::json& body, ActDone done);
+  void act_band(const nlohmann::json& body, ActDone done);
+  void act_dx(const nlohmann::json& body, ActDone done);
+  void act_offsets(const nlohmann::json& body, ActDone done);
+  void act_tilt(const nlohmann::json& body, ActDone done);
+  void act_park(const nlohmann::json& body, ActDone done);
+  void act_control(const nlohmann::json& body, ActDone done);
 
-  /// Saves `change` through the store; a refusal becomes a 400 naming `field`. On success the
-  /// running configuration is the saved one for the parts applied live.
-  void save(const std::string& field, const std::function<void(toml::table&)>& change);
+  /// Saves `change` through the store off the loop; then, back on the loop, `apply` brings the
+  /// running station to the saved configuration and gives the answer's fields. A refusal is a
+  /// 400 naming `field` (503 while another program holds the file's lock).
+  void save(const std::string& field, ConfigStore::Change change,
+            std::function<nlohmann::json()> apply, ActDone done);
+  [[nodiscard]] ApiError save_refusal(const std::string& field, std::string message) const;
   void apply_corrections(const control::PositionCorrections& corrections);
   /// Remembers that the present mode was chosen by `who`; state() reports it while it lasts.
   void mark_commander(std::string who);

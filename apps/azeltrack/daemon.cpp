@@ -12,11 +12,13 @@
 #include "antenna_backend.hpp"
 #include "axis_io.hpp"
 #include "azt/linux/asio.hpp"
+#include "azt/linux/crash_safe_outputs.hpp"
 #include "azt/linux/libgpiod_lines.hpp"
 #include "azt/linux/serial_protocol_server.hpp"
 #include "azt/linux/systemd_notify.hpp"
 #include "azt/linux/tcp_protocol_server.hpp"
 #include "azt/linux/udp_datagram_server.hpp"
+#include "azt/linux/worker_thread.hpp"
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
 #include "azt/sim/pass_sim.hpp"
@@ -184,6 +186,7 @@ class Daemon {
   }
 
   int run() {
+    linux_os::install_crash_handlers();
     satellites_.poll_file(unix_now_s());
     start_target();
     open_servers();
@@ -205,7 +208,16 @@ class Daemon {
     spdlog::info("serving {} with {}; tick {:.0f} Hz", options_.config_path, antenna_->describe(),
                  1.0 / config_.sim.setup.tick_s);
     notifier_.ready("tracking " + modes_.who());
-    io_.run();
+    if (options_.on_loop_started) asio::post(io_, [this] { options_.on_loop_started(io_); });
+    try {
+      io_.run();
+    } catch (const std::exception& e) {
+      fail_safe(std::string("internal error: ") + e.what());
+      return kExitFailure;
+    } catch (...) {
+      fail_safe("internal error (not a std::exception)");
+      return kExitFailure;
+    }
     spdlog::info("stopped; tick {}", stats_.summary());
     return 0;
   }
@@ -290,7 +302,11 @@ class Daemon {
                        nlohmann::json io = guard_->state();
                        io["sequencer"] = sequencer_->state();
                        return io;
-                     }},
+                     },
+                     [this](std::function<void()> work, std::function<void()> done) {
+                       worker_.post(std::move(work), std::move(done));
+                     },
+                     [](const std::string& line) { spdlog::warn("{}", line); }},
         [](const std::string& line) { spdlog::warn("{}", line); });
     spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
   }
@@ -352,12 +368,23 @@ class Daemon {
     }
   }
 
+  /// An exception escaped a handler: the loop's state is unknown, so the station goes safe and
+  /// the process exits (systemd restarts it, motionless until a client asks).
+  void fail_safe(const std::string& why) {
+    stopping_ = true;
+    antenna_->stop_now(now_s());
+    sequencer_->release_now();
+    spdlog::critical("{}: motors stopped, transmitter released, exiting", why);
+    notifier_.stopping();
+  }
+
   void shutdown(const std::string& why) {
     if (stopping_) return;
     stopping_ = true;
     notifier_.stopping();
     // Motors first, then the servers: nothing may move after this line.
     antenna_->stop_now(now_s());
+    sequencer_->release_now();
     spdlog::info("{}: motors stopped, shutting down", why);
     if (rotctld_) rotctld_->close();
     for (auto& s : serial_) s->close();
@@ -395,6 +422,9 @@ class Daemon {
   std::vector<std::unique_ptr<linux_os::SerialProtocolServer>> serial_;
   std::unique_ptr<linux_os::UdpDatagramServer> pstrotator_;
   std::unique_ptr<ConsoleServer> console_;
+  /// Password checks and configuration saves (off the loop). Declared after what its jobs'
+  /// done halves use, so it is joined before they are destroyed.
+  linux_os::WorkerThread worker_{io_};
   std::vector<std::string> last_faults_;
   std::string last_summary_;  ///< mode, owner and fault count at the last tick
   bool stopping_ = false;

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "azt/orbit/tle.hpp"
+#include "azt/util/valid_utf8.hpp"
 #include "omm_record.hpp"
 
 namespace azt::app {
@@ -128,6 +129,10 @@ ElementSetFile parse_element_sets(std::string_view text, const std::string& sour
   if (file.sets.empty() && file.errors.empty()) {
     file.errors.push_back(from_source(source_name, "no element sets in it"));
   }
+  // Names and messages reach JSON and the log: a Latin-1 name ("ISS Z\xE9RYA") must not throw
+  // there (issue 12 row 2), so every text leaves here as valid UTF-8.
+  for (auto& set : file.sets) set.name = valid_utf8(set.name);
+  for (auto& error : file.errors) error = valid_utf8(error);
   return file;
 }
 

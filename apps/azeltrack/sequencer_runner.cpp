@@ -22,9 +22,13 @@ SequencerRunner::SequencerRunner(boost::asio::io_context& io, sequencer::Sequenc
       now_s_(std::move(now_s)),
       log_(std::move(log)) {}
 
-SequencerRunner::~SequencerRunner() {
+SequencerRunner::~SequencerRunner() { release_now(); }
+
+void SequencerRunner::release_now() {
   // Leaving: de-energize from the top of the chain down (the daemon's exit has no time for the
-  // step delays, but this order is still the least harmful one).
+  // step delays, but this order is still the least harmful one: the PA's key goes first).
+  inhibit_ = true;
+  if (timer_) timer_->timer.cancel();
   for (auto it = outputs_.rbegin(); it != outputs_.rend(); ++it) (void)(*it)->set(false);
 }
 

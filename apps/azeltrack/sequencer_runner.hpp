@@ -39,6 +39,9 @@ class SequencerRunner {
   void set_ptt(bool pressed);
   /// While inhibited (E-stop latched) PTT counts as released.
   void set_inhibit(bool inhibit);
+  /// Every output off now, top of the chain first, without the step delays, and inhibited from
+  /// then on: for the daemon's exit paths (a stop signal, an internal error).
+  void release_now();
   /// Clears a latched output fault; the inhibit it caused lifts with it.
   void clear_fault();
 

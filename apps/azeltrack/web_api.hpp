@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "off_loop.hpp"
 #include "web_auth.hpp"
 #include "web_server.hpp"
 
@@ -29,6 +30,13 @@ class ApiError : public std::runtime_error {
   std::string field_;
 };
 
+/// What an action came to: the fields to add to {"ok": true}, or its refusal.
+struct ActResult {
+  nlohmann::json fields = nlohmann::json::object();
+  std::optional<ApiError> error;
+};
+using ActDone = std::function<void(ActResult)>;
+
 class ConsoleModel {
  public:
   ConsoleModel() = default;
@@ -40,9 +48,10 @@ class ConsoleModel {
   virtual nlohmann::json config() = 0;
   virtual nlohmann::json targets() = 0;
   virtual nlohmann::json sky(double hours) = 0;
-  /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …). Throws ApiError;
-  /// returns fields to add to the {"ok": true} answer.
-  virtual nlohmann::json act(const std::string& action, const nlohmann::json& body) = 0;
+  /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …). Throws ApiError
+  /// for a refusal known at once; otherwise calls `done` exactly once, at once or later (a save
+  /// finishes off the event loop), always on the loop's thread.
+  virtual void act(const std::string& action, const nlohmann::json& body, ActDone done) = 0;
 };
 
 struct WebApiConfig {
@@ -53,18 +62,29 @@ struct WebApiConfig {
 class WebApi {
  public:
   using Clock = std::function<double()>;  ///< monotonic seconds
+  using Respond = WebServer::Respond;
 
-  WebApi(ConsoleModel& model, WebAuth& auth, WebApiConfig config, Clock now)
-      : model_(model), auth_(auth), config_(std::move(config)), now_(std::move(now)) {}
+  WebApi(ConsoleModel& model, WebAuth& auth, WebApiConfig config, Clock now,
+         Offload offload = run_inline)
+      : model_(model),
+        auth_(auth),
+        config_(std::move(config)),
+        now_(std::move(now)),
+        offload_(std::move(offload)) {}
 
-  WebReply handle(const WebRequest& request);
+  /// Answers `request` through `respond`, exactly once: at once, or later for what runs off the
+  /// loop (a login's password check, a save). Never throws.
+  void handle(const WebRequest& request, const Respond& respond);
   /// The WebSocket upgrade: nullopt accepts it.
   std::optional<WebReply> check_upgrade(const WebRequest& request) const;
+  /// Whether the request carries a valid session cookie or bearer token (no CSRF check): a
+  /// logged-in console's connections are admitted where anonymous ones are capped.
+  [[nodiscard]] bool has_session(const WebRequest& request) const;
 
  private:
   WebReply handle_get(const WebRequest& request);
-  WebReply handle_action(const WebRequest& request);
-  WebReply login(const WebRequest& request);
+  void handle_action(const WebRequest& request, const Respond& respond);
+  void login(const WebRequest& request, const Respond& respond);
   /// nullopt when the request may act; otherwise the 401/403 to send.
   std::optional<WebReply> authorize(const WebRequest& request) const;
   [[nodiscard]] bool host_allowed(const std::string& host) const;
@@ -74,6 +94,7 @@ class WebApi {
   WebAuth& auth_;
   WebApiConfig config_;
   Clock now_;
+  Offload offload_;
 };
 
 /// The cookie's value named `name` in a Cookie header, "" when absent.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 namespace azt::app {
@@ -86,17 +87,46 @@ double WebAuth::blocked_until(const Failures& f) const {
   return last + std::min(kMaxDelayS, kFirstDelayS * std::pow(2.0, exponent));
 }
 
-WebAuth::Login WebAuth::login(const std::string& client, std::string_view password, double now_s) {
-  Failures& f = failures_[client];
-  while (!f.at_s.empty() && f.at_s.front() <= now_s - kHour) f.at_s.pop_front();
+void WebAuth::prune(double now_s) {
+  for (auto it = failures_.begin(); it != failures_.end();) {
+    auto& at = it->second.at_s;
+    while (!at.empty() && at.front() <= now_s - kHour) at.pop_front();
+    it = at.empty() ? failures_.erase(it) : std::next(it);
+  }
+  while (failures_.size() > kMaxClientsTracked) {
+    const auto stalest = std::min_element(failures_.begin(), failures_.end(), [](auto& a, auto& b) {
+      return a.second.at_s.back() < b.second.at_s.back();
+    });
+    failures_.erase(stalest);
+  }
+}
+
+WebAuth::Login WebAuth::begin_login(const std::string& client, double now_s) {
+  prune(now_s);
   Login result;
-  if (const double until = blocked_until(f); until > now_s) {
-    result.outcome = LoginOutcome::Limited;
-    result.retry_after_s = until - now_s;
+  if (const auto it = failures_.find(client); it != failures_.end()) {
+    if (const double until = blocked_until(it->second); until > now_s) {
+      result.outcome = LoginOutcome::Limited;
+      result.retry_after_s = until - now_s;
+      return result;
+    }
+  }
+  if (checks_in_flight_ >= kMaxChecksInFlight) {
+    result.outcome = LoginOutcome::Busy;
+    result.retry_after_s = 1.0;
     return result;
   }
-  if (!has_password() || !verify_password(config_.password_hash, password)) {
-    f.at_s.push_back(now_s);
+  // Counted now, so that parallel attempts from one address meet the limit before their checks.
+  failures_[client].at_s.push_back(now_s);
+  ++checks_in_flight_;
+  result.outcome = LoginOutcome::Checking;
+  return result;
+}
+
+WebAuth::Login WebAuth::finish_login(const std::string& client, bool matched, double now_s) {
+  if (checks_in_flight_ > 0) --checks_in_flight_;
+  Login result;
+  if (!matched || !has_password()) {
     result.outcome = LoginOutcome::Wrong;
     return result;
   }

@@ -34,26 +34,37 @@ class WebAuth {
   };
   explicit WebAuth(Config config) : config_(std::move(config)) {}
 
-  enum class LoginOutcome { Ok, Wrong, Limited };
+  enum class LoginOutcome { Ok, Wrong, Limited, Busy, Checking };
   struct Login {
     LoginOutcome outcome = LoginOutcome::Wrong;
     std::string session;         ///< the cookie value (Ok only)
     std::string csrf;            ///< the token the page sends back in X-CSRF-Token (Ok only)
-    double retry_after_s = 0.0;  ///< Limited: when the client may try again
+    double retry_after_s = 0.0;  ///< Limited, Busy: when the client may try again
   };
 
-  /// A login attempt from `client` (its address). After 3 failures within a minute each further
-  /// attempt waits 5 s, doubling per failure (to 5 min); over 10 failures in an hour the client
-  /// waits until the oldest is an hour old. A limited attempt is not even checked.
-  Login login(const std::string& client, std::string_view password, double now_s);
+  /// A login attempt from `client` (its address), in two halves around the password check,
+  /// which is slow (Argon2id, ~0.1 s) and runs off the event loop (verify_password on a worker).
+  /// begin_login answers Limited (after 3 failures within a minute each further attempt waits
+  /// 5 s, doubling per failure to 5 min; over 10 failures in an hour the client waits until the
+  /// oldest is an hour old), Busy (kMaxChecksInFlight checks are running, whoever asked: many
+  /// addresses cannot queue many checks), or Checking: the check may start, and counts as a
+  /// failure until finish_login hears it matched. A limited or busy attempt is not checked.
+  Login begin_login(const std::string& client, double now_s);
+  /// After a check that begin_login admitted: `matched` gives a session, else the failure stays.
+  Login finish_login(const std::string& client, bool matched, double now_s);
+  [[nodiscard]] const std::string& password_hash() const { return config_.password_hash; }
   void logout(std::string_view session);
   /// The session's CSRF token while the session is valid.
   [[nodiscard]] std::optional<std::string> csrf_of(std::string_view session, double now_s) const;
   /// Whether `token` hashes to the configured api_token_sha256.
   [[nodiscard]] bool bearer_ok(std::string_view token) const;
   [[nodiscard]] bool has_password() const { return !config_.password_hash.empty(); }
+  /// Addresses with failures on record (pruned as they age; bounded by kMaxClientsTracked).
+  [[nodiscard]] std::size_t clients_tracked() const { return failures_.size(); }
 
-  static constexpr std::size_t kMaxSessions = 64;  ///< the oldest goes when a 65th logs in
+  static constexpr std::size_t kMaxChecksInFlight = 2;
+  static constexpr std::size_t kMaxClientsTracked = 4096;  ///< the stalest goes beyond this
+  static constexpr std::size_t kMaxSessions = 64;          ///< the oldest goes when a 65th logs in
 
  private:
   struct Session {
@@ -64,8 +75,10 @@ class WebAuth {
     std::deque<double> at_s;  ///< failure times within the last hour
   };
   [[nodiscard]] double blocked_until(const Failures& f) const;
+  void prune(double now_s);
 
   Config config_;
+  std::size_t checks_in_flight_ = 0;
   std::map<std::string, Session, std::less<>> sessions_;
   std::map<std::string, Failures, std::less<>> failures_;
 };

@@ -4,8 +4,12 @@
 #include <boost/beast/http.hpp>
 #include <boost/beast/websocket.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
+
+#include "azt/util/quote.hpp"
+#include "azt/util/valid_utf8.hpp"
 
 namespace azt::app {
 
@@ -27,29 +31,58 @@ class HttpSession;
 
 }  // namespace
 
+class WebConnection;
+
+/// What the server's accounting knows of every connection, HTTP or WebSocket.
+class WebConnection {
+ public:
+  WebConnection() = default;
+  WebConnection(const WebConnection&) = delete;
+  WebConnection& operator=(const WebConnection&) = delete;
+  virtual ~WebConnection() = default;
+  virtual void close() = 0;
+  [[nodiscard]] virtual bool open() const = 0;
+
+  std::string peer;          ///< the client's address, no port
+  bool has_session = false;  ///< a request on it showed a valid session: never evicted
+  bool websocket = false;
+};
+
 struct WebServer::Shared {
-  Handler handler;
-  UpgradeCheck upgrade_check;
-  StateText state;
-  Log log;
-  std::vector<std::weak_ptr<HttpSession>> http;
+  Callbacks callbacks;
+  std::vector<std::weak_ptr<WebConnection>> connections;  ///< oldest first
   std::vector<std::weak_ptr<WsSession>> ws;
   bool closed = false;
 
-  [[nodiscard]] std::size_t live_connections() const;
+  void prune();
+  [[nodiscard]] std::size_t live();
+  [[nodiscard]] std::size_t from(const std::string& peer);
+  [[nodiscard]] std::size_t anonymous_websockets();
+  /// Closes the oldest connection without a session; false if every one has a session.
+  bool evict_one_anonymous();
+  void log(const std::string& line) const {
+    if (callbacks.log) callbacks.log(line);
+  }
 };
 
 namespace {
 
+/// Beast's string_view is Boost's; the sanitizer takes the standard one.
+std::string clean(boost::beast::string_view text) {
+  return valid_utf8(std::string_view(text.data(), text.size()));
+}
+
+/// A header's value as valid UTF-8 ("" when absent): a Latin-1 or binary byte in a header must
+/// never reach JSON or a log line as it is (issue 12 row 1).
 std::string header(const http::request<http::string_body>& req, http::field f) {
   const auto it = req.find(f);
-  return it == req.end() ? std::string() : std::string(it->value());
+  return it == req.end() ? std::string() : clean(it->value());
 }
 
 WebRequest to_web_request(const http::request<http::string_body>& req, const std::string& peer) {
   WebRequest r;
-  r.method = std::string(req.method_string());
-  const std::string target(req.target());
+  r.method = clean(req.method_string());
+  const std::string target = clean(req.target());  // "/\xff" is a 404, not a crash
   const auto q = target.find('?');
   r.path = target.substr(0, q);
   if (q != std::string::npos) r.query = target.substr(q + 1);
@@ -58,7 +91,7 @@ WebRequest to_web_request(const http::request<http::string_body>& req, const std
   r.host = header(req, http::field::host);
   r.cookie = header(req, http::field::cookie);
   r.authorization = header(req, http::field::authorization);
-  if (const auto it = req.find("X-CSRF-Token"); it != req.end()) r.csrf = std::string(it->value());
+  if (const auto it = req.find("X-CSRF-Token"); it != req.end()) r.csrf = clean(it->value());
   r.client = peer;
   r.websocket = websocket::is_upgrade(req);
   return r;
@@ -84,16 +117,19 @@ http::response<http::string_body> to_response(const WebReply& reply, unsigned ve
   return res;
 }
 
+/// For the transport's own refusals: `message` is a constant of this file (no quoting needed).
 WebReply plain_error(unsigned status, const std::string& message) {
   return WebReply{status, "application/json", "{\"error\":\"" + message + "\"}", {}};
 }
 
 /// One WebSocket client: receives the pushed state; what it sends is read and ignored (a read
 /// must be pending to notice a close). A slow client keeps only the newest frame pending.
-class WsSession : public std::enable_shared_from_this<WsSession> {
+class WsSession : public WebConnection, public std::enable_shared_from_this<WsSession> {
  public:
   WsSession(tcp::socket socket, std::shared_ptr<WebServer::Shared> shared)
-      : ws_(std::move(socket)), shared_(std::move(shared)) {}
+      : ws_(std::move(socket)), shared_(std::move(shared)) {
+    websocket = true;
+  }
 
   void start(const http::request<http::string_body>& req) {
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
@@ -101,7 +137,7 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     ws_.async_accept(req, [self = shared_from_this()](beast::error_code ec) {
       if (ec) return;
       self->shared_->ws.push_back(self);
-      self->push(std::make_shared<const std::string>(self->shared_->state()));
+      self->push(std::make_shared<const std::string>(self->shared_->callbacks.state()));
       self->read();
     });
   }
@@ -120,12 +156,14 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
         [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_written(ec); });
   }
 
-  void close() {
+  void close() override {
     if (closed_) return;
     closed_ = true;
     beast::error_code ignored;
     beast::get_lowest_layer(ws_).socket().close(ignored);
   }
+
+  [[nodiscard]] bool open() const override { return !closed_; }
 
  private:
   void read() {
@@ -159,20 +197,22 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
 };
 
 /// One HTTP connection: requests in order, keep-alive, an upgrade hands the socket to WsSession.
-class HttpSession : public std::enable_shared_from_this<HttpSession> {
+class HttpSession : public WebConnection, public std::enable_shared_from_this<HttpSession> {
  public:
-  HttpSession(tcp::socket socket, std::shared_ptr<WebServer::Shared> shared, std::string peer)
-      : stream_(std::move(socket)), shared_(std::move(shared)), peer_(std::move(peer)) {}
+  HttpSession(tcp::socket socket, std::shared_ptr<WebServer::Shared> shared, std::string address)
+      : stream_(std::move(socket)), shared_(std::move(shared)) {
+    peer = std::move(address);
+  }
 
   void start() { read(); }
 
-  void close() {
+  void close() override {
     beast::error_code ignored;
     stream_.socket().shutdown(tcp::socket::shutdown_both, ignored);
     stream_.socket().close(ignored);
   }
 
-  [[nodiscard]] bool open() const { return stream_.socket().is_open(); }
+  [[nodiscard]] bool open() const override { return stream_.socket().is_open(); }
 
  private:
   void read() {
@@ -191,23 +231,54 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
       reply(plain_error(413, "request body over 64 KiB"), 11, false);
       return;
     }
+    if (ec == http::error::header_limit) {
+      reply(plain_error(431, "request headers over 8 KiB"), 11, false);
+      return;
+    }
     if (ec) {
       close();
       return;
     }
     http::request<http::string_body> req = parser_->release();
-    const WebRequest request = to_web_request(req, peer_);
+    const WebRequest request = to_web_request(req, peer);
+    try {
+      dispatch(req, request);
+    } catch (const std::exception& e) {
+      // One request's fault closes its connection; the daemon and other clients carry on.
+      shared_->log("web: " + peer + " " + request.method + " " + quote(request.path) +
+                   ": internal error, connection closed: " + valid_utf8(e.what()));
+      close();
+    }
+  }
+
+  void dispatch(const http::request<http::string_body>& req, const WebRequest& request) {
+    if (!has_session && shared_->callbacks.has_session(request)) has_session = true;
     if (request.websocket && request.path == "/ws") {
-      if (auto refusal = shared_->upgrade_check(request)) {
-        reply(*refusal, req.version(), false);
-        return;
-      }
-      stream_.expires_never();
-      auto ws = std::make_shared<WsSession>(stream_.release_socket(), shared_);
-      ws->start(req);
+      upgrade(req, request);
       return;
     }
-    reply(shared_->handler(request), req.version(), req.keep_alive());
+    const unsigned version = req.version();
+    const bool keep_alive = req.keep_alive();
+    shared_->callbacks.handler(request, [self = shared_from_this(), version, keep_alive](
+                                            WebReply r) { self->reply(r, version, keep_alive); });
+  }
+
+  void upgrade(const http::request<http::string_body>& req, const WebRequest& request) {
+    if (auto refusal = shared_->callbacks.upgrade_check(request)) {
+      reply(*refusal, req.version(), false);
+      return;
+    }
+    if (!has_session && shared_->anonymous_websockets() >= WebServer::kMaxAnonymousWebSockets) {
+      reply(plain_error(503, "too many live views without a login: log in to get one"),
+            req.version(), false);
+      return;
+    }
+    stream_.expires_never();
+    auto ws = std::make_shared<WsSession>(stream_.release_socket(), shared_);
+    ws->peer = peer;
+    ws->has_session = has_session;
+    shared_->connections.push_back(ws);
+    ws->start(req);
   }
 
   void reply(const WebReply& reply, unsigned version, bool keep_alive) {
@@ -226,20 +297,53 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
 
   beast::tcp_stream stream_;
   std::shared_ptr<WebServer::Shared> shared_;
-  std::string peer_;
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
 };
 
 }  // namespace
 
-std::size_t WebServer::Shared::live_connections() const {
-  std::size_t n = 0;
-  for (const auto& w : http) {
-    if (const auto s = w.lock(); s && s->open()) ++n;
+void WebServer::Shared::prune() {
+  std::erase_if(connections, [](const auto& w) {
+    const auto c = w.lock();
+    return !c || !c->open();
+  });
+  std::erase_if(ws, [](const auto& w) { return w.expired(); });
+}
+
+std::size_t WebServer::Shared::live() {
+  prune();
+  return connections.size();
+}
+
+std::size_t WebServer::Shared::from(const std::string& peer) {
+  prune();
+  return static_cast<std::size_t>(
+      std::count_if(connections.begin(), connections.end(),
+                    [&](const auto& w) { return w.lock()->peer == peer; }));
+}
+
+std::size_t WebServer::Shared::anonymous_websockets() {
+  prune();
+  return static_cast<std::size_t>(
+      std::count_if(connections.begin(), connections.end(), [](auto& w) {
+        const auto c = w.lock();
+        return c->websocket && !c->has_session;
+      }));
+}
+
+bool WebServer::Shared::evict_one_anonymous() {
+  prune();
+  for (const auto& w : connections) {
+    if (const auto c = w.lock(); !c->has_session) {
+      log("web: closed the oldest connection without a login from " + c->peer + " to make room (" +
+          std::to_string(kMaxConnections) + " open)");
+      c->close();
+      prune();
+      return true;
+    }
   }
-  for (const auto& w : ws) n += w.expired() ? 0U : 1U;
-  return n;
+  return false;
 }
 
 WebServer::WebServer(asio::io_context& io, std::shared_ptr<Shared> shared, double push_period_s)
@@ -253,14 +357,10 @@ WebServer::~WebServer() { close(); }
 
 Result<std::unique_ptr<WebServer>> WebServer::open(asio::io_context& io,
                                                    const std::string& bind_address,
-                                                   unsigned short port, Handler handler,
-                                                   UpgradeCheck upgrade_check, StateText state,
-                                                   double push_period_s, Log log) {
+                                                   unsigned short port, Callbacks callbacks,
+                                                   double push_period_s) {
   auto shared = std::make_shared<Shared>();
-  shared->handler = std::move(handler);
-  shared->upgrade_check = std::move(upgrade_check);
-  shared->state = std::move(state);
-  shared->log = std::move(log);
+  shared->callbacks = std::move(callbacks);
   std::unique_ptr<WebServer> server(new WebServer(io, shared, push_period_s));
   boost::system::error_code ec;
   const auto address = asio::ip::make_address(bind_address, ec);
@@ -286,9 +386,14 @@ unsigned short WebServer::port() const {
 
 std::size_t WebServer::websockets() const {
   std::size_t n = 0;
-  for (const auto& w : shared_->ws) n += w.expired() ? 0U : 1U;
+  for (const auto& w : shared_->ws) {
+    const auto s = w.lock();
+    n += s && s->open() ? 1U : 0U;
+  }
   return n;
 }
+
+std::size_t WebServer::connections() const { return shared_->live(); }
 
 void WebServer::close() {
   if (shared_->closed) return;
@@ -296,35 +401,39 @@ void WebServer::close() {
   boost::system::error_code ignored;
   acceptor_.close(ignored);
   push_timer_.cancel();
-  for (auto& w : shared_->http) {
-    if (auto s = w.lock()) s->close();
-  }
-  for (auto& w : shared_->ws) {
-    if (auto s = w.lock()) s->close();
+  for (auto& w : shared_->connections) {
+    if (auto c = w.lock()) c->close();
   }
 }
 
 void WebServer::accept_next() {
   acceptor_.async_accept([this](boost::system::error_code ec, tcp::socket socket) {
     if (ec == asio::error::operation_aborted || shared_->closed) return;
-    if (!ec) {
-      boost::system::error_code peer_ec;
-      const auto peer = socket.remote_endpoint(peer_ec);
-      std::erase_if(shared_->http, [](const auto& w) { return w.expired(); });
-      std::erase_if(shared_->ws, [](const auto& w) { return w.expired(); });
-      if (shared_->live_connections() >= kMaxConnections) {
-        if (shared_->log) shared_->log("web: refused a connection: too many open");
-        socket.close(peer_ec);
-      } else {
-        socket.set_option(tcp::no_delay(true), peer_ec);
-        auto session = std::make_shared<HttpSession>(
-            std::move(socket), shared_, peer_ec ? std::string("?") : peer.address().to_string());
-        shared_->http.push_back(session);
-        session->start();
-      }
-    }
+    if (!ec) admit(std::move(socket));
     accept_next();
   });
+}
+
+void WebServer::admit(tcp::socket socket) {
+  boost::system::error_code peer_ec;
+  const auto peer = socket.remote_endpoint(peer_ec);
+  const std::string address = peer_ec ? std::string("?") : peer.address().to_string();
+  if (shared_->from(address) >= kMaxPerAddress) {
+    shared_->log("web: refused a connection from " + address + ": " +
+                 std::to_string(kMaxPerAddress) + " open from there");
+    socket.close(peer_ec);
+    return;
+  }
+  if (shared_->live() >= kMaxConnections && !shared_->evict_one_anonymous()) {
+    shared_->log("web: refused a connection from " + address + ": " +
+                 std::to_string(kMaxConnections) + " logged-in connections open");
+    socket.close(peer_ec);
+    return;
+  }
+  socket.set_option(tcp::no_delay(true), peer_ec);
+  auto session = std::make_shared<HttpSession>(std::move(socket), shared_, address);
+  shared_->connections.push_back(session);
+  session->start();
 }
 
 void WebServer::arm_push() {
@@ -344,7 +453,7 @@ void WebServer::broadcast() {
   std::erase_if(shared_->ws, [](const auto& w) { return w.expired(); });
   if (shared_->ws.empty()) return;
   // One serialisation per push, shared by every client.
-  const auto text = std::make_shared<const std::string>(shared_->state());
+  const auto text = std::make_shared<const std::string>(shared_->callbacks.state());
   for (auto& w : shared_->ws) {
     if (auto s = w.lock()) s->push(text);
   }

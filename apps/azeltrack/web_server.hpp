@@ -1,9 +1,15 @@
 #pragma once
 // The console's HTTP and WebSocket transport (Boost.Beast on the daemon's io_context). It knows
-// nothing of the API: every request goes to a handler as a WebRequest, and WebSocket clients get
-// the same state text pushed at a fixed period. Bounded: 64 KiB bodies, 8 KiB headers, 30 s idle
-// connections, 128 connections, one pending frame per slow WebSocket client (older frames are
-// dropped, never queued).
+// nothing of the API: every request goes to a handler as a WebRequest (its text made valid UTF-8
+// first), and WebSocket clients get the same state text pushed at a fixed period. Bounded: 64 KiB
+// bodies (413), 8 KiB headers (431), 30 s idle HTTP connections, one pending frame per slow
+// WebSocket client (older frames are dropped, never queued).
+//
+// The operator can always reach STOP (issue 12): at most kMaxPerAddress connections from one
+// address; at most kMaxConnections in all, and when they are taken a new connection evicts the
+// oldest one that has shown no session, so a logged-in console is never pushed out by strangers;
+// WebSockets without a session share a pool of kMaxAnonymousWebSockets. An exception from a
+// handler closes that one connection with a log line; the server carries on.
 
 #include <cstddef>
 #include <functional>
@@ -41,19 +47,32 @@ struct WebReply {
 
 class WebServer {
  public:
-  using Handler = std::function<WebReply(const WebRequest&)>;
+  using Respond = std::function<void(WebReply)>;
+  /// Answers through `respond` exactly once, at once or later (on the same thread).
+  using Handler = std::function<void(const WebRequest&, const Respond&)>;
   /// For an upgrade request: nullopt to accept the WebSocket, or the refusal to send.
   using UpgradeCheck = std::function<std::optional<WebReply>(const WebRequest&)>;
+  /// Whether a request shows a valid session (cookie or bearer token).
+  using SessionCheck = std::function<bool(const WebRequest&)>;
   using StateText = std::function<std::string()>;
   using Log = std::function<void(const std::string&)>;
 
+  struct Callbacks {
+    Handler handler;
+    UpgradeCheck upgrade_check;
+    SessionCheck has_session;
+    StateText state;
+    Log log;
+  };
+
   static constexpr std::size_t kMaxConnections = 128;
+  static constexpr std::size_t kMaxPerAddress = 32;
+  static constexpr std::size_t kMaxAnonymousWebSockets = 16;
 
   static Result<std::unique_ptr<WebServer>> open(boost::asio::io_context& io,
                                                  const std::string& bind_address,
-                                                 unsigned short port, Handler handler,
-                                                 UpgradeCheck upgrade_check, StateText state,
-                                                 double push_period_s, Log log);
+                                                 unsigned short port, Callbacks callbacks,
+                                                 double push_period_s);
   ~WebServer();
   WebServer(const WebServer&) = delete;
   WebServer& operator=(const WebServer&) = delete;
@@ -62,6 +81,8 @@ class WebServer {
   void push_now();
   [[nodiscard]] unsigned short port() const;
   [[nodiscard]] std::size_t websockets() const;
+  /// Open connections, HTTP and WebSocket.
+  [[nodiscard]] std::size_t connections() const;
   void close();
 
   struct Shared;  ///< what sessions share with the server (outlives it while they run)
@@ -69,6 +90,8 @@ class WebServer {
  private:
   WebServer(boost::asio::io_context& io, std::shared_ptr<Shared> shared, double push_period_s);
   void accept_next();
+  /// Caps and eviction (the class comment), then an HttpSession for `socket`.
+  void admit(boost::asio::ip::tcp::socket socket);
   void arm_push();
   void broadcast();
 

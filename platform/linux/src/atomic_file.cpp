@@ -1,11 +1,13 @@
 #include "azt/linux/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <utility>
 
 namespace azt::linux_os {
@@ -74,7 +76,9 @@ int fsync_retrying(int fd) {
 /// fsyncs and closes. On failure removes whatever it created.
 Result<bool> write_durable_temp(const std::string& temp, std::string_view contents, mode_t mode) {
   ::unlink(temp.c_str());  // a stale temp from a killed earlier run with a recycled pid
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, mode);
+  // 0600 while it is being written: a temp left by a kill -9 holds the whole file (the password
+  // hash among it) and must not be readable by others even if the file itself is (issue 12).
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0600);
   if (fd < 0) return step_error("create temp file", temp, errno);
   FdGuard guard(fd);
   auto fail_and_remove = [&](const std::string& step, int err) -> Result<bool> {
@@ -82,12 +86,12 @@ Result<bool> write_durable_temp(const std::string& temp, std::string_view conten
     ::unlink(temp.c_str());
     return step_error(step, temp, err);
   };
-  // open() applies the umask; fchmod makes the bits exactly the old file's (or 0644).
-  if (::fchmod(fd, mode) != 0) return fail_and_remove("set mode of temp file", errno);
   if (const int err = write_all(fd, contents); err != 0) {
     return fail_and_remove("write temp file", err);
   }
   if (const int err = fsync_retrying(fd); err != 0) return fail_and_remove("fsync temp file", err);
+  // Only now the old file's bits (or 0644), exactly: open() applied the umask.
+  if (::fchmod(fd, mode) != 0) return fail_and_remove("set mode of temp file", errno);
   if (const int err = guard.close_now(); err != 0) return fail_and_remove("close temp file", err);
   return true;
 }
@@ -219,6 +223,30 @@ Result<LoadedText> load_with_backup(const std::string& path,
   }
   return LoadedText{std::move(fallback).value(), true,
                     primary_problem + "; using backup '" + backup + "' instead"};
+}
+
+std::size_t remove_stale_temp_files(const std::string& path) {
+  const std::string dir = parent_directory(path);
+  const auto slash = path.find_last_of('/');
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    for (const std::string& stem : {base + ".tmp.", base + ".bak.tmp."}) {
+      if (name.rfind(stem, 0) != 0) continue;
+      const std::string pid_text = name.substr(stem.size());
+      if (pid_text.empty() || pid_text.size() > 9 ||
+          pid_text.find_first_not_of("0123456789") != std::string::npos) {
+        continue;
+      }
+      // A writer that is still alive (a `config set` saving right now) keeps its temp.
+      const auto pid = static_cast<pid_t>(std::stol(pid_text));
+      if (pid == ::getpid() || (::kill(pid, 0) == 0 || errno == EPERM)) continue;
+      if (::unlink(entry.path().c_str()) == 0) ++removed;
+    }
+  }
+  return removed;
 }
 
 }  // namespace azt::linux_os

@@ -1,5 +1,7 @@
 #include "azt/linux/sysfs_pwm.hpp"
 
+#include "azt/linux/crash_safe_outputs.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -57,6 +59,9 @@ Result<SysfsPwm> SysfsPwm::open(const std::string& chip_dir, unsigned channel,
         std::pair{"duty_cycle", std::string("0")}, std::pair{"enable", std::string("1")}}) {
     if (auto r = write_sysfs(dir + "/" + file, value); !r) return r.error();
   }
+  // Should the process crash, the channel must not keep the duty it had (crash_safe_outputs.hpp).
+  (void)register_crash_write(dir + "/duty_cycle", "0");
+  (void)register_crash_write(dir + "/enable", "0");
   SysfsPwm pwm(dir, period_ns);
   pwm.duty_ns_ = 0;
   return pwm;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <deque>
 
 namespace azt::linux_os {
@@ -13,13 +14,16 @@ using asio::ip::tcp;
 class TcpProtocolServer::Connection : public std::enable_shared_from_this<Connection> {
  public:
   Connection(tcp::socket socket, std::unique_ptr<proto::ProtocolSession> session,
-             std::string client, ConnectionLog log, std::size_t max_pending,
-             std::shared_ptr<std::size_t> live)
+             std::string client, std::string address, ConnectionLog log,
+             const TcpServerLimits& limits, std::shared_ptr<std::size_t> live)
       : socket_(std::move(socket)),
+        idle_(socket_.get_executor()),
         session_(std::move(session)),
         client_(std::move(client)),
+        address_(std::move(address)),
         log_(std::move(log)),
-        max_pending_(max_pending),
+        max_pending_(limits.max_pending_output),
+        idle_timeout_s_(limits.idle_timeout_s),
         live_(std::move(live)) {
     ++*live_;
   }
@@ -27,11 +31,18 @@ class TcpProtocolServer::Connection : public std::enable_shared_from_this<Connec
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
 
-  void start() { read(); }
+  void start() {
+    arm_idle();
+    read();
+  }
+
+  [[nodiscard]] const std::string& address() const { return address_; }
+  [[nodiscard]] bool open() const { return !closed_; }
 
   void close(const std::string& why) {
     if (closed_) return;
     closed_ = true;
+    idle_.cancel();
     boost::system::error_code ignored;
     socket_.shutdown(tcp::socket::shutdown_both, ignored);
     socket_.close(ignored);
@@ -45,13 +56,33 @@ class TcpProtocolServer::Connection : public std::enable_shared_from_this<Connec
                                                         std::size_t n) { self->on_read(ec, n); });
   }
 
+  void arm_idle() {
+    if (idle_timeout_s_ <= 0.0) return;
+    idle_.expires_after(std::chrono::duration_cast<asio::steady_timer::duration>(
+        std::chrono::duration<double>(idle_timeout_s_)));
+    idle_.async_wait(
+        [self = weak_from_this(), timeout = idle_timeout_s_](boost::system::error_code ec) {
+          const auto c = self.lock();
+          if (ec || !c) return;
+          c->close("silent for " + std::to_string(static_cast<long>(timeout)) + " s");
+        });
+  }
+
   void on_read(boost::system::error_code ec, std::size_t n) {
     if (closed_) return;
     if (ec) {
       close(ec == asio::error::eof ? "closed by the client" : ec.message());
       return;
     }
-    std::string reply = session_->feed(std::string_view(buffer_.data(), n));
+    arm_idle();
+    std::string reply;
+    try {
+      reply = session_->feed(std::string_view(buffer_.data(), n));
+    } catch (const std::exception& e) {
+      // A fault in one session ends that session, never the daemon and its other clients.
+      close(std::string("internal error, session closed: ") + e.what());
+      return;
+    }
     if (!reply.empty()) queue(std::move(reply));
     if (closed_) return;
     if (session_->finished()) {
@@ -96,10 +127,13 @@ class TcpProtocolServer::Connection : public std::enable_shared_from_this<Connec
   }
 
   tcp::socket socket_;
+  asio::steady_timer idle_;
   std::unique_ptr<proto::ProtocolSession> session_;
   std::string client_;
+  std::string address_;
   ConnectionLog log_;
   std::size_t max_pending_;
+  double idle_timeout_s_;
   std::shared_ptr<std::size_t> live_;
   std::array<char, 4096> buffer_{};
   std::deque<std::string> pending_;
@@ -158,32 +192,59 @@ void TcpProtocolServer::close() {
   connections_.clear();
 }
 
+std::size_t TcpProtocolServer::clients_from(const std::string& address) {
+  std::erase_if(connections_, [](const auto& w) { return w.expired(); });
+  return static_cast<std::size_t>(
+      std::count_if(connections_.begin(), connections_.end(), [&](auto& w) {
+        const auto c = w.lock();
+        return c && c->open() && c->address() == address;
+      }));
+}
+
 void TcpProtocolServer::accept_next() {
   acceptor_.async_accept([this](boost::system::error_code ec, tcp::socket socket) {
     if (ec == asio::error::operation_aborted || !acceptor_.is_open()) return;
     if (!ec) {
       boost::system::error_code peer_ec;
       const auto peer = socket.remote_endpoint(peer_ec);
+      const std::string address = peer_ec ? std::string("?") : peer.address().to_string();
       const std::string client =
-          name_ + " " +
-          (peer_ec ? std::string("?")
-                   : peer.address().to_string() + ":" + std::to_string(peer.port()));
+          name_ + " " + (peer_ec ? address : address + ":" + std::to_string(peer.port()));
       if (*live_ >= limits_.max_clients) {
         if (log_)
           log_(client, "refused: " + std::to_string(limits_.max_clients) + " clients connected");
         socket.close(peer_ec);
+      } else if (clients_from(address) >= limits_.max_per_address) {
+        if (log_) {
+          log_(client, "refused: " + std::to_string(limits_.max_per_address) +
+                           " clients connected from " + address);
+        }
+        socket.close(peer_ec);
       } else {
-        socket.set_option(tcp::no_delay(true), peer_ec);
-        auto connection = std::make_shared<Connection>(std::move(socket), factory_(client), client,
-                                                       log_, limits_.max_pending_output, live_);
-        std::erase_if(connections_, [](const auto& w) { return w.expired(); });
-        connections_.push_back(connection);
-        if (log_) log_(client, "connected");
-        connection->start();
+        start_connection(std::move(socket), client, address);
       }
     }
     accept_next();
   });
+}
+
+void TcpProtocolServer::start_connection(tcp::socket socket, const std::string& client,
+                                         const std::string& address) {
+  boost::system::error_code ignored;
+  socket.set_option(tcp::no_delay(true), ignored);
+  std::unique_ptr<proto::ProtocolSession> session;
+  try {
+    session = factory_(client);
+  } catch (const std::exception& e) {
+    if (log_) log_(client, std::string("refused: internal error: ") + e.what());
+    socket.close(ignored);
+    return;
+  }
+  auto connection = std::make_shared<Connection>(std::move(socket), std::move(session), client,
+                                                 address, log_, limits_, live_);
+  connections_.push_back(connection);
+  if (log_) log_(client, "connected");
+  connection->start();
 }
 
 }  // namespace azt::linux_os

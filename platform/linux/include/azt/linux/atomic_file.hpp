@@ -19,9 +19,14 @@ namespace azt::linux_os {
 inline constexpr std::size_t kMaxReadBytes = std::size_t{4} * 1024 * 1024;
 
 /// Atomically replaces `path` with `contents`, keeping the previous version as `path.bak`.
-/// Uses the existing file's permission bits, or 0644 for a new file. On failure `path` is unchanged
+/// Uses the existing file's permission bits, or 0644 for a new file (the temp is 0600 until
+/// it is complete). On failure `path` is unchanged
 /// and the temp file is removed.
 Result<bool> write_file_atomically(const std::string& path, std::string_view contents);
+
+/// Removes the temp files that writes to `path` left behind when their process was killed
+/// (`path.tmp.PID`, `path.bak.tmp.PID` of a PID that no longer runs); returns how many.
+std::size_t remove_stale_temp_files(const std::string& path);
 
 /// Reads the whole of `path`; fails beyond kMaxReadBytes.
 Result<std::string> read_file(const std::string& path);

@@ -11,8 +11,10 @@ namespace azt::linux_os {
 /// the lock dies with its process, so a kill -9 never leaves it stuck.
 class FileLock {
  public:
-  /// Creates `lock_path` if needed and waits for the lock.
-  static Result<FileLock> acquire(const std::string& lock_path);
+  /// Creates `lock_path` if needed (mode 0600) and waits up to `wait_s` for the lock, then fails
+  /// with a message naming the file and the wait. Blocks the calling thread: the daemon calls it
+  /// only on its worker thread (worker_thread.hpp), never on the event loop.
+  static Result<FileLock> acquire(const std::string& lock_path, double wait_s);
 
   FileLock(FileLock&& other) noexcept;
   FileLock& operator=(FileLock&& other) noexcept;

@@ -1,10 +1,12 @@
 #pragma once
 // A TCP server hosting one ProtocolSession per connection (rotctld), on the daemon's io_context.
 //
-// Bounded in every direction (reference R12): at most `max_clients` connections (more are
-// accepted and closed at once), at most `max_pending_output` bytes queued for a client that does
-// not read (it is disconnected), reads of at most 4 KiB at a time into the session's own bounded
-// assembler. No handler blocks; errors close one connection and never the server.
+// Bounded in every direction (reference R12): at most `max_clients` connections and at most
+// `max_per_address` from one address (more are accepted and closed at once, so one host cannot
+// take every slot from Gpredict), a connection silent for `idle_timeout_s` is closed, at most
+// `max_pending_output` bytes queued for a client that does not read (it is disconnected), reads
+// of at most 4 KiB at a time into the session's own bounded assembler. No handler blocks; an
+// error, or an exception from a session, closes that one connection and never the server.
 
 #include <cstddef>
 #include <functional>
@@ -20,6 +22,10 @@ namespace azt::linux_os {
 
 struct TcpServerLimits {
   std::size_t max_clients = 256;
+  std::size_t max_per_address = 16;
+  /// Gpredict polls every 1 s or so and Hamlib's clients hold no idle connections, so 10 min of
+  /// silence means a client that is gone (a dropped Wi-Fi leaves no FIN). 0: never.
+  double idle_timeout_s = 600.0;
   std::size_t max_pending_output = 64 * 1024;
 };
 
@@ -51,6 +57,9 @@ class TcpProtocolServer {
   TcpProtocolServer(boost::asio::io_context& io, std::string name, SessionFactory factory,
                     ConnectionLog log, TcpServerLimits limits);
   void accept_next();
+  [[nodiscard]] std::size_t clients_from(const std::string& address);
+  void start_connection(boost::asio::ip::tcp::socket socket, const std::string& client,
+                        const std::string& address);
 
   boost::asio::ip::tcp::acceptor acceptor_;
   std::string name_;

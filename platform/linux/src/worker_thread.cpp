@@ -1,0 +1,56 @@
+#include "azt/linux/worker_thread.hpp"
+
+#include <utility>
+
+namespace azt::linux_os {
+
+WorkerThread::WorkerThread(boost::asio::io_context& io) : io_(io), thread_([this] { run(); }) {}
+
+WorkerThread::~WorkerThread() {
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = true;
+    jobs_.clear();
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void WorkerThread::post(Work work, Done done) {
+  {
+    const std::lock_guard lock(mutex_);
+    if (stopping_) return;
+    jobs_.emplace_back(std::move(work), std::move(done));
+  }
+  wake_.notify_one();
+}
+
+std::size_t WorkerThread::pending() const {
+  const std::lock_guard lock(mutex_);
+  return jobs_.size() + running_;
+}
+
+void WorkerThread::run() {
+  for (;;) {
+    std::pair<Work, Done> job;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
+      if (stopping_) return;
+      job = std::move(jobs_.front());
+      jobs_.pop_front();
+      running_ = 1;
+    }
+    // A job's own errors travel in what it captured; anything escaping would end the thread
+    // and with it every later save, so it is contained here and the done half still runs.
+    try {
+      job.first();
+    } catch (...) {  // NOLINT(bugprone-empty-catch): the done half reports the missing result
+    }
+    boost::asio::post(io_, std::move(job.second));
+    const std::lock_guard lock(mutex_);
+    running_ = 0;
+  }
+}
+
+}  // namespace azt::linux_os
