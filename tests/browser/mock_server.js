@@ -161,7 +161,7 @@ const cfg = {
   servers: {
     rotctld: { bind: '127.0.0.1', port: 4533 },
     pstrotator: { bind: '127.0.0.1', port: 12000 },
-    serial: [{ protocol: 'gs232b', device: 'pty:/tmp/azeltrack/gs232b', baud: 9600 }],
+    serial: [{ protocol: 'gs232b', device: 'pty:gs232b', baud: 9600 }],
     web: { bind: '127.0.0.1', port: PORT },
   },
   restart_needed: [],

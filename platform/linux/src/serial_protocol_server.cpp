@@ -1,6 +1,7 @@
 #include "azt/linux/serial_protocol_server.hpp"
 
 #include <fcntl.h>
+#include <sys/inotify.h>
 #include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <termios.h>
@@ -10,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "azt/linux/runtime_dir.hpp"
 #include "azt/linux/serial_port.hpp"
 
 namespace azt::linux_os {
@@ -46,13 +48,21 @@ Result<PtyPair> open_pty() {
   return p;
 }
 
-/// Links `link` to `target`, replacing only a stale symlink (never a regular file or device).
+/// The link's path for "pty:NAME": NAME as given when absolute, else in the runtime directory.
+std::string link_path(const std::string& spec) {
+  if (!spec.empty() && spec.front() == '/') return spec;
+  return runtime_dir() + "/" + spec;
+}
+
+/// Links `link` to `target` in a directory of our own (runtime_dir.hpp), replacing only a
+/// stale symlink (never a regular file or device).
 Result<bool> make_link(const std::string& link, const std::string& target) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path path(link);
-  if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-  if (ec) return fail("cannot create " + path.parent_path().string() + ": " + ec.message());
+  if (path.has_parent_path()) {
+    if (auto ok = ensure_private_dir(path.parent_path().string()); !ok) return ok;
+  }
   const auto status = fs::symlink_status(path, ec);
   if (fs::exists(status)) {
     if (!fs::is_symlink(status)) return fail(link + " exists and is not a symbolic link");
@@ -78,8 +88,8 @@ Result<std::unique_ptr<SerialProtocolServer>> SerialProtocolServer::open(
       new SerialProtocolServer(io, std::move(session), std::move(log)));
   constexpr std::string_view kPty = "pty:";
   if (device.rfind(kPty, 0) == 0) {
-    const std::string link = device.substr(kPty.size());
-    if (link.empty()) return fail(device + ": give a path after pty:");
+    if (device.size() == kPty.size()) return fail(device + ": give a path after pty:");
+    const std::string link = link_path(device.substr(kPty.size()));
     auto pty = open_pty();
     if (!pty) return fail(device + ": " + pty.error().message);
     // The slave is raw too: no echo of the client's bytes, no CR -> LF translation.
@@ -97,6 +107,7 @@ Result<std::unique_ptr<SerialProtocolServer>> SerialProtocolServer::open(
     server->link_ = link;
     server->path_ = link;
     server->stream_.assign(pty->master);
+    server->watch_clients(pty->slave_name);
   } else {
     auto fd = open_serial_device(device, baud);
     if (!fd) return fd.error();
@@ -111,6 +122,7 @@ void SerialProtocolServer::close() {
   *alive_ = false;
   boost::system::error_code ignored;
   stream_.close(ignored);
+  clients_.close(ignored);
   if (keep_slave_fd_ >= 0) {
     ::close(keep_slave_fd_);
     keep_slave_fd_ = -1;
@@ -133,10 +145,60 @@ void SerialProtocolServer::read() {
                               if (log_) log_("read failed, server stopped: " + ec.message());
                               return;
                             }
-                            std::string reply = session_->feed(std::string_view(buffer_.data(), n));
+                            std::string reply;
+                            try {
+                              reply = session_->feed(std::string_view(buffer_.data(), n));
+                            } catch (const std::exception& e) {
+                              // A fault in the session drops these bytes, never the daemon.
+                              if (log_)
+                                log_(std::string("internal error, input dropped: ") + e.what());
+                            }
                             if (!reply.empty()) write(reply);
                             read();
                           });
+}
+
+void SerialProtocolServer::watch_clients(const std::string& slave_name) {
+  // Our own slave end stays open, so the master never sees a client come or go; inotify on the
+  // slave's device node does (IN_OPEN, IN_CLOSE_*), with no polling.
+  const int fd = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (fd < 0) {
+    if (log_) log_("cannot watch for clients (inotify): " + errno_text());
+    return;
+  }
+  if (::inotify_add_watch(fd, slave_name.c_str(), IN_OPEN | IN_CLOSE) < 0) {
+    if (log_) log_("cannot watch " + slave_name + " for clients: " + errno_text());
+    ::close(fd);
+    return;
+  }
+  clients_.assign(fd);
+  read_client_events();
+}
+
+void SerialProtocolServer::read_client_events() {
+  clients_.async_read_some(asio::buffer(events_),
+                           [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
+                             if (!*alive || ec) return;
+                             std::uint32_t mask = 0;
+                             for (std::size_t at = 0; at + sizeof(inotify_event) <= n;) {
+                               inotify_event event{};
+                               std::memcpy(&event, events_.data() + at, sizeof event);
+                               mask |= event.mask;
+                               at += sizeof(inotify_event) + event.len;
+                             }
+                             if ((mask & IN_CLOSE) != 0U) discard_pending(true);
+                             if ((mask & IN_OPEN) != 0U) discard_pending(false);
+                             read_client_events();
+                           });
+}
+
+void SerialProtocolServer::discard_pending(bool hang_up) {
+  // What a client that left did not read must not greet the next one (issue 12 row 8): the
+  // replies queued towards the slave go, and at a hang-up its unread commands too.
+  pending_.clear();
+  (void)::tcflush(keep_slave_fd_, TCIFLUSH);
+  if (hang_up) (void)::tcflush(keep_slave_fd_, TCOFLUSH);
+  if (log_) log_(hang_up ? "client closed the port" : "client opened the port");
 }
 
 void SerialProtocolServer::write(const std::string& bytes) {

@@ -3,8 +3,11 @@
 // pseudo-terminal that azeltrack creates and links at a configured path, so a PC program (or
 // Hamlib's rotctl) opens that path as if it were the controller's COM port.
 //
-// Device syntax: "pty:/run/azeltrack/gs232b" (pseudo-terminal, symlink there) or a device path
-// ("/dev/ttyUSB0"; opened exclusively, raw 8N1 at the configured baud).
+// Device syntax: "pty:gs232b" (pseudo-terminal, symlink in the runtime directory, runtime_dir.hpp),
+// "pty:/abs/path" (symlink there, in a directory owned by this program's user) or a device path
+// ("/dev/ttyUSB0"; opened exclusively, raw 8N1 at the configured baud). On a pseudo-terminal a
+// client's open and hang-up discard what is pending, so one client's unread replies never
+// reach the next.
 
 #include <array>
 #include <functional>
@@ -39,8 +42,13 @@ class SerialProtocolServer {
                        Log log);
   void read();
   void write(const std::string& bytes);
+  void watch_clients(const std::string& slave_name);
+  void read_client_events();
+  void discard_pending(bool hang_up);
 
   boost::asio::posix::stream_descriptor stream_;
+  boost::asio::posix::stream_descriptor clients_{stream_.get_executor()};  ///< inotify events
+  std::array<char, 1024> events_{};
   int keep_slave_fd_ = -1;  ///< our own open slave end: reads never fail with EIO between clients
   std::string path_;
   std::string link_;  ///< the symlink we created, removed on close
