@@ -87,22 +87,20 @@ Result<std::string> current_text(const ConfigStore::SaveBase& base, bool& corrup
   }
   corrupt = true;
   const std::string head = "'" + path + "' is corrupt (" + problem + ")";
-  if (base.text_from_backup) {
-    return fail(head + " and this program's settings came from '" + path +
-                ".bak', which lacks the last change saved before the corruption; nothing saved: "
-                "repair '" +
-                path + "', or copy '" + path + ".bak' over it to accept losing that change");
-  }
   // After this program's last save, FILE.bak is the version before it; if FILE.bak is this
   // program's own version, someone saved after it, and that save is what the corruption lost.
-  if (auto backup = linux_os::read_file(path + ".bak"); backup.ok() && *backup == base.text) {
-    return fail(head +
-                " and another program saved it after this one last did; that save "
-                "cannot be recovered here; nothing saved: repair '" +
-                path + "' or restore it from '" + path + ".bak' (the version before that save)");
+  if (!base.text_from_backup) {
+    if (auto backup = linux_os::read_file(path + ".bak"); backup.ok() && *backup == base.text) {
+      return fail(head +
+                  " and another program saved it after this one last did; that save "
+                  "cannot be recovered here; nothing saved: repair '" +
+                  path + "' or restore it from '" + path + ".bak' (the version before that save)");
+    }
   }
-  notices.push_back("config " + head + ": set aside as '" + path +
-                    ".corrupt'; saved from the version this program last wrote or loaded");
+  notices.push_back("config " + head + ": set aside as '" + path + ".corrupt'; saved from " +
+                    (base.text_from_backup
+                         ? "'" + path + ".bak', which this program loaded (and said so) at start"
+                         : std::string("the version this program last wrote or loaded")));
   return base.text;
 }
 

@@ -30,9 +30,10 @@ namespace azt::app {
 ///
 /// A corrupt primary found while saving is never silently replaced by the older `.bak` (that
 /// would drop the last save): the save starts from the version this process last wrote or
-/// loaded, and the corrupt file is set aside as `FILE.corrupt`; when that version is known to
-/// be older than the lost file (it came from the backup, or another program saved after it),
-/// the save is refused, naming what would be lost.
+/// loaded (the backup only if it loaded that, with a warning at the time), and the corrupt file
+/// is set aside as `FILE.corrupt`. When another program saved after this one (FILE.bak is then
+/// this program's own version), that save is what the corruption lost: the save is refused,
+/// saying so, and nothing is written.
 ///
 /// The daemon saves off its event loop: save_base() on the loop, save_change() on a worker
 /// (it waits for the lock and fsyncs), commit() back on the loop. update() is the three at once.

@@ -2,13 +2,17 @@
 #include "config_store.hpp"
 
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "azt/linux/file_lock.hpp"
 #include "cli_error.hpp"
 
 namespace azt::app {
@@ -322,6 +326,72 @@ TEST_F(ConfigStoreTest, TheShippedDefaultSurvivesASaveUnchangedInMeaning) {
   EXPECT_EQ(reopened.config().serial.size(), store.config().serial.size());
   EXPECT_EQ(reopened.config().park[1].name, store.config().park[1].name);
   EXPECT_EQ(reopened.config().rotctld.port, 4533);
+}
+
+// Issue 12 row 7: two saves, a corrupt file, a third save. The third must build on the second
+// (this process wrote it), never on the older .bak.
+TEST_F(ConfigStoreTest, ACorruptFileIsRebuiltFromTheLastSaveNotFromTheOlderBackup) {
+  write(path_, kValid);
+  ConfigStore store = ConfigStore::open(path_);
+  ASSERT_TRUE(store.set("control.window_deg", "0.2").ok());
+  ASSERT_TRUE(store.set("control.window_deg", "0.3").ok());  // .bak now holds 0.2
+  write(path_, "\xff\xfe garbage [[[");
+  ASSERT_TRUE(store.set("target.name", "\"sun\"").ok());
+  const ConfigStore again = ConfigStore::open(path_);
+  EXPECT_DOUBLE_EQ(again.config().sim.setup.az_control.window_deg, 0.3);
+  EXPECT_EQ(again.config().start_target, "sun");
+  EXPECT_EQ(read(path_ + ".corrupt"), "\xff\xfe garbage [[[");
+  ASSERT_FALSE(store.notices().empty());
+  EXPECT_NE(store.notices().back().find("set aside"), std::string::npos) << store.notices().back();
+}
+
+TEST_F(ConfigStoreTest, ACorruptFileThatHeldAnotherProgramsSaveIsNotRebuilt) {
+  write(path_, kValid);
+  ConfigStore daemon = ConfigStore::open(path_);
+  ASSERT_TRUE(daemon.set("control.window_deg", "0.2").ok());
+  ConfigStore cli = ConfigStore::open(path_);
+  ASSERT_TRUE(cli.set("target.name", "\"moon\"").ok());  // .bak is now the daemon's version
+  write(path_, "");
+  const auto saved = daemon.set("control.window_deg", "0.5");
+  ASSERT_FALSE(saved.ok());
+  EXPECT_NE(saved.error().message.find("another program saved it"), std::string::npos)
+      << saved.error().message;
+  EXPECT_EQ(read(path_), "");  // nothing written: the operator decides
+  EXPECT_FALSE(fs::exists(path_ + ".corrupt"));
+}
+
+// Issue 12 row 3: a lock held elsewhere makes the save wait a bounded time, then fail clearly.
+TEST_F(ConfigStoreTest, AHeldLockFailsTheSaveAfterTheWaitAndChangesNothing) {
+  write(path_, kValid);
+  const ConfigStore store = ConfigStore::open(path_);
+  auto held = linux_os::FileLock::acquire(path_ + ".lock", 0.0);  // another open file: conflicts
+  ASSERT_TRUE(held.ok());
+  ConfigStore::SaveBase base = store.save_base();
+  base.lock_wait_s = 0.1;
+  const auto saved = ConfigStore::save_change(base, [](toml::table& root) {
+    root.insert_or_assign("log", toml::table{{"level", "warn"}});
+  });
+  ASSERT_FALSE(saved.ok());
+  EXPECT_NE(saved.error().message.find("held by another program"), std::string::npos)
+      << saved.error().message;
+  EXPECT_EQ(read(path_), kValid);
+}
+
+// Issue 12 row 11: temps of killed writers go at open; what is created is private.
+TEST_F(ConfigStoreTest, TempFilesOfDeadWritersGoAtOpenAndNewFilesArePrivate) {
+  write(path_, kValid);
+  pid_t dead = 4194303;  // above the usual pid_max; checked below
+  while (::kill(dead, 0) == 0 || errno == EPERM) --dead;
+  write(path_ + ".tmp." + std::to_string(dead), kValid);
+  write(path_ + ".bak.tmp." + std::to_string(dead), kValid);
+  write(path_ + ".tmp.1", kValid);  // pid 1 is alive: its writer may still finish
+  ConfigStore store = ConfigStore::open(path_);
+  EXPECT_FALSE(fs::exists(path_ + ".tmp." + std::to_string(dead)));
+  EXPECT_FALSE(fs::exists(path_ + ".bak.tmp." + std::to_string(dead)));
+  EXPECT_TRUE(fs::exists(path_ + ".tmp.1"));
+  ASSERT_TRUE(store.set("control.window_deg", "0.2").ok());
+  const auto mode = fs::status(path_ + ".lock").permissions();
+  EXPECT_EQ(mode & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
 }
 
 }  // namespace
