@@ -1,8 +1,8 @@
 #include "axis_io.hpp"
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
-#include <thread>
+#include <vector>
 
 #include "azt/control/pot_calibration.hpp"
 #include "azt/control/setpoint_drive.hpp"
@@ -12,6 +12,94 @@
 #include "cli_error.hpp"
 
 namespace azt::app {
+
+/// One ADS1115, converting for the one or two axes whose pots are wired to it, in steps across
+/// control ticks: a conversion takes about 8 ms at 128 samples/s and no handler may block the
+/// loop, so no tick waits for one. At each tick an axis polls its channel's conversion, started
+/// on an earlier tick, once; when it is done the axis fetches the result and starts the next
+/// channel's conversion (its own again when it is alone on the chip), which is done long before
+/// the next tick (20 Hz by default: 50 ms). So an axis alone on a chip costs 5 I2C messages a
+/// tick (poll: pointer + read, fetch: pointer + read, start: one write) and no wait.
+///
+/// The price is latency: a reading reaches the station one tick after its conversion started
+/// (≤ tick_s; two ticks with two axes on the chip, each then read every other tick), stamped
+/// with the tick that fetched it, as the hub's frames are stamped when they arrive. Accepted:
+/// one tick adds at most rate × tick_s of lag (3 deg/s × 50 ms = 0.15 deg), less than the pot's
+/// moving average already holds (average_samples = 4: 1.5 ticks) and well inside a relay
+/// window of 1 deg. Two axes on one chip need tick_hz > 15: the backend passes both axes on
+/// stamped with the older, up to two ticks old then, and the stale limit is 200 ms less a tick.
+class Ads1115Chip {
+ public:
+  /// Polls, one a tick, before a conversion counts as lost: 3 ticks are at least 15 ms at the
+  /// fastest tick (200 Hz), more than 1.7 conversions even with the chip's oscillator 10% slow.
+  /// At 20 Hz the first poll finds the conversion done.
+  static constexpr unsigned kMaxPolls = 3;
+
+  Ads1115Chip(std::unique_ptr<linux_os::I2cBus> bus, std::uint8_t address)
+      : bus_(std::move(bus)), adc_(*bus_, address, proto::Ads1115Range::Fs4V096) {}
+
+  [[nodiscard]] bool has_channel(unsigned channel) const {
+    return std::find(channels_.begin(), channels_.end(), channel) != channels_.end();
+  }
+  void add_channel(unsigned channel) { channels_.push_back(channel); }
+
+  /// The tick `now_s` of `channel`'s axis: its new code, nullopt while there is none (the first
+  /// tick, a conversion still running, the other axis's turn), or an error (a bus failure, a
+  /// conversion not done after kMaxPolls ticks) after which the next step starts afresh.
+  Result<std::optional<std::int16_t>> step(unsigned channel, double now_s);
+
+ private:
+  using Step = Result<std::optional<std::int16_t>>;
+
+  Step begin(unsigned channel, double now_s);
+  Step lose(Error why) {
+    in_flight_.reset();
+    return why;
+  }
+  /// The channel after `channel` in turn, the same one when it is alone.
+  [[nodiscard]] unsigned next_after(unsigned channel) const;
+
+  std::unique_ptr<linux_os::I2cBus> bus_;
+  linux_os::Ads1115Reader adc_;
+  std::vector<unsigned> channels_;
+  std::optional<unsigned> in_flight_;  ///< the channel being converted
+  double started_s_ = 0.0;             ///< the tick that started it
+  unsigned polls_ = 0;                 ///< its polls so far
+};
+
+Ads1115Chip::Step Ads1115Chip::step(unsigned channel, double now_s) {
+  if (!in_flight_) return begin(channel, now_s);
+  // Another axis's conversion, or one started by this tick's other axis: not this poll's.
+  if (*in_flight_ != channel || now_s <= started_s_) return std::optional<std::int16_t>{};
+  auto done = adc_.poll();
+  if (!done) return lose(done.error());
+  if (!done.value()) {
+    if (++polls_ < kMaxPolls) return std::optional<std::int16_t>{};
+    return lose(
+        adc_.error(channel, "conversion not done after " + std::to_string(kMaxPolls) + " ticks"));
+  }
+  auto code = adc_.fetch();
+  if (!code) return lose(code.error());
+  // A start that fails spoils only the next reading: the next step starts again and reports
+  // the failure if the bus still fails.
+  (void)begin(next_after(channel), now_s);
+  return std::optional<std::int16_t>{code.value()};
+}
+
+Ads1115Chip::Step Ads1115Chip::begin(unsigned channel, double now_s) {
+  if (auto r = adc_.start(channel); !r) return lose(r.error());
+  in_flight_ = channel;
+  started_s_ = now_s;
+  polls_ = 0;
+  return std::optional<std::int16_t>{};
+}
+
+unsigned Ads1115Chip::next_after(unsigned channel) const {
+  const auto it = std::find(channels_.begin(), channels_.end(), channel);
+  if (it == channels_.end() || it + 1 == channels_.end()) return channels_.front();
+  return *(it + 1);
+}
+
 namespace {
 
 /// An IBT-2: the bridge's PWMs, and its enables when wired to a GPIO line. The enables go high
@@ -149,25 +237,26 @@ class PotActuator final : public AxisActuator {
   std::string what_;
 };
 
+Result<SensorReading> pot_angle(const control::PotReading& r, const std::string& what) {
+  if (r.ok()) return SensorReading{r.deg};
+  return fail(what + ": " + std::string(control::to_string(r.status)));
+}
+
 class Mcp3008Sensor final : public AxisSensor {
  public:
   Mcp3008Sensor(std::unique_ptr<linux_os::SpiBus> bus, unsigned channel,
                 const control::PotInputConfig& pot, std::string what)
       : bus_(std::move(bus)), adc_(*bus_), channel_(channel), pot_(pot), what_(std::move(what)) {}
-  Result<double> read() override {
+  /// One SPI transfer: the MCP3008 converts while it clocks the result out, nothing to wait for.
+  Result<SensorReading> read(double /*now_s*/) override {
     auto code = adc_.read(channel_);
     if (!code) {
       pot_.reset();
       return code.error();
     }
-    return angle(pot_.push(code.value()), what_);
+    return pot_angle(pot_.push(code.value()), what_);
   }
   [[nodiscard]] std::string describe() const override { return what_; }
-
-  static Result<double> angle(const control::PotReading& r, const std::string& what) {
-    if (r.ok()) return r.deg;
-    return fail(what + ": " + std::string(control::to_string(r.status)));
-  }
 
  private:
   std::unique_ptr<linux_os::SpiBus> bus_;
@@ -179,26 +268,21 @@ class Mcp3008Sensor final : public AxisSensor {
 
 class Ads1115Sensor final : public AxisSensor {
  public:
-  Ads1115Sensor(std::unique_ptr<linux_os::I2cBus> bus, const HardwareAxisConfig& a,
-                std::function<void()> wait, std::string what)
-      : bus_(std::move(bus)),
-        adc_(*bus_, a.adc_address, proto::Ads1115Range::Fs4V096, std::move(wait)),
-        channel_(a.adc_channel),
-        pot_(a.pot),
-        what_(std::move(what)) {}
-  Result<double> read() override {
-    auto code = adc_.read(channel_);
+  Ads1115Sensor(std::shared_ptr<Ads1115Chip> chip, const HardwareAxisConfig& a, std::string what)
+      : chip_(std::move(chip)), channel_(a.adc_channel), pot_(a.pot), what_(std::move(what)) {}
+  Result<SensorReading> read(double now_s) override {
+    auto code = chip_->step(channel_, now_s);
     if (!code) {
       pot_.reset();
       return code.error();
     }
-    return Mcp3008Sensor::angle(pot_.push(code.value()), what_);
+    if (!code.value()) return SensorReading{};
+    return pot_angle(pot_.push(*code.value()), what_);
   }
   [[nodiscard]] std::string describe() const override { return what_; }
 
  private:
-  std::unique_ptr<linux_os::I2cBus> bus_;
-  linux_os::Ads1115Reader adc_;
+  std::shared_ptr<Ads1115Chip> chip_;
   unsigned channel_;
   control::PotInput pot_;
   std::string what_;
@@ -210,6 +294,21 @@ std::unique_ptr<linux_os::GpioOutput> output_line(HardwarePorts& ports,
   auto line = ports.gpio->output(spec, false);  // released until the station asks
   if (!line) throw UsageError(line.error().message);
   return std::move(line).value();
+}
+
+/// The ADS1115 of `a`, opened now or shared with the other axis, with `a`'s channel added.
+std::shared_ptr<Ads1115Chip> ads1115_chip(const HardwareAxisConfig& a, HardwarePorts& ports) {
+  std::shared_ptr<Ads1115Chip>& chip = ports.ads1115_chips[{a.adc_device, a.adc_address}];
+  if (!chip) {
+    auto bus = ports.open_i2c(a.adc_device);
+    if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
+    chip = std::make_shared<Ads1115Chip>(std::move(bus).value(), a.adc_address);
+  } else if (chip->has_channel(a.adc_channel)) {
+    throw UsageError(a.key("adc_channel") + ": the other axis reads channel " +
+                     std::to_string(a.adc_channel) + " of this ADS1115 already");
+  }
+  chip->add_channel(a.adc_channel);
+  return chip;
 }
 
 }  // namespace
@@ -230,7 +329,6 @@ HardwarePorts HardwarePorts::linux_devices(linux_os::GpioProvider* gpio) {
     return std::unique_ptr<linux_os::I2cBus>(
         std::make_unique<linux_os::I2cDevBus>(std::move(bus).value()));
   };
-  p.adc_wait = linux_os::sleep_one_ms;
   return p;
 }
 
@@ -284,9 +382,7 @@ std::unique_ptr<AxisSensor> make_adc_sensor(const HardwareAxisConfig& a, Hardwar
     if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
     return std::make_unique<Mcp3008Sensor>(std::move(bus).value(), a.adc_channel, a.pot, what);
   }
-  auto bus = ports.open_i2c(a.adc_device);
-  if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
-  return std::make_unique<Ads1115Sensor>(std::move(bus).value(), a, ports.adc_wait, what);
+  return std::make_unique<Ads1115Sensor>(ads1115_chip(a, ports), a, what);
 }
 
 }  // namespace azt::app

@@ -6,9 +6,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "azt/linux/gpio.hpp"
 #include "azt/linux/i2c_device.hpp"
@@ -17,15 +19,19 @@
 
 namespace azt::app {
 
+class Ads1115Chip;  // axis_io.cpp
+
 struct HardwarePorts {
   linux_os::GpioProvider* gpio = nullptr;  ///< needed by relay drives
   std::function<Result<std::unique_ptr<linux_os::SpiBus>>(const std::string& path,
                                                           std::uint32_t speed_hz)>
       open_spi;
   std::function<Result<std::unique_ptr<linux_os::I2cBus>>(const std::string& path)> open_i2c;
-  std::function<void()> adc_wait;  ///< between ADS1115 ready polls
+  /// The ADS1115s opened so far, by I2C device and address: two axes wired to one chip share it
+  /// and take turns with its conversions.
+  std::map<std::pair<std::string, std::uint8_t>, std::shared_ptr<Ads1115Chip>> ads1115_chips;
 
-  /// spidev, i2c-dev and a 1 ms sleep between polls.
+  /// spidev and i2c-dev.
   static HardwarePorts linux_devices(linux_os::GpioProvider* gpio);
 };
 
@@ -43,15 +49,21 @@ class AxisActuator {
   [[nodiscard]] virtual std::string describe() const = 0;
 };
 
+/// What a sensor has at a tick: a new angle in degrees of the calibration, or nullopt when it has
+/// nothing new yet (an ADC conversion still running). The backend takes nothing new as it takes
+/// a hub between frames: no fault, the last reading ages and goes stale if nothing follows.
+using SensorReading = std::optional<double>;
+
 class AxisSensor {
  public:
   AxisSensor() = default;
   AxisSensor(const AxisSensor&) = delete;
   AxisSensor& operator=(const AxisSensor&) = delete;
   virtual ~AxisSensor() = default;
-  /// One reading now, in degrees of the calibration; an error for a bus failure or a broken wire
-  /// (never a plausible angle made of a bad sample).
-  virtual Result<double> read() = 0;
+  /// Called once a control tick, at `now_s` on the loop's clock; never waits for a device. An
+  /// error for a bus failure, a conversion that never finishes or a broken wire (never a
+  /// plausible angle made of a bad sample).
+  virtual Result<SensorReading> read(double now_s) = 0;
   [[nodiscard]] virtual std::string describe() const = 0;
 };
 
@@ -59,7 +71,8 @@ class AxisSensor {
 /// left energized then).
 std::unique_ptr<AxisActuator> make_actuator(const HardwareAxisConfig& axis, const PwmConfig& pwm,
                                             HardwarePorts& ports);
-/// Opens the ADC of an `mcp3008` / `ads1115` sensor; throws UsageError naming the key.
+/// Opens the ADC of an `mcp3008` / `ads1115` sensor; throws UsageError naming the key. A second
+/// axis on an ADS1115 already open shares it (on another channel).
 std::unique_ptr<AxisSensor> make_adc_sensor(const HardwareAxisConfig& axis, HardwarePorts& ports);
 
 }  // namespace azt::app

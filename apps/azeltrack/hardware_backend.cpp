@@ -164,13 +164,14 @@ class HardwareBackend final : public AntennaBackend {
     last_tick_wall_ = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < sensors_.size(); ++i) {
       if (!sensors_.at(i)) continue;
-      auto r = sensors_.at(i)->read();
-      if (r) {
-        fresh_.at(i) = Sample{r.value(), now_s};
-        sensor_fault_.at(i).clear();
-      } else {
+      auto r = sensors_.at(i)->read(now_s);
+      if (!r) {
         sensor_fault_.at(i) = r.error().message;  // no reading: the station goes stale
+      } else if (r.value()) {
+        fresh_.at(i) = Sample{*r.value(), now_s};
+        sensor_fault_.at(i).clear();
       }
+      // Otherwise nothing new yet (an ADC conversion still running): as a hub between frames.
     }
   }
 

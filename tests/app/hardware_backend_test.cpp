@@ -5,10 +5,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "antenna_backend.hpp"
 #include "axis_io.hpp"
@@ -41,17 +45,21 @@ class SimSpi final : public linux_os::SpiBus {
   }
 };
 
-/// An ADS1115: a conversion is ready at the first poll and reads `code`.
+/// An ADS1115: a conversion is ready at the first poll (unless not `ready`) and reads `code`.
 class SimI2c final : public linux_os::I2cBus {
  public:
   std::function<int()> code;
   std::uint8_t pointer = 0;
+  bool ready = true;
+  int messages = 0;
   Result<bool> write(std::uint8_t /*addr*/, std::span<const std::uint8_t> bytes) override {
+    ++messages;
     if (!bytes.empty()) pointer = bytes[0];
     return true;
   }
   Result<bool> read(std::uint8_t /*addr*/, std::span<std::uint8_t> bytes) override {
-    const int v = pointer == 0x01 ? 0x8000 : std::clamp(code(), -32768, 32767);
+    ++messages;
+    const int v = pointer == 0x01 ? (ready ? 0x8000 : 0) : std::clamp(code(), -32768, 32767);
     const auto u = static_cast<std::uint16_t>(v);
     bytes[0] = static_cast<std::uint8_t>(u >> 8);
     bytes[1] = static_cast<std::uint8_t>(u & 0xFFU);
@@ -114,9 +122,9 @@ struct Rig {
       if (missing == path) return fail(path + ": No such file or directory");
       auto bus = std::make_unique<SimI2c>();
       bus->code = [this] { return static_cast<int>(std::lround(el.shaft_deg() / 90.0 * 26000.0)); };
+      el_adc = bus.get();
       return std::unique_ptr<linux_os::I2cBus>(std::move(bus));
     };
-    ports.adc_wait = [] {};
   }
 
   std::unique_ptr<AntennaBackend> open() { return make_hardware_backend(io, config, ports); }
@@ -159,6 +167,7 @@ struct Rig {
   sim::AxisPlant el;
   SimSpi* pot = nullptr;
   SimSpi* az_adc = nullptr;
+  SimI2c* el_adc = nullptr;
   std::string missing;
   bool az_wire_open = false;
   bool both_relays_on = false;
@@ -217,6 +226,67 @@ TEST(HardwareBackend, AnOpenPotWireStopsTheDriveAndIsNamed) {
   rig.az_wire_open = false;
   rig.run(*backend, go, 3.0);
   EXPECT_TRUE(backend->position(rig.t).has_value()) << "did not recover when the wire came back";
+}
+
+TEST(HardwareBackend, AnAds1115HasNoReadingAtTheFirstTickWhichIsNotAFault) {
+  // The conversion started at the first tick is read at the second: until then the elevation
+  // is a sensor that has not reported yet, as a hub before its first frame.
+  Rig rig;
+  auto backend = rig.open();
+  control::Demand go;
+  go.position = control::AzEl{100.0, 30.0};
+  backend->tick(0.0, go, control::AzEl{});
+  EXPECT_TRUE(backend->faults().empty()) << backend->faults().front();
+  EXPECT_FALSE(backend->position(0.0).has_value());
+  EXPECT_FALSE(backend->encoder_reading().has_value());
+  backend->tick(0.05, go, control::AzEl{});
+  EXPECT_TRUE(backend->faults().empty()) << backend->faults().front();
+  ASSERT_TRUE(backend->encoder_reading().has_value());
+  EXPECT_NEAR(backend->encoder_reading()->el_deg, 10.0, 0.01);
+}
+
+TEST(HardwareBackend, AnAds1115ThatNeverFinishesIsANamedSensorFaultAndRecovers) {
+  Rig rig;
+  auto backend = rig.open();
+  control::Demand go;
+  go.position = control::AzEl{100.0, 30.0};
+  rig.run(*backend, go, 1.0);
+  ASSERT_TRUE(backend->faults().empty()) << backend->faults().front();
+  ASSERT_NE(rig.el_adc, nullptr);
+  rig.el_adc->ready = false;
+  for (const double end = rig.t + 0.5; rig.t < end; rig.t += 0.05) {
+    rig.step_plants(0.05);
+    const int before = rig.el_adc->messages;
+    backend->tick(rig.t, go, control::AzEl{});
+    EXPECT_LE(rig.el_adc->messages - before, 2) << "a pending conversion: one poll a tick";
+  }
+  const auto faults = backend->faults();
+  ASSERT_FALSE(faults.empty());
+  EXPECT_NE(faults.back().find("ADS1115 at 0x48 channel 0: conversion not done after 3 ticks"),
+            std::string::npos)
+      << faults.back();
+  EXPECT_FALSE(backend->position(rig.t).has_value()) << "the elevation went stale";
+  rig.el_adc->ready = true;
+  rig.run(*backend, go, 1.0);
+  EXPECT_TRUE(backend->faults().empty()) << backend->faults().front();
+  EXPECT_TRUE(backend->position(rig.t).has_value()) << "did not recover";
+}
+
+TEST(HardwareBackend, AnAds1115TakesAtMostFiveI2cMessagesATick) {
+  // Poll (pointer, read), fetch (pointer, read), start (one write): no polling loop in a tick.
+  Rig rig;
+  auto backend = rig.open();
+  control::Demand go;
+  go.position = control::AzEl{120.0, 40.0};
+  std::map<int, int> ticks_with;  // messages in a tick -> ticks
+  for (int tick = 0; tick < 100; ++tick, rig.t += 0.05) {
+    rig.step_plants(0.05);
+    const int before = rig.el_adc->messages;
+    backend->tick(rig.t, go, control::AzEl{});
+    ++ticks_with[rig.el_adc->messages - before];
+  }
+  EXPECT_EQ(ticks_with, (std::map<int, int>{{1, 1}, {5, 99}})) << "the first tick only starts";
+  EXPECT_TRUE(backend->faults().empty()) << backend->faults().front();
 }
 
 TEST(HardwareBackend, AnSpiWriteFailureIsADriveFault) {
@@ -302,6 +372,200 @@ pot_calibration = [0, 0.0, 26000, 90.0]
     }
   }
   EXPECT_GE(polarity_changes, 3);
+}
+
+// ---- the ADS1115 sensor, tick by tick -------------------------------------------------------
+
+// No wait between polls to configure: nothing waits.
+template <typename P>
+constexpr bool kHasAdcWait = requires(P p) {
+  p.adc_wait;
+};
+static_assert(!kHasAdcWait<HardwarePorts>);
+
+using Lines = std::vector<std::string>;
+
+/// An ADS1115 behind a recording bus: each I2C message is logged ("W 48: 01 c3 83", "R 48: 2").
+/// A Config write starts a conversion of the channel in its MUX bits, which holds that channel's
+/// entry of `codes` as it is then; a Config read says done when `ready`.
+class RecordingAds1115 final : public linux_os::I2cBus {
+ public:
+  std::array<int, 4> codes{};
+  bool ready = true;
+  std::string error;
+
+  Result<bool> write(std::uint8_t addr, std::span<const std::uint8_t> bytes) override {
+    std::string line = "W " + hex(addr) + ":";
+    for (const auto b : bytes) line += " " + hex(b);
+    log_.push_back(line);
+    if (!error.empty()) return fail(error);
+    pointer_ = bytes[0];
+    if (pointer_ == 0x01 && bytes.size() == 3) {
+      converted_ = codes.at(((bytes[1] >> 4U) & 0x7U) - 4U);  // MUX 1xx: AINx against GND
+    }
+    return true;
+  }
+  Result<bool> read(std::uint8_t addr, std::span<std::uint8_t> bytes) override {
+    log_.push_back("R " + hex(addr) + ": " + std::to_string(bytes.size()));
+    if (!error.empty()) return fail(error);
+    const auto v = static_cast<std::uint16_t>(pointer_ == 0x01 ? (ready ? 0x8000 : 0) : converted_);
+    bytes[0] = static_cast<std::uint8_t>(v >> 8U);
+    bytes[1] = static_cast<std::uint8_t>(v & 0xFFU);
+    return true;
+  }
+  /// The messages since the last call: one tick's.
+  Lines take() { return std::exchange(log_, {}); }
+
+ private:
+  static std::string hex(std::uint8_t b) {
+    const char* digits = "0123456789abcdef";
+    return {digits[b >> 4U], digits[b & 0xFU]};
+  }
+
+  Lines log_;
+  std::uint8_t pointer_ = 0;
+  int converted_ = 0;
+};
+
+/// [hardware.el] of kStation (an ADS1115 at 0x48, channel 0, 0–26000 counts for 0–90°)
+/// unaveraged, its chips recorded.
+struct AdsRig {
+  AdsRig() : el(daemon_config_from(ConfigFile::parse(kStation, "hw.toml")).hardware.el) {
+    el.pot.average_samples = 1;
+    ports.open_i2c = [this](const std::string&) -> Result<std::unique_ptr<linux_os::I2cBus>> {
+      auto bus = std::make_unique<RecordingAds1115>();
+      chips.push_back(bus.get());
+      return std::unique_ptr<linux_os::I2cBus>(std::move(bus));
+    };
+  }
+  /// The elevation's settings for azimuth, on `channel` at `address`.
+  [[nodiscard]] HardwareAxisConfig az(unsigned channel, std::uint8_t address = 0x48) const {
+    HardwareAxisConfig a = el;
+    a.name = "az";
+    a.adc_channel = channel;
+    a.adc_address = address;
+    return a;
+  }
+
+  HardwareAxisConfig el;
+  HardwarePorts ports;
+  std::vector<RecordingAds1115*> chips;
+};
+
+TEST(Ads1115Sensor, AConversionStartedAtOneTickIsReadAtTheNext) {
+  AdsRig rig;
+  auto sensor = make_adc_sensor(rig.el, rig.ports);
+  ASSERT_EQ(rig.chips.size(), 1U);
+  RecordingAds1115& chip = *rig.chips[0];
+  const Lines start = {"W 48: 01 c3 83"};  // AIN0, ±4.096 V, single shot, 128 SPS
+  const Lines poll_fetch_start = {"W 48: 01", "R 48: 2", "W 48: 00", "R 48: 2", "W 48: 01 c3 83"};
+
+  chip.codes[0] = 13000;  // 45°
+  auto first = sensor->read(0.0);
+  ASSERT_TRUE(first.ok()) << first.error().message;
+  EXPECT_FALSE(first.value().has_value()) << "nothing to read at the first tick";
+  EXPECT_EQ(chip.take(), start);
+
+  chip.codes[0] = 26000;  // moved on after tick 0's conversion: in tick 1's, not in this one
+  auto second = sensor->read(0.05);
+  ASSERT_TRUE(second.ok()) << second.error().message;
+  ASSERT_TRUE(second.value().has_value());
+  EXPECT_DOUBLE_EQ(*second.value(), 45.0);
+  EXPECT_EQ(chip.take(), poll_fetch_start);
+
+  auto third = sensor->read(0.10);
+  ASSERT_TRUE(third.ok() && third.value().has_value());
+  EXPECT_DOUBLE_EQ(*third.value(), 90.0);
+  EXPECT_EQ(chip.take(), poll_fetch_start);
+}
+
+TEST(Ads1115Sensor, NeverReadyIsAnErrorAtTheThirdPollThenItStartsAgain) {
+  AdsRig rig;
+  auto sensor = make_adc_sensor(rig.el, rig.ports);
+  RecordingAds1115& chip = *rig.chips[0];
+  chip.ready = false;
+  chip.codes[0] = 13000;
+  ASSERT_TRUE(sensor->read(0.0).ok());
+  EXPECT_EQ(chip.take().size(), 1U);  // start
+  for (const double t : {0.05, 0.10}) {
+    auto pending = sensor->read(t);
+    ASSERT_TRUE(pending.ok()) << "at " << t << ": " << pending.error().message;
+    EXPECT_FALSE(pending.value().has_value());
+    EXPECT_EQ(chip.take(), (Lines{"W 48: 01", "R 48: 2"})) << "one poll at " << t;
+  }
+  auto lost = sensor->read(0.15);
+  ASSERT_FALSE(lost.ok());
+  EXPECT_EQ(lost.error().message, "ADS1115 at 0x48 channel 0: conversion not done after 3 ticks");
+  EXPECT_EQ(chip.take(), (Lines{"W 48: 01", "R 48: 2"})) << "the Conversion is never read";
+
+  chip.ready = true;
+  auto restart = sensor->read(0.20);
+  ASSERT_TRUE(restart.ok());
+  EXPECT_FALSE(restart.value().has_value());
+  EXPECT_EQ(chip.take(), (Lines{"W 48: 01 c3 83"}));
+  auto back = sensor->read(0.25);
+  ASSERT_TRUE(back.ok() && back.value().has_value());
+  EXPECT_DOUBLE_EQ(*back.value(), 45.0);
+}
+
+TEST(Ads1115Sensor, ABusErrorIsReportedAtItsTickAndTheNextStartsAgain) {
+  AdsRig rig;
+  auto sensor = make_adc_sensor(rig.el, rig.ports);
+  RecordingAds1115& chip = *rig.chips[0];
+  chip.codes[0] = 26000;
+  ASSERT_TRUE(sensor->read(0.0).ok());
+  chip.error = "/dev/i2c-1 addr 0x48: Remote I/O error (nothing answers at this address?)";
+  (void)chip.take();
+  auto r = sensor->read(0.05);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, "ADS1115 at 0x48 channel 0: " + chip.error);
+  EXPECT_EQ(chip.take().size(), 1U) << "stops at the failed pointer write";
+  chip.error.clear();
+  auto restart = sensor->read(0.10);
+  ASSERT_TRUE(restart.ok());
+  EXPECT_FALSE(restart.value().has_value());
+  auto back = sensor->read(0.15);
+  ASSERT_TRUE(back.ok() && back.value().has_value());
+  EXPECT_DOUBLE_EQ(*back.value(), 90.0);
+}
+
+TEST(Ads1115Sensor, TwoAxesOnOneChipTakeTurnsAndNeverGetEachOthersChannel) {
+  AdsRig rig;
+  auto az = make_adc_sensor(rig.az(1), rig.ports);  // the backend's order: az, then el
+  auto el = make_adc_sensor(rig.el, rig.ports);
+  ASSERT_EQ(rig.chips.size(), 1U) << "one chip, opened once";
+  RecordingAds1115& chip = *rig.chips[0];
+  chip.codes = {13000, 26000, 0, 0};  // el on AIN0: 45°, az on AIN1: 90°
+  std::vector<std::string> got;       // per tick: which axes had a reading
+  for (int tick = 0; tick < 8; ++tick) {
+    const double t = 0.05 * tick;
+    auto a = az->read(t);
+    auto e = el->read(t);
+    ASSERT_TRUE(a.ok() && e.ok()) << "tick " << tick;
+    if (a.value()) {
+      EXPECT_DOUBLE_EQ(*a.value(), 90.0);
+    }
+    if (e.value()) {
+      EXPECT_DOUBLE_EQ(*e.value(), 45.0);
+    }
+    got.push_back(std::string(a.value() ? "a" : "") + (e.value() ? "e" : ""));
+    EXPECT_LE(chip.take().size(), 5U) << "tick " << tick;
+  }
+  EXPECT_EQ(got, (Lines{"", "a", "e", "a", "e", "a", "e", "a"}));
+}
+
+TEST(Ads1115Sensor, TwoAxesOnOneChannelAreRefusedAndTwoAddressesAreTwoChips) {
+  AdsRig rig;
+  auto el = make_adc_sensor(rig.el, rig.ports);
+  try {
+    (void)make_adc_sensor(rig.az(0), rig.ports);
+    FAIL() << "two axes on AIN0";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("[hardware.az] adc_channel"), std::string::npos)
+        << e.what();
+  }
+  auto az = make_adc_sensor(rig.az(0, 0x49), rig.ports);
+  EXPECT_EQ(rig.chips.size(), 2U);
 }
 
 TEST(HardwareConfig, MistakesNameTheKey) {

@@ -10,7 +10,9 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "azt/linux/adc_devices.hpp"
@@ -161,34 +163,53 @@ TEST(Mcp3008Spi, BusErrorPropagatesWithItsMessage) {
 
 // ---- ADS1115 ------------------------------------------------------------------------------
 
-TEST(Ads1115I2c, Channel0At6V144WritesConfigPollsThenReadsConversion) {
+// Nothing in the reader waits: a reading is three steps, each of one or two I2C messages, and
+// the caller (axis_io.cpp) spreads them over its control ticks.
+template <typename R>
+constexpr bool kHasBlockingRead = requires(R r) {
+  r.read(0U);
+};
+static_assert(!kHasBlockingRead<Ads1115Reader>, "a blocking read() would wait out a conversion");
+static_assert(!std::is_constructible_v<Ads1115Reader, I2cBus&, std::uint8_t, proto::Ads1115Range,
+                                       std::function<void()>>,
+              "no wait function between polls");
+
+TEST(Ads1115I2c, Channel0At6V144StartPollPollFetchAreOneStepEach) {
   // Config for AIN0 vs GND, ±6.144 V, single shot, 128 SPS, comparator off (SBAS444 table 8):
   // OS=1 MUX=100 PGA=000 MODE=1 | DR=100 COMP_MODE=0 POL=0 LAT=0 QUE=11 = 1100'0001 1000'0011.
   RecordingI2c bus;
-  bus.reads = {Bytes{0x41, 0x83}, Bytes{0x41, 0x83}, Bytes{0xC1, 0x83},  // busy, busy, done
-               Bytes{0x12, 0x34}};
-  int waits = 0;
-  Ads1115Reader adc(bus, 0x48, proto::Ads1115Range::Fs6V144, [&waits] { ++waits; });
-  auto code = adc.read(0);
+  bus.reads = {Bytes{0x41, 0x83}, Bytes{0xC1, 0x83}, Bytes{0x12, 0x34}};  // busy, done, result
+  Ads1115Reader adc(bus, 0x48, proto::Ads1115Range::Fs6V144);
+  ASSERT_TRUE(adc.start(0).ok());
+  EXPECT_EQ(bus.log, (std::vector<std::string>{"W 48: 01 c1 83"})) << "start: one write";
+  auto busy = adc.poll();
+  ASSERT_TRUE(busy.ok()) << busy.error().message;
+  EXPECT_FALSE(*busy);
+  EXPECT_EQ(bus.log.size(), 3U) << "poll: the pointer, then one read";
+  auto done = adc.poll();
+  ASSERT_TRUE(done.ok()) << done.error().message;
+  EXPECT_TRUE(*done);
+  auto code = adc.fetch();
   ASSERT_TRUE(code.ok()) << code.error().message;
   EXPECT_EQ(*code, 0x1234);
   const std::vector<std::string> expected = {
       "W 48: 01 c1 83",             // start the conversion
-      "W 48: 01",       "R 48: 2",  // poll 1: busy
-      "W 48: 01",       "R 48: 2",  // poll 2: busy
-      "W 48: 01",       "R 48: 2",  // poll 3: done
-      "W 48: 00",       "R 48: 2",  // the Conversion register
+      "W 48: 01",       "R 48: 2",  // poll: busy
+      "W 48: 01",       "R 48: 2",  // poll: done
+      "W 48: 00",       "R 48: 2",  // fetch: the Conversion register
   };
   EXPECT_EQ(bus.log, expected);
-  EXPECT_EQ(waits, 2) << "a wait between polls, none before the first";
 }
 
 TEST(Ads1115I2c, Channel3At4V096OtherAddressAndNegativeCode) {
   // AIN3: MUX=111; ±4.096 V: PGA=001 -> 1111'0011 1000'0011.
   RecordingI2c bus;
   bus.reads = {Bytes{0xF3, 0x83}, Bytes{0xFF, 0xFE}};
-  Ads1115Reader adc(bus, 0x49, proto::Ads1115Range::Fs4V096, [] {});
-  auto code = adc.read(3);
+  Ads1115Reader adc(bus, 0x49, proto::Ads1115Range::Fs4V096);
+  ASSERT_TRUE(adc.start(3).ok());
+  auto done = adc.poll();
+  ASSERT_TRUE(done.ok() && *done);
+  auto code = adc.fetch();
   ASSERT_TRUE(code.ok()) << code.error().message;
   EXPECT_EQ(*code, -2);
   const std::vector<std::string> expected = {"W 49: 01 f3 83", "W 49: 01", "R 49: 2", "W 49: 00",
@@ -196,36 +217,53 @@ TEST(Ads1115I2c, Channel3At4V096OtherAddressAndNegativeCode) {
   EXPECT_EQ(bus.log, expected);
 }
 
-TEST(Ads1115I2c, NeverReadyGivesAnErrorAfterBoundedPolls) {
+TEST(Ads1115I2c, PollAndFetchNeedAStartedConversion) {
+  // An idle ADS1115 reads OS = 1 too: a poll without a start would pass off an old result.
   RecordingI2c bus;
-  for (unsigned i = 0; i < Ads1115Reader::kMaxPolls + 5; ++i) bus.reads.push_back({0x41, 0x83});
-  int waits = 0;
-  Ads1115Reader adc(bus, 0x48, proto::Ads1115Range::Fs6V144, [&waits] { ++waits; });
-  auto r = adc.read(0);
-  ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error().message.find("conversion did not finish"), std::string::npos)
-      << r.error().message;
-  EXPECT_NE(r.error().message.find("0x48"), std::string::npos) << r.error().message;
-  // The config write, then kMaxPolls pointer writes and reads; the Conversion never read.
-  EXPECT_EQ(bus.log.size(), 1 + 2 * std::size_t{Ads1115Reader::kMaxPolls});
-  EXPECT_EQ(waits, static_cast<int>(Ads1115Reader::kMaxPolls) - 1);
-  EXPECT_EQ(bus.log.back(), "R 48: 2");
+  Ads1115Reader adc(bus, 0x48);
+  EXPECT_FALSE(adc.poll().ok());
+  EXPECT_FALSE(adc.fetch().ok());
+  EXPECT_TRUE(bus.log.empty());
+  bus.reads = {Bytes{0xC3, 0x83}, Bytes{0x00, 0x10}};
+  ASSERT_TRUE(adc.start(0).ok());
+  ASSERT_TRUE(adc.poll().ok());
+  ASSERT_TRUE(adc.fetch().ok());
+  auto again = adc.fetch();
+  ASSERT_FALSE(again.ok()) << "a second fetch of one conversion";
+  EXPECT_NE(again.error().message.find("no conversion started"), std::string::npos)
+      << again.error().message;
+  EXPECT_EQ(bus.log.size(), 5U);
 }
 
 TEST(Ads1115I2c, BusErrorPropagatesWithItsMessage) {
   RecordingI2c bus;
   bus.error = "/dev/i2c-1 addr 0x48: Remote I/O error (nothing answers at this address?)";
-  Ads1115Reader adc(bus, 0x48, proto::Ads1115Range::Fs6V144, [] {});
-  auto r = adc.read(1);
+  Ads1115Reader adc(bus, 0x48, proto::Ads1115Range::Fs6V144);
+  auto r = adc.start(1);
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error().message.find(bus.error), std::string::npos) << r.error().message;
+  EXPECT_NE(r.error().message.find("ADS1115 at 0x48 channel 1"), std::string::npos)
+      << r.error().message;
   EXPECT_EQ(bus.log.size(), 1U) << "stops at the first failed transaction";
+  EXPECT_FALSE(adc.poll().ok()) << "a failed start started nothing";
+  EXPECT_EQ(bus.log.size(), 1U);
+}
+
+TEST(Ads1115I2c, PollErrorNamesTheChannel) {
+  RecordingI2c bus;
+  Ads1115Reader adc(bus, 0x4B);
+  ASSERT_TRUE(adc.start(2).ok());
+  bus.error = "/dev/i2c-1 addr 0x4b: Input/output error";
+  auto r = adc.poll();
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().message, "ADS1115 at 0x4b channel 2: " + bus.error);
+  EXPECT_EQ(bus.log.size(), 2U) << "the pointer write failed; no read after it";
 }
 
 TEST(Ads1115I2c, RejectsChannel4WithoutTouchingTheBus) {
   RecordingI2c bus;
-  Ads1115Reader adc(bus, 0x48, proto::Ads1115Range::Fs6V144, [] {});
-  EXPECT_FALSE(adc.read(4).ok());
+  Ads1115Reader adc(bus, 0x48, proto::Ads1115Range::Fs6V144);
+  EXPECT_FALSE(adc.start(4).ok());
   EXPECT_TRUE(bus.log.empty());
 }
 

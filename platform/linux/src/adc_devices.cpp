@@ -5,11 +5,14 @@
 namespace azt::linux_os {
 namespace {
 
-std::string ads_where(std::uint8_t address, unsigned channel) {
-  char text[40];
-  std::snprintf(text, sizeof text, "ADS1115 at 0x%02x channel %u: ", static_cast<unsigned>(address),
-                channel);
+std::string ads_at(std::uint8_t address) {
+  char text[24];
+  std::snprintf(text, sizeof text, "ADS1115 at 0x%02x", static_cast<unsigned>(address));
   return text;
+}
+
+std::string ads_where(std::uint8_t address, unsigned channel) {
+  return ads_at(address) + " channel " + std::to_string(channel) + ": ";
 }
 
 }  // namespace
@@ -42,28 +45,38 @@ Result<bool> Ads1115Reader::read_register(std::uint8_t pointer,
   return bus_.read(address_, value);
 }
 
-Result<std::int16_t> Ads1115Reader::read(unsigned channel) {
+Error Ads1115Reader::error(unsigned channel, const std::string& what) const {
+  return fail(ads_where(address_, channel) + what);
+}
+
+Result<bool> Ads1115Reader::start(unsigned channel) {
+  started_channel_.reset();
   const auto config = proto::ads1115_single_shot_config(channel, range_);
-  if (!config) return fail(ads_where(address_, channel) + "channel is not 0-3");
+  if (!config) return error(channel, "channel is not 0-3");
   const auto start = proto::ads1115_write(proto::kAds1115PointerConfig, *config);
-  if (auto r = bus_.write(address_, start); !r) {
-    return fail(ads_where(address_, channel) + r.error().message);
+  if (auto r = bus_.write(address_, start); !r) return error(channel, r.error().message);
+  started_channel_ = channel;
+  return true;
+}
+
+Result<bool> Ads1115Reader::poll() {
+  // Without a conversion started the OS bit reads 1 too (the chip idles powered down), so a
+  // poll then would pass off an old result as new.
+  if (!started_channel_) return fail(ads_at(address_) + ": no conversion started");
+  std::array<std::uint8_t, 2> config{};
+  if (auto r = read_register(proto::kAds1115PointerConfig, config); !r) {
+    return error(*started_channel_, r.error().message);
   }
-  bool ready = false;
+  return proto::ads1115_ready(config);
+}
+
+Result<std::int16_t> Ads1115Reader::fetch() {
+  if (!started_channel_) return fail(ads_at(address_) + ": no conversion started");
+  const unsigned channel = *started_channel_;
+  started_channel_.reset();
   std::array<std::uint8_t, 2> value{};
-  for (unsigned poll = 0; poll < kMaxPolls && !ready; ++poll) {
-    if (poll > 0 && wait_) wait_();
-    if (auto r = read_register(proto::kAds1115PointerConfig, value); !r) {
-      return fail(ads_where(address_, channel) + r.error().message);
-    }
-    ready = proto::ads1115_ready(value);
-  }
-  if (!ready) {
-    return fail(ads_where(address_, channel) + "conversion did not finish after " +
-                std::to_string(kMaxPolls) + " polls");
-  }
   if (auto r = read_register(proto::kAds1115PointerConversion, value); !r) {
-    return fail(ads_where(address_, channel) + r.error().message);
+    return error(channel, r.error().message);
   }
   return proto::ads1115_code(value);
 }

@@ -6,11 +6,9 @@
 #include <sys/ioctl.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <thread>
 
 namespace azt::linux_os {
 namespace {
@@ -83,7 +81,5 @@ Result<bool> I2cDevBus::message(std::uint8_t addr, std::uint16_t flags,
   }
   return true;
 }
-
-void sleep_one_ms() { std::this_thread::sleep_for(std::chrono::milliseconds(1)); }
 
 }  // namespace azt::linux_os

@@ -5,8 +5,8 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
-#include <utility>
+#include <optional>
+#include <string>
 
 #include "azt/linux/i2c_device.hpp"
 #include "azt/linux/spi_device.hpp"
@@ -30,26 +30,31 @@ class Mcp3008Reader {
 };
 
 /// ADS1115 (16 bits, 4 single-ended channels) at one I2C address, single-shot at 128 samples/s.
+/// A conversion takes about 7.8 ms (up to 10% more: the internal oscillator may run slow), far
+/// longer than a handler on the event loop may block. So a reading is three steps, none of which
+/// waits: start() a conversion, poll() it until it is done, fetch() the result. The caller spreads
+/// them over its ticks (apps/azeltrack/axis_io.cpp: one poll a tick).
 class Ads1115Reader {
  public:
   static constexpr std::uint8_t kDefaultAddress = 0x48;  ///< ADDR pin to GND
-  /// Ready polls before giving up: with a 1 ms wait, about 2.5 conversion times (7.8 ms each,
-  /// and the ADS1115's oscillator may run 10% slow).
-  static constexpr unsigned kMaxPolls = 20;
 
-  /// `wait_between_polls` runs between two ready polls (sleep_one_ms on hardware; tests pass a
-  /// no-op). An empty function waits not at all.
   explicit Ads1115Reader(I2cBus& bus, std::uint8_t address = kDefaultAddress,
-                         proto::Ads1115Range range = proto::Ads1115Range::Fs4V096,
-                         std::function<void()> wait_between_polls = sleep_one_ms)
-      : bus_(bus), address_(address), range_(range), wait_(std::move(wait_between_polls)) {}
+                         proto::Ads1115Range range = proto::Ads1115Range::Fs4V096)
+      : bus_(bus), address_(address), range_(range) {}
 
-  /// One conversion of AIN`channel` (0–3) against GND: write Config (starting it), poll the
-  /// Config register's OS bit until it is done (at most kMaxPolls reads), read Conversion.
-  Result<std::int16_t> read(unsigned channel);
+  /// Starts one conversion of AIN`channel` (0–3) against GND: one I2C write, of Config.
+  Result<bool> start(unsigned channel);
+  /// One read of the Config register (a pointer write and a read): true when the conversion
+  /// last started is done (OS bit set), false while it runs. Fails if none was started.
+  Result<bool> poll();
+  /// Reads the Conversion register (a pointer write and a read): the result of the conversion
+  /// last started, which poll() has said is done. Fails if none was started since the last fetch.
+  Result<std::int16_t> fetch();
 
   [[nodiscard]] std::uint8_t address() const { return address_; }
   [[nodiscard]] double volts_per_count() const { return proto::ads1115_volts_per_count(range_); }
+  /// An error naming the chip and the channel: "ADS1115 at 0x48 channel 2: " and `what`.
+  [[nodiscard]] Error error(unsigned channel, const std::string& what) const;
 
  private:
   Result<bool> read_register(std::uint8_t pointer, std::array<std::uint8_t, 2>& value);
@@ -57,7 +62,7 @@ class Ads1115Reader {
   I2cBus& bus_;
   std::uint8_t address_;
   proto::Ads1115Range range_;
-  std::function<void()> wait_;
+  std::optional<unsigned> started_channel_;  ///< the conversion in flight, until fetched
 };
 
 }  // namespace azt::linux_os

@@ -52,8 +52,4 @@ class I2cDevBus final : public I2cBus {
   std::string path_;
 };
 
-/// Sleeps 1 ms: the wait between an ADS1115's ready polls on real hardware (a conversion at
-/// 128 samples/s takes about 8 ms).
-void sleep_one_ms();
-
 }  // namespace azt::linux_os
