@@ -200,8 +200,10 @@ std::string_view fill_args(RotctldCommand& command, const Args& args, const Targ
       const auto direction = parse_direction(args.values[0]);
       const auto speed = parse_int(args.values[1]);
       if (!direction) return "move direction must be 2..256 (a power of two) or a keyword";
-      if (!speed || (*speed != kMoveSpeedUnchanged && (*speed < 1 || *speed > 100))) {
-        return "move speed must be 1..100 or -1";
+      // Hamlib's rotctld passes any speed to the backend, and clients send 0 ("M 16 0"); the
+      // speed is ignored here (docs/daemon.md), so every value a client may send is accepted.
+      if (!speed || *speed < kMoveSpeedUnchanged || *speed > 100) {
+        return "move speed must be 0..100 or -1";
       }
       command.direction = *direction;
       command.speed = *speed;
@@ -307,7 +309,14 @@ std::string format_get_pos(const RotctldCommand& command, double az_deg, double 
 }
 
 std::string format_get_info(const RotctldCommand& command, std::string_view info) {
-  std::string text(info);
+  // Hamlib's netrotctl reads the reply into a 64-byte buffer (rotctl -m 2 shows 63 characters
+  // of a longer one): the info is cut to fit, on a character boundary.
+  constexpr std::size_t kMaxInfoChars = 63;
+  std::string text(info.substr(0, kMaxInfoChars));
+  while (text.size() < info.size() && !text.empty() &&
+         (static_cast<unsigned char>(info[text.size()]) & 0xC0U) == 0x80U) {
+    text.pop_back();  // never split a UTF-8 sequence
+  }
   for (char& c : text) {
     if (c == '\n' || c == '\r') c = ' ';
   }
