@@ -17,7 +17,7 @@
     loginDismissed: localStorage.getItem('azt.loginbar') === 'hidden',
     sel: null, // what TRACK starts: {body, label, serverName}
     ws: null, connected: false, backoff: 250, attempts: 0, lastMsg: 0, openedAt: 0, retryTimer: 0,
-    trend: [], trendDrawn: 0, skyDrawn: 0, skyListDrawn: 0, faultsKey: '', ioKey: '', dopKey: '',
+    trend: [], trendDrawn: 0, skyDrawn: 0, skyListDrawn: 0, faultsKey: '', eventsKey: '', ioKey: '', dopKey: '',
   };
 
   // ------------------------------------------------------------------ small helpers ----------
@@ -361,6 +361,7 @@
     $('mini-mode').className = `mini-mode m-${mode}`;
     renderFaults(Array.isArray(st.faults) ? st.faults : []);
     renderIo(st.station_io);
+    renderEvents(Array.isArray(st.events) ? st.events : []);
     renderMoon(m);
     // trend
     const now = performance.now() / 1000;
@@ -383,6 +384,17 @@
     $('faults').hidden = list.length === 0;
     $('faults-plural').hidden = list.length === 1;
     $('fault-list').replaceChildren(...list.map((f) => h('li', { text: String(f) })));
+  }
+
+  // Refusals given to PC programs and changes of who commands (docs/web-api.md "events").
+  function renderEvents(list) {
+    const key = JSON.stringify(list);
+    if (key === S.eventsKey) return;
+    S.eventsKey = key;
+    if (!list.length) { $('event-list').replaceChildren(h('li', { class: 'dimtxt', text: 'none yet' })); return; }
+    $('event-list').replaceChildren(...list.slice(0, 10).map((e) => h('li', {
+      text: `${String(e.utc || '').slice(11, 19)}  ${String(e.text)}${e.count > 1 ? ` (×${e.count})` : ''}`,
+    })));
   }
 
   // E-stop, limit switches and the T/R chain (docs/web-api.md "station_io").

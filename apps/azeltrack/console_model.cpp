@@ -222,6 +222,7 @@ json DaemonConsole::state() {
             {"alt_m", obs.height_m}}},
           {"clock", {{"source", "system"}}},
           {"faults", p_.antenna.faults()},
+          {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
           {"station_io", p_.station_io ? p_.station_io() : json(nullptr)},
           {"servers", p_.servers}};
 }

@@ -16,6 +16,7 @@
 #include "config_store.hpp"
 #include "daemon_config.hpp"
 #include "off_loop.hpp"
+#include "recent_events.hpp"
 #include "satellite_tracker.hpp"
 #include "sky_follower.hpp"
 #include "web_api.hpp"
@@ -38,6 +39,7 @@ struct ConsoleParts {
   std::function<nlohmann::json()> station_io;
   /// Where saves run: the daemon's worker thread (off the event loop), or run_inline in tests.
   Offload offload = run_inline;
+  const RecentEvents* events = nullptr;  ///< refusals and changes of owner, for the state
   std::function<void(const std::string&)> log = [](const std::string&) {};
 };
 

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -22,9 +23,11 @@
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
 #include "azt/sim/pass_sim.hpp"
+#include "azt/util/valid_utf8.hpp"
 #include "cli_error.hpp"
 #include "console_server.hpp"
 #include "guarded_antenna.hpp"
+#include "recent_events.hpp"
 #include "satellite_tracker.hpp"
 #include "sequencer_runner.hpp"
 #include "sky_follower.hpp"
@@ -111,8 +114,7 @@ class Daemon {
             modes_, *antenna_, config_.target_limits(), config_.sim.setup.el_range,
             "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
                 config_.sim.station.sky.grid,
-            [this] { return now_s(); },
-            [this](const std::string& line) { log_.info("control", line, now_s()); }),
+            [this] { return now_s(); }, [this](const std::string& line) { control_event(line); }),
         // SIGHUP too: a closed terminal must stop the motors, not kill the process mid-move.
         signals_(io_, SIGINT, SIGTERM, SIGHUP),
         timer_(io_),
@@ -306,7 +308,7 @@ class Daemon {
                      [this](std::function<void()> work, std::function<void()> done) {
                        worker_.post(std::move(work), std::move(done));
                      },
-                     [](const std::string& line) { spdlog::warn("{}", line); }},
+                     &events_, [](const std::string& line) { spdlog::warn("{}", line); }},
         [](const std::string& line) { spdlog::warn("{}", line); });
     spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
   }
@@ -357,6 +359,17 @@ class Daemon {
       if (console_) console_->push_now();
     }
     notifier_.watchdog();
+  }
+
+  /// A command accepted from a new owner, or a refusal a client was given: in the journal (at
+  /// most 10 lines a minute per client) and in the console's recent events.
+  void control_event(const std::string& text) {
+    // A client's bytes may be in it: valid UTF-8, no control characters, a bounded length.
+    std::string line = valid_utf8(text.substr(0, 240));
+    std::replace_if(
+        line.begin(), line.end(), [](char c) { return c >= 0 && c < ' '; }, ' ');
+    log_.info("control " + line.substr(0, line.find(": ")), line, now_s());
+    events_.add(unix_now_s(), line);
   }
 
   void report_faults() {
@@ -411,6 +424,7 @@ class Daemon {
   std::unique_ptr<AntennaBackend> antenna_;
   SatelliteTracker satellites_;
   RateLimitedLog log_;
+  RecentEvents events_;
   StationService service_;
   asio::signal_set signals_;
   asio::steady_timer timer_;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "azt/control/axis_geometry.hpp"
+#include "azt/util/format_number.hpp"
 
 namespace azt::app {
 
@@ -20,7 +21,17 @@ StationService::StationService(control::ModeController& modes, AntennaBackend& a
       log_(std::move(log)) {}
 
 std::optional<proto::PositionReport> StationService::position() const {
-  return antenna_.position(now_());
+  auto here = antenna_.position(now_());
+  // The client gets an error (never a cached angle); the operator sees why (issue 12 §7).
+  if (!here && log_)
+    log_("a PC program: position asked for while unknown (no fresh sensor reading)");
+  return here;
+}
+
+ServiceStatus StationService::refuse(std::string_view client, ServiceStatus status,
+                                     const std::string& why) {
+  if (log_) log_(std::string(client) + ": refused: " + why);
+  return status;
 }
 
 void StationService::announce(std::string_view client, const std::string& what) {
@@ -32,12 +43,24 @@ void StationService::announce(std::string_view client, const std::string& what) 
 
 ServiceStatus StationService::goto_position(std::string_view client, double az_deg, double el_deg) {
   if (!std::isfinite(az_deg) || !std::isfinite(el_deg) || !limits_.accepts_az(az_deg) ||
-      !limits_.accepts_el(el_deg) || !control::plan_elevation(el_deg, el_range_)) {
-    return ServiceStatus::Invalid;
+      !limits_.accepts_el(el_deg)) {
+    return refuse(client, ServiceStatus::Invalid,
+                  "target az " + format_number(az_deg) + "° el " + format_number(el_deg) +
+                      "° is outside what this rotator accepts");
   }
-  if (faulted()) return ServiceStatus::Rejected;
+  if (!control::plan_elevation(el_deg, el_range_)) {
+    return refuse(client, ServiceStatus::Invalid,
+                  "target el " + format_number(el_deg) + "° is outside the elevation travel (" +
+                      format_number(el_range_.min_deg) + "° to " +
+                      format_number(el_range_.max_deg) + "°)");
+  }
+  if (faulted()) return refuse(client, ServiceStatus::Rejected, "a fault is latched");
   auto r = modes_.external(control::AzEl{control::wrap_360(az_deg), el_deg}, std::string(client));
-  if (!r) return modes_.external_locked() ? ServiceStatus::Rejected : ServiceStatus::Invalid;
+  if (!r) {
+    return refuse(client,
+                  modes_.external_locked() ? ServiceStatus::Rejected : ServiceStatus::Invalid,
+                  r.error().message);
+  }
   announce(client, "EXT position target");
   return ServiceStatus::Ok;
 }
@@ -47,8 +70,10 @@ ServiceStatus StationService::goto_axis(std::string_view client, proto::Axis axi
   std::optional<control::AzEl> base;
   if (modes_.mode() == control::Mode::External) base = modes_.fixed_target();
   if (!base) {
-    const auto here = position();
-    if (!here) return ServiceStatus::Unavailable;
+    const auto here = antenna_.position(now_());
+    if (!here)
+      return refuse(client, ServiceStatus::Unavailable,
+                    "one-axis move while the position is unknown");
     base = control::AzEl{here->az_deg, here->el_deg};
   }
   if (axis == proto::Axis::Az) {
@@ -60,9 +85,13 @@ ServiceStatus StationService::goto_axis(std::string_view client, proto::Axis axi
 }
 
 ServiceStatus StationService::move(std::string_view client, proto::AxisMotion motion) {
-  if (faulted()) return ServiceStatus::Rejected;
+  if (faulted()) return refuse(client, ServiceStatus::Rejected, "move: a fault is latched");
   auto r = modes_.external_jog(control::Jog{motion.az, motion.el}, std::string(client), now_());
-  if (!r) return modes_.external_locked() ? ServiceStatus::Rejected : ServiceStatus::Invalid;
+  if (!r) {
+    return refuse(client,
+                  modes_.external_locked() ? ServiceStatus::Rejected : ServiceStatus::Invalid,
+                  "move: " + r.error().message);
+  }
   announce(client, "EXT continuous move (stops after 1 s without traffic)");
   return ServiceStatus::Ok;
 }
@@ -87,9 +116,12 @@ void StationService::stop(std::string_view client, std::optional<proto::Axis> ax
 }
 
 ServiceStatus StationService::park(std::string_view client) {
-  if (modes_.external_locked() || faulted()) return ServiceStatus::Rejected;
+  if (faulted()) return refuse(client, ServiceStatus::Rejected, "park: a fault is latched");
+  if (modes_.external_locked()) {
+    return refuse(client, ServiceStatus::Rejected, "park: PC programs are locked out");
+  }
   auto r = modes_.park(1);
-  if (!r) return ServiceStatus::Invalid;
+  if (!r) return refuse(client, ServiceStatus::Invalid, "park: " + r.error().message);
   announce(client, "PARK");
   return ServiceStatus::Ok;
 }

@@ -31,12 +31,18 @@ class StationService final : public proto::RotatorService {
   proto::ServiceStatus park(std::string_view client) override;
   void activity(std::string_view client) override;
   [[nodiscard]] std::string info() const override { return info_; }
+  void refused(std::string_view client, std::string_view why) override {
+    (void)refuse(client, proto::ServiceStatus::Invalid, std::string(why));
+  }
 
  private:
   void announce(std::string_view client, const std::string& what);
   /// A latched fault refuses every motion request until an operator clears it; a client must not
   /// be told "RPRT 0" for a move that cannot happen.
   [[nodiscard]] bool faulted() const { return !antenna_.faults().empty(); }
+  /// Logs a refusal the client was given (rate-limited by the daemon's log) and returns it.
+  proto::ServiceStatus refuse(std::string_view client, proto::ServiceStatus status,
+                              const std::string& why);
 
   control::ModeController& modes_;
   AntennaBackend& antenna_;

@@ -128,7 +128,10 @@ class EasyCommSession final : public ProtocolSession {
  private:
   std::string answer(std::string_view text) {
     const auto line = parse_easycomm(text, version_, limits_);
-    if (!line) return {};  // EasyComm has no error reply
+    if (!line) {
+      service_.refused(client_, line.error().message);
+      return {};  // EasyComm has no error reply
+    }
     const LineRequests requests = gather(*line);
     perform(requests);
     const std::string info = requests.needs_info ? single_line(service_.info()) : std::string();

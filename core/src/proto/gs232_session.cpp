@@ -45,7 +45,10 @@ class Gs232Session final : public ProtocolSession {
  private:
   std::string answer(std::string_view line) {
     const auto command = parse_gs232(line, limits_);
-    if (!command) return format_gs232_error();
+    if (!command) {
+      service_.refused(client_, command.error().message);
+      return format_gs232_error();
+    }
     const auto status = execute(*command);
     if (status != ServiceStatus::Ok) return format_gs232_error();
     double az_deg = std::nan("");

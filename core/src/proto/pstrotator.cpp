@@ -184,7 +184,10 @@ std::string handle_pstrotator_datagram(std::string_view datagram, RotatorService
                                        std::string_view client, const TargetLimits& limits) {
   service.activity(client);
   const auto command = parse_pstrotator(datagram, limits);
-  if (!command) return {};
+  if (!command) {
+    service.refused(client, command.error().message);
+    return {};
+  }
   if (command->stop) service.stop(client, std::nullopt);
   if (command->az_deg && command->el_deg) {
     service.goto_position(client, *command->az_deg, *command->el_deg);

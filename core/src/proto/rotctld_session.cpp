@@ -55,7 +55,10 @@ class RotctldSession final : public ProtocolSession {
  private:
   std::string answer(std::string_view line) {
     auto parsed = parse_rotctld_line(line, limits_);
-    if (const auto* error = std::get_if<RotctldError>(&parsed)) return format_error(*error);
+    if (const auto* error = std::get_if<RotctldError>(&parsed)) {
+      service_.refused(client_, error->message);
+      return format_error(*error);
+    }
     return execute(std::get<RotctldCommand>(parsed));
   }
 

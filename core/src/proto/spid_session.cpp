@@ -43,7 +43,10 @@ class SpidSession final : public ProtocolSession {
  private:
   std::string answer(const SpidFrame& frame) {
     const auto command = parse_spid(std::span<const std::uint8_t>(frame), config_);
-    if (!command) return {};  // SPID has no error frame
+    if (!command) {
+      service_.refused(client_, command.error().message);
+      return {};  // SPID has no error frame
+    }
     switch (command->op) {
       case SpidOp::Set:
         // The controller never answers a set, so a refusal cannot be reported either.

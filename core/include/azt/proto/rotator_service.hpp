@@ -60,6 +60,12 @@ class RotatorService {
   virtual ServiceStatus park(std::string_view client) = 0;
   /// Any traffic from `client`: the keep-alive of a continuous move.
   virtual void activity(std::string_view client) = 0;
+  /// The session refused what `client` sent before it reached the station (a malformed line, a
+  /// target outside the limits): the operator is told, the client got its protocol's error.
+  virtual void refused(std::string_view client, std::string_view why) {
+    (void)client;
+    (void)why;
+  }
   /// One line describing the station (rotctld `_`, EasyComm `VE`).
   [[nodiscard]] virtual std::string info() const = 0;
 };
