@@ -1,5 +1,8 @@
 #include "azt/linux/worker_thread.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <utility>
 
 namespace azt::linux_os {
@@ -31,6 +34,9 @@ std::size_t WorkerThread::pending() const {
 }
 
 void WorkerThread::run() {
+  // Lowest priority: on a 2-core board an Argon2id check must never take a core from the control
+  // loop (Linux applies nice values per thread; failure only means normal priority).
+  (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
   for (;;) {
     std::pair<Work, Done> job;
     {
