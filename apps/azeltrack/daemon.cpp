@@ -256,7 +256,8 @@ class Daemon {
           },
           [this](const std::string& client, const std::string& event) {
             log_.info("rotctld", client + " " + event, now_s());
-          });
+          },
+          linux_os::TcpServerLimits{.idle_timeout_s = config_.rotctld_idle_timeout_s});
       if (!server) throw UsageError("[rotctld]: " + server.error().message);
       spdlog::info("rotctld protocol on {}:{} (rotctl -m 2 -r {}:{})", config_.rotctld.bind,
                    server.value()->port(), config_.rotctld.bind, server.value()->port());

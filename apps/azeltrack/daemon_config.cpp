@@ -299,7 +299,15 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   if (c.backend == "hamlib" && !hamlib.present()) {
     antenna.fail("backend", "is \"hamlib\" but there is no [hamlib] table");
   }
-  c.rotctld = read_net(file.section("rotctld", {"bind", "port"}), c.rotctld);
+  const ConfigSection rotctld = file.section("rotctld", {"bind", "port", "idle_timeout_s"});
+  c.rotctld = read_net(rotctld, c.rotctld);
+  if (const auto idle = rotctld.number("idle_timeout_s")) {
+    // 0 turns it off; below 10 s a client polling every few seconds would be cut.
+    if (*idle != 0.0 && !(*idle >= 10.0 && *idle <= 86400.0)) {
+      rotctld.fail("idle_timeout_s", "must be 0 (never) or 10 to 86400 seconds");
+    }
+    c.rotctld_idle_timeout_s = *idle;
+  }
   const ConfigSection pst = file.section("pstrotator", {"bind", "port", "reply_port"});
   c.pstrotator = read_net(pst, c.pstrotator);
   c.pstrotator_reply_port =

@@ -82,6 +82,8 @@ struct DaemonConfig {
   HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
   SatellitesConfig satellites;
   NetServerConfig rotctld{"127.0.0.1", 4533};
+  /// A rotctld client silent this long is disconnected (0: never); Gpredict polls every second.
+  double rotctld_idle_timeout_s = 600.0;
   std::vector<SerialServerConfig> serial;
   NetServerConfig pstrotator{"127.0.0.1", 12000};
   WebConfig web;
