@@ -94,11 +94,21 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   auto cal = control::PotCalibration::make((*p)[0], (*p)[1], (*p)[2], (*p)[3]);
   if (!cal) s.fail("pot_calibration", cal.error().message);
   a.pot.calibration = *cal;
-  if (const auto lo = s.integer("open_below_counts"))
+  // Checked before narrowing: 4294967297 must be an error, never 1 (issue 12 row 9).
+  const std::int64_t max_counts = std::int64_t{1} << a.pot.adc.bits;
+  if (const auto lo = s.integer("open_below_counts")) {
+    if (*lo < 0 || *lo > max_counts) s.fail("open_below_counts", "must be 0 to the ADC's range");
     a.pot.open_below_counts = static_cast<std::int32_t>(*lo);
-  if (const auto hi = s.integer("open_above_counts"))
+  }
+  if (const auto hi = s.integer("open_above_counts")) {
+    if (*hi < 0 || *hi > max_counts) s.fail("open_above_counts", "must be 0 to the ADC's range");
     a.pot.open_above_counts = static_cast<std::int32_t>(*hi);
-  a.pot.average_samples = static_cast<std::size_t>(s.integer("average_samples").value_or(4));
+  }
+  const auto samples = s.integer("average_samples").value_or(4);
+  if (samples < 1 || samples > static_cast<std::int64_t>(control::MovingAverage::kCapacity)) {
+    s.fail("average_samples", "must be 1 to " + std::to_string(control::MovingAverage::kCapacity));
+  }
+  a.pot.average_samples = static_cast<std::size_t>(samples);
   if (auto ok = control::PotInputConfig::make(a.pot); !ok)
     s.fail("pot_calibration", ok.error().message);
 }

@@ -601,6 +601,19 @@ TEST(HardwareConfig, MistakesNameTheKey) {
                      "relay_reverse = 6\n")
                 .find("same line as [gpio] estop"),
             std::string::npos);
+  // Issue 12 row 9: numbers are checked before they are narrowed (4294967297 is not 1).
+  const std::string pot =
+      "[hardware.az]\nsensor = \"mcp3008\"\nadc_device = \"/dev/spidev0.1\"\n"
+      "pot_calibration = [0, 0, 1000, 450]\n";
+  EXPECT_EQ(error_of(pot + "open_below_counts = 1\n"), "");
+  EXPECT_NE(error_of(pot + "open_below_counts = 4294967297\n")
+                .find("[hardware.az].open_below_counts"),
+            std::string::npos);
+  EXPECT_NE(error_of(pot + "open_above_counts = -4294967295\n")
+                .find("[hardware.az].open_above_counts"),
+            std::string::npos);
+  EXPECT_NE(error_of(pot + "average_samples = -1\n").find("[hardware.az].average_samples"),
+            std::string::npos);
 }
 
 }  // namespace
