@@ -161,7 +161,10 @@ class Daemon {
         std::move(inner), config_.gpio,
         GuardParts{gpio_.get(), sequencer_.get(), latch, [this] { return now_s(); },
                    [this] { modes_.stop(); },
-                   [](const std::string& line) { spdlog::warn("{}", line); }});
+                   [](const std::string& line) { spdlog::warn("{}", line); },
+                   [this](std::function<void()> work, std::function<void()> done) {
+                     worker_.post(std::move(work), std::move(done));
+                   }});
     guard_ = guarded.get();
     return guarded;
   }
@@ -415,6 +418,10 @@ class Daemon {
   DaemonOptions options_;
   SteadyClock::time_point start_;
   asio::io_context io_;
+  /// Password checks, configuration saves, the E-stop latch file: what may block, off the loop.
+  /// Its jobs' work halves touch only what they captured, and their done halves run only on the
+  /// loop, so it may outlive the parts they report to (it is joined after them).
+  linux_os::WorkerThread worker_{io_};
   std::unique_ptr<astro::Ephemeris> ephemeris_;
   SkyFollower sky_;
   control::ModeController modes_;
@@ -437,9 +444,6 @@ class Daemon {
   std::vector<std::unique_ptr<linux_os::SerialProtocolServer>> serial_;
   std::unique_ptr<linux_os::UdpDatagramServer> pstrotator_;
   std::unique_ptr<ConsoleServer> console_;
-  /// Password checks and configuration saves (off the loop). Declared after what its jobs'
-  /// done halves use, so it is joined before they are destroyed.
-  linux_os::WorkerThread worker_{io_};
   std::vector<std::string> last_faults_;
   std::string last_summary_;  ///< mode, owner and fault count at the last tick
   bool stopping_ = false;

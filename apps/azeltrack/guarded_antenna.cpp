@@ -1,5 +1,7 @@
 #include "guarded_antenna.hpp"
 
+#include <memory>
+
 #include <filesystem>
 
 #include "azt/linux/atomic_file.hpp"
@@ -78,10 +80,18 @@ void GuardedAntenna::latch(const std::string& why) {
   latched_ = true;
   latch_reason_ = why;
   parts_.log("E-STOP: " + why + ": drives off, PTT chain released, latched");
-  if (auto saved = linux_os::write_file_atomically(parts_.latch_path, why + "\n"); !saved) {
-    parts_.log("E-stop latch not saved (a restart would not remember it): " +
-               saved.error().message);
-  }
+  // The drives are already off; only the memory of it for a restart waits for the disk.
+  auto error = std::make_shared<std::string>();
+  parts_.offload(
+      [error, path = parts_.latch_path, text = why + "\n"] {
+        if (auto saved = linux_os::write_file_atomically(path, text); !saved) {
+          *error = saved.error().message;
+        }
+      },
+      [error, log = parts_.log] {
+        if (!error->empty())
+          log("E-stop latch not saved (a restart would not remember it): " + *error);
+      });
 }
 
 void GuardedAntenna::tick(double now_s, const control::Demand& demand, const control::AzEl& rate) {
@@ -114,17 +124,23 @@ std::vector<std::string> GuardedAntenna::faults() const {
 
 void GuardedAntenna::clear_faults() {
   if (latched_ && !(estop_ && estop_->active())) {
-    std::error_code ec;
-    std::filesystem::remove(parts_.latch_path, ec);
-    if (ec) {
-      parts_.log("E-stop latch kept: cannot remove " + parts_.latch_path + ": " + ec.message());
-    } else {
-      std::filesystem::remove(parts_.latch_path + ".bak", ec);
-      latched_ = false;
-      latch_reason_.clear();
-      parts_.log("E-stop latch cleared by the operator");
-      if (parts_.sequencer != nullptr) parts_.sequencer->set_inhibit(false);
-    }
+    latched_ = false;
+    latch_reason_.clear();
+    parts_.log("E-stop latch cleared by the operator");
+    if (parts_.sequencer != nullptr) parts_.sequencer->set_inhibit(false);
+    // After any latch write still queued; a file that cannot go means a restart comes up
+    // latched, the safe side, and the operator is told.
+    auto error = std::make_shared<std::string>();
+    parts_.offload(
+        [error, path = parts_.latch_path] {
+          std::error_code ec;
+          std::filesystem::remove(path, ec);
+          if (ec) *error = "cannot remove " + path + ": " + ec.message();
+          std::filesystem::remove(path + ".bak", ec);
+        },
+        [error, log = parts_.log] {
+          if (!error->empty()) log("E-stop latch file kept (a restart starts latched): " + *error);
+        });
   }
   if (parts_.sequencer != nullptr) parts_.sequencer->clear_fault();
   // The backend's own E-stop fault stays while the latch does.

@@ -18,6 +18,7 @@
 #include "antenna_backend.hpp"
 #include "azt/linux/gpio.hpp"
 #include "daemon_config.hpp"
+#include "off_loop.hpp"
 #include "sequencer_runner.hpp"
 
 namespace azt::app {
@@ -29,6 +30,9 @@ struct GuardParts {
   std::function<double()> now_s;           ///< the control loop's clock
   std::function<void()> on_estop;          ///< the daemon's reaction (mode to STOP)
   std::function<void(const std::string&)> log;
+  /// Where the latch file is written (an fsync): the daemon's worker, never the loop. Writes and
+  /// removals run in the order asked, so a clear after a latch leaves no file.
+  Offload offload = run_inline;
 };
 
 class GuardedAntenna final : public AntennaBackend {

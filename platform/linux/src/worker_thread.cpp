@@ -13,7 +13,6 @@ WorkerThread::~WorkerThread() {
   {
     const std::lock_guard lock(mutex_);
     stopping_ = true;
-    jobs_.clear();
   }
   wake_.notify_all();
   thread_.join();
@@ -42,7 +41,9 @@ void WorkerThread::run() {
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
-      if (stopping_) return;
+      // Stopping still finishes what was asked (an E-stop latch write, a save): only the done
+      // halves are lost, with the loop that would have run them.
+      if (jobs_.empty()) return;
       job = std::move(jobs_.front());
       jobs_.pop_front();
       running_ = 1;
@@ -53,7 +54,7 @@ void WorkerThread::run() {
       job.first();
     } catch (...) {  // NOLINT(bugprone-empty-catch): the done half reports the missing result
     }
-    boost::asio::post(io_, std::move(job.second));
+    boost::asio::post(io_, std::move(job.second));  // never run once the loop has ended
     const std::lock_guard lock(mutex_);
     running_ = 0;
   }

@@ -22,7 +22,8 @@ class WorkerThread {
   using Done = std::function<void()>;
 
   explicit WorkerThread(boost::asio::io_context& io);
-  /// Finishes the job in progress, drops the queued ones, joins. Their `done` halves never run.
+  /// Finishes every job asked for (a queued E-stop latch write must reach the disk), then joins.
+  /// The `done` halves of jobs finished after the loop ended never run.
   ~WorkerThread();
   WorkerThread(const WorkerThread&) = delete;
   WorkerThread& operator=(const WorkerThread&) = delete;
@@ -30,7 +31,7 @@ class WorkerThread {
   /// Queues a job. `work` must not touch loop state; it hands its outcome to `done` through what
   /// both capture. An exception escaping `work` is contained and `done` still runs (finding no
   /// outcome), so a failed job is reported, never lost.
-  void post(Work work, Done done);
+  void post(Work work, Done done);  ///< ignored once the destructor has begun
   /// Jobs queued or running (for bounds and tests).
   [[nodiscard]] std::size_t pending() const;
 
