@@ -369,7 +369,7 @@ void DaemonConsole::act(const std::string& action, const json& body, ActDone don
     return;
   }
   using Act = void (DaemonConsole::*)(const json&, ActDone);
-  static const std::map<std::string, Act, std::less<>> kSaves = {
+  static const std::map<std::string, Act, std::less<>> save_actions = {
       {"correction", &DaemonConsole::act_correction},
       {"config/station", &DaemonConsole::act_station},
       {"config/band", &DaemonConsole::act_band},
@@ -378,8 +378,8 @@ void DaemonConsole::act(const std::string& action, const json& body, ActDone don
       {"config/tilt", &DaemonConsole::act_tilt},
       {"config/park", &DaemonConsole::act_park},
       {"config/control", &DaemonConsole::act_control}};
-  const auto it = kSaves.find(action);
-  if (it == kSaves.end()) throw ApiError(404, "", "no such action: " + action);
+  const auto it = save_actions.find(action);
+  if (it == save_actions.end()) throw ApiError(404, "", "no such action: " + action);
   (this->*(it->second))(body, std::move(done));
 }
 

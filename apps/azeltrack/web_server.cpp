@@ -58,6 +58,7 @@ struct WebServer::Shared {
   void prune();
   [[nodiscard]] std::size_t live();
   [[nodiscard]] std::size_t from(const std::string& peer);
+  [[nodiscard]] std::size_t websockets();
   [[nodiscard]] std::size_t anonymous_websockets();
   /// Closes the oldest connection without a session; false if every one has a session.
   bool evict_one_anonymous();
@@ -230,8 +231,10 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
     }
     const unsigned version = req.version();
     const bool keep_alive = req.keep_alive();
-    shared_->callbacks.handler(request, [self = shared_from_this(), version, keep_alive](
-                                            WebReply r) { self->reply(r, version, keep_alive); });
+    shared_->callbacks.handler(request,
+                               [self = shared_from_this(), version, keep_alive](const WebReply& r) {
+                                 self->reply(r, version, keep_alive);
+                               });
   }
 
   void upgrade(const http::request<http::string_body>& req, const WebRequest& request) {
@@ -242,6 +245,11 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
     if (!has_session && shared_->anonymous_websockets() >= WebServer::kMaxAnonymousWebSockets) {
       reply(plain_error(503, "too many live views without a login: log in to get one"),
             req.version(), false);
+      return;
+    }
+    // Live views never take the slots that requests need: a STOP always finds a connection.
+    if (shared_->websockets() >= WebServer::kMaxWebSockets) {
+      reply(plain_error(503, "too many live views open"), req.version(), false);
       return;
     }
     stream_.expires_never();
@@ -292,6 +300,12 @@ std::size_t WebServer::Shared::from(const std::string& peer) {
   return static_cast<std::size_t>(
       std::count_if(connections.begin(), connections.end(),
                     [&](const auto& w) { return w.lock()->peer == peer; }));
+}
+
+std::size_t WebServer::Shared::websockets() {
+  prune();
+  return static_cast<std::size_t>(std::count_if(connections.begin(), connections.end(),
+                                                [](auto& w) { return w.lock()->websocket; }));
 }
 
 std::size_t WebServer::Shared::anonymous_websockets() {

@@ -8,7 +8,8 @@
 // The operator can always reach STOP (issue 12): at most kMaxPerAddress connections from one
 // address; at most kMaxConnections in all, and when they are taken a new connection evicts the
 // oldest one that has shown no session, so a logged-in console is never pushed out by strangers;
-// WebSockets without a session share a pool of kMaxAnonymousWebSockets. An exception from a
+// WebSockets without a session share a pool of kMaxAnonymousWebSockets, and WebSockets of any
+// kind take at most kMaxWebSockets, so requests (a STOP) always find room. An exception from a
 // handler closes that one connection with a log line; the server carries on.
 
 #include <cstddef>
@@ -68,6 +69,8 @@ class WebServer {
   static constexpr std::size_t kMaxConnections = 128;
   static constexpr std::size_t kMaxPerAddress = 32;
   static constexpr std::size_t kMaxAnonymousWebSockets = 16;
+  /// Live views of any kind: the other half of kMaxConnections stays for requests.
+  static constexpr std::size_t kMaxWebSockets = 64;
 
   static Result<std::unique_ptr<WebServer>> open(boost::asio::io_context& io,
                                                  const std::string& bind_address,

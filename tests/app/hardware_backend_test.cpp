@@ -606,12 +606,12 @@ TEST(HardwareConfig, MistakesNameTheKey) {
       "[hardware.az]\nsensor = \"mcp3008\"\nadc_device = \"/dev/spidev0.1\"\n"
       "pot_calibration = [0, 0, 1000, 450]\n";
   EXPECT_EQ(error_of(pot + "open_below_counts = 1\n"), "");
-  EXPECT_NE(error_of(pot + "open_below_counts = 4294967297\n")
-                .find("[hardware.az].open_below_counts"),
-            std::string::npos);
-  EXPECT_NE(error_of(pot + "open_above_counts = -4294967295\n")
-                .find("[hardware.az].open_above_counts"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(pot + "open_below_counts = 4294967297\n").find("[hardware.az].open_below_counts"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of(pot + "open_above_counts = -4294967295\n").find("[hardware.az].open_above_counts"),
+      std::string::npos);
   EXPECT_NE(error_of(pot + "average_samples = -1\n").find("[hardware.az].average_samples"),
             std::string::npos);
 }
