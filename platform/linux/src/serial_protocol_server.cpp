@@ -145,6 +145,12 @@ void SerialProtocolServer::read() {
                               if (log_) log_("read failed, server stopped: " + ec.message());
                               return;
                             }
+                            // A client's hang-up queued before these bytes were handled makes
+                            // them the leaving client's: dropped, never answered to the next.
+                            if (drain_client_events()) {
+                              read();
+                              return;
+                            }
                             std::string reply;
                             try {
                               reply = session_->feed(std::string_view(buffer_.data(), n));
@@ -179,25 +185,45 @@ void SerialProtocolServer::read_client_events() {
   clients_.async_read_some(asio::buffer(events_),
                            [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
                              if (!*alive || ec) return;
-                             std::uint32_t mask = 0;
-                             for (std::size_t at = 0; at + sizeof(inotify_event) <= n;) {
-                               inotify_event event{};
-                               std::memcpy(&event, events_.data() + at, sizeof event);
-                               mask |= event.mask;
-                               at += sizeof(inotify_event) + event.len;
-                             }
-                             if ((mask & IN_CLOSE) != 0U) discard_pending(true);
-                             if ((mask & IN_OPEN) != 0U) discard_pending(false);
+                             (void)apply_client_events(events_.data(), n);
                              read_client_events();
                            });
 }
 
+bool SerialProtocolServer::apply_client_events(const char* data, std::size_t size) {
+  bool hung_up = false;
+  for (std::size_t at = 0; at + sizeof(inotify_event) <= size;) {
+    inotify_event event{};
+    std::memcpy(&event, data + at, sizeof event);
+    at += sizeof(inotify_event) + event.len;
+    // In the order they happened: a client that left, then the next one that opened.
+    if ((event.mask & IN_CLOSE) != 0U) {
+      discard_pending(true);
+      hung_up = true;
+    }
+    if ((event.mask & IN_OPEN) != 0U) discard_pending(false);
+  }
+  return hung_up;
+}
+
+bool SerialProtocolServer::drain_client_events() {
+  if (!clients_.is_open()) return false;
+  bool hung_up = false;
+  std::array<char, 1024> events{};
+  for (;;) {
+    const ssize_t n = ::read(clients_.native_handle(), events.data(), events.size());
+    if (n <= 0) return hung_up;  // EAGAIN: nothing more queued
+    hung_up = apply_client_events(events.data(), static_cast<std::size_t>(n)) || hung_up;
+  }
+}
+
 void SerialProtocolServer::discard_pending(bool hang_up) {
   // What a client that left did not read must not greet the next one (issue 12 row 8): the
-  // replies queued towards the slave go, and at a hang-up its unread commands too.
+  // replies queued towards the slave go (the slave's input), and at a hang-up the commands it
+  // wrote that are not read yet (the master's input) and the replies not yet written.
   pending_.clear();
   (void)::tcflush(keep_slave_fd_, TCIFLUSH);
-  if (hang_up) (void)::tcflush(keep_slave_fd_, TCOFLUSH);
+  if (hang_up) (void)::tcflush(stream_.native_handle(), TCIFLUSH);
   if (log_) log_(hang_up ? "client closed the port" : "client opened the port");
 }
 

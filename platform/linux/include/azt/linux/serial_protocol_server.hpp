@@ -44,6 +44,10 @@ class SerialProtocolServer {
   void write(const std::string& bytes);
   void watch_clients(const std::string& slave_name);
   void read_client_events();
+  /// Acts on inotify events in order; true if a client hung up.
+  bool apply_client_events(const char* data, std::size_t size);
+  /// Reads and acts on the events already queued, before input is handled; true on a hang-up.
+  bool drain_client_events();
   void discard_pending(bool hang_up);
 
   boost::asio::posix::stream_descriptor stream_;
