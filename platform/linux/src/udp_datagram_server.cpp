@@ -40,25 +40,32 @@ void UdpDatagramServer::close() {
 }
 
 void UdpDatagramServer::receive() {
-  socket_.async_receive_from(
-      asio::buffer(buffer_), sender_,
-      [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
-        if (!*alive) return;
-        if (!ec) {
-          const std::string client =
-              name_ + " " + sender_.address().to_string() + ":" + std::to_string(sender_.port());
-          std::string reply = handler_(std::string_view(buffer_.data(), n), client);
-          if (!reply.empty()) {
-            udp::endpoint to = sender_;
-            if (reply_port_ != 0) to.port(reply_port_);
-            boost::system::error_code send_ec;
-            // Datagrams are small and the socket is non-blocking-safe for them; a dropped reply
-            // is what UDP means anyway.
-            socket_.send_to(asio::buffer(reply), to, 0, send_ec);
-          }
-        }
-        receive();
-      });
+  socket_.async_receive_from(asio::buffer(buffer_), sender_,
+                             [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
+                               if (!*alive) return;
+                               if (!ec) {
+                                 const std::string client = name_ + " " +
+                                                            sender_.address().to_string() + ":" +
+                                                            std::to_string(sender_.port());
+                                 std::string reply;
+                                 try {
+                                   reply = handler_(std::string_view(buffer_.data(), n), client);
+                                 } catch (const std::exception&) {
+                                   // A fault handling one datagram drops that datagram, never the
+                                   // daemon (issue 12).
+                                   reply.clear();
+                                 }
+                                 if (!reply.empty()) {
+                                   udp::endpoint to = sender_;
+                                   if (reply_port_ != 0) to.port(reply_port_);
+                                   boost::system::error_code send_ec;
+                                   // Datagrams are small and the socket is non-blocking-safe for
+                                   // them; a dropped reply is what UDP means anyway.
+                                   socket_.send_to(asio::buffer(reply), to, 0, send_ec);
+                                 }
+                               }
+                               receive();
+                             });
 }
 
 }  // namespace azt::linux_os
