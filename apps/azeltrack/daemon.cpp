@@ -192,7 +192,10 @@ class Daemon {
 
   int run() {
     linux_os::install_crash_handlers();
-    satellites_.poll_file(unix_now_s());
+    satellites_.poll_file(unix_now_s());  // at once: the start target may be a satellite
+    satellites_.set_offload([this](std::function<void()> work, std::function<void()> done) {
+      worker_.post(std::move(work), std::move(done));
+    });
     start_target();
     open_servers();
     signals_.async_wait([this](boost::system::error_code ec, int signal) {

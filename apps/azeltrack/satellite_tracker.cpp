@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <memory>
 
 namespace azt::app {
 namespace {
@@ -38,13 +39,40 @@ void SatelliteTracker::poll_file(double unix_s) {
     return;
   }
   file_mtime_ = mtime;
-  SatelliteCatalogue fresh;
-  try {
-    fresh = SatelliteCatalogue::load(s_.file);
-  } catch (const std::exception& e) {
-    log_(std::string("satellites: ") + e.what() + "; keeping the previous catalogue");
+  // The first load is at once (the start target may be a satellite); a reload of a changed file
+  // (a CelesTrak catalogue is megabytes) is read and parsed off the loop when it can be.
+  if (!offload_ || !loaded_once_) {
+    adopt(load_catalogue(s_.file), unix_s);
     return;
   }
+  if (loading_) {
+    file_mtime_.reset();  // look again at the next poll
+    return;
+  }
+  loading_ = true;
+  auto fresh = std::make_shared<Loaded>();
+  offload_([fresh, file = s_.file] { *fresh = load_catalogue(file); },
+           [this, fresh, unix_s] {
+             loading_ = false;
+             adopt(std::move(*fresh), unix_s);
+           });
+}
+
+SatelliteTracker::Loaded SatelliteTracker::load_catalogue(const std::string& file) {
+  try {
+    return Loaded{SatelliteCatalogue::load(file), {}};
+  } catch (const std::exception& e) {
+    return Loaded{{}, e.what()};
+  }
+}
+
+void SatelliteTracker::adopt(Loaded loaded, double unix_s) {
+  loaded_once_ = true;
+  if (!loaded.error.empty()) {
+    log_("satellites: " + loaded.error + "; keeping the previous catalogue");
+    return;
+  }
+  SatelliteCatalogue& fresh = loaded.catalogue;
   for (const auto& e : fresh.errors()) log_("satellites: " + e);
   if (fresh.satellites().empty() && !catalogue_.satellites().empty()) {
     log_("satellites: " + s_.file + " holds no usable element set; keeping the previous catalogue");

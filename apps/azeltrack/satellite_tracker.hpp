@@ -15,6 +15,7 @@
 #include "azt/control/modes.hpp"
 #include "azt/orbit/passes.hpp"
 #include "azt/track/pass_plan.hpp"
+#include "off_loop.hpp"
 #include "satellites.hpp"
 
 namespace azt::app {
@@ -31,8 +32,11 @@ class SatelliteTracker {
  public:
   SatelliteTracker(SatelliteSettings settings, std::function<void(const std::string&)> log);
 
-  /// Re-reads the file if its modification time changed (checked every 10 s of `unix_s`).
+  /// Re-reads the file if its modification time changed (checked every 10 s of `unix_s`). The
+  /// first read is at once; later ones run through `offload` when one is set (the daemon's
+  /// worker), and the new catalogue is adopted when the read is done.
   void poll_file(double unix_s);
+  void set_offload(Offload offload) { offload_ = std::move(offload); }
   [[nodiscard]] const SatelliteCatalogue& catalogue() const { return catalogue_; }
 
   /// Starts following a satellite (name or NORAD number); the error names it.
@@ -63,12 +67,21 @@ class SatelliteTracker {
     track::PassPlan plan;
     std::vector<track::SkyPoint> sky;
   };
+  struct Loaded {
+    SatelliteCatalogue catalogue;
+    std::string error;  ///< non-empty: the file could not be read
+  };
+  static Loaded load_catalogue(const std::string& file);
+  void adopt(Loaded loaded, double unix_s);
   void plan_next(double unix_s, double mount_az_deg);
   [[nodiscard]] const Satellite* current() const;
 
   SatelliteSettings s_;
   std::function<void(const std::string&)> log_;
   SatelliteCatalogue catalogue_;
+  Offload offload_;
+  bool loaded_once_ = false;
+  bool loading_ = false;
   std::optional<double> file_mtime_;
   double last_poll_s_ = -1e9;
   std::optional<std::string> following_;  ///< NORAD number of the followed satellite
