@@ -19,9 +19,9 @@
 #include <string>
 
 #include "azt/linux/asio.hpp"
-#include "azt/proto/hub_frame.hpp"
 #include "config_store.hpp"
 #include "daemon.hpp"
+#include "fake_pwm_station.hpp"
 
 namespace azt::app {
 namespace {
@@ -38,52 +38,32 @@ unsigned short free_port() {
 class DaemonFailSafeTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("azt_fail_safe_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "pwmchip0");
-    std::ofstream(dir_ / "pwmchip0" / "export") << "";
-    for (int ch = 0; ch < 4; ++ch) {
-      const fs::path p = dir_ / "pwmchip0" / ("pwm" + std::to_string(ch));
-      fs::create_directories(p);
-      for (const char* f : {"period", "duty_cycle", "enable"}) std::ofstream(p / f) << "0";
-    }
-    master_ = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
-    ASSERT_GE(master_, 0);
-    ASSERT_EQ(grantpt(master_), 0);
-    ASSERT_EQ(unlockpt(master_), 0);
-    std::array<char, 128> name{};
-    ASSERT_EQ(ptsname_r(master_, name.data(), name.size()), 0);
-    fs::create_symlink(name.data(), dir_ / "hub");
+    station_.make("azt_fail_safe", O_NONBLOCK);
     port_ = free_port();
-    std::ofstream(dir_ / "azeltrack.toml")
-        << "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"pwm\"\n[hub]\ndevice = \""
-        << (dir_ / "hub").string() << "\"\n[pwm]\nchip = \"" << (dir_ / "pwmchip0").string()
-        << "\"\n[sim.az]\nencoder_bits = 12\nstart_deg = 180.0\n"
+    std::ofstream(dir() / "azeltrack.toml")
+        << "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"pwm\"\n"
+        << station_.config_tables()
+        << "[sim.az]\nencoder_bits = 12\nstart_deg = 180.0\n"
            "[sim.el]\nencoder_bits = 12\nstart_deg = 10.0\n[target]\nname = \"stop\"\n"
            "[rotctld]\nport = "
         << port_ << "\n[pstrotator]\nport = 0\n[web]\nport = 0\n";
   }
-  void TearDown() override {
-    if (master_ >= 0) ::close(master_);
-    fs::remove_all(dir_);
-  }
+  void TearDown() override { station_.remove(); }
+  [[nodiscard]] const fs::path& dir() const { return station_.dir(); }
 
   [[nodiscard]] std::string file(int channel, const char* name) const {
-    std::ifstream in(dir_ / "pwmchip0" / ("pwm" + std::to_string(channel)) / name);
-    std::string v;
-    in >> v;
-    return v;
+    return station_.attribute(channel, name);
   }
 
   /// Runs the daemon: hub frames every 20 ms (the antenna stays at 180°), a rotctld client asks
   /// for 200°; once the azimuth bridge drives, `fault` runs on the loop. Returns the exit code.
   int run_until_driven_then(const std::function<void()>& fault) {
-    ConfigStore store = ConfigStore::open((dir_ / "azeltrack.toml").string());
+    ConfigStore store = ConfigStore::open((dir() / "azeltrack.toml").string());
     DaemonOptions options;
-    options.config_path = (dir_ / "azeltrack.toml").string();
+    options.config_path = (dir() / "azeltrack.toml").string();
     options.run_for_s = 15.0;  // a bound, never reached when the test passes
     options.on_loop_started = [this, fault](asio::io_context& io) {
-      (void)::write(master_, "\0", 1);
+      (void)::write(station_.master(), "\0", 1);
       auto client = std::make_shared<asio::ip::tcp::socket>(io);
       client->connect({asio::ip::make_address("127.0.0.1"), port_});
       asio::write(*client, asio::buffer(std::string("P 200 10\n")));
@@ -106,12 +86,7 @@ class DaemonFailSafeTest : public ::testing::Test {
     return run_daemon(store, options);
   }
 
-  void send_frame() const {
-    std::array<std::uint8_t, 32> out{};
-    const proto::HubReading r{12, 12, 2048, static_cast<std::uint16_t>(10.0 / 360.0 * 4096.0)};
-    const auto n = proto::encode_hub_frame(r, proto::HubFrameVersion::Crc8, out.data(), out.size());
-    (void)::write(master_, out.data(), n);
-  }
+  void send_frame() const { station_.send_frame(180.0, 10.0); }
 
   void expect_every_output_safe() const {
     for (int ch = 0; ch < 4; ++ch) {
@@ -120,8 +95,7 @@ class DaemonFailSafeTest : public ::testing::Test {
     }
   }
 
-  fs::path dir_;
-  int master_ = -1;
+  testing::FakePwmStation station_;
   unsigned short port_ = 0;
   bool driven_ = false;
 };

@@ -19,6 +19,7 @@
 #include "config_file.hpp"
 #include "daemon_config.hpp"
 #include "fake_gpio.hpp"
+#include "fake_pwm_station.hpp"
 #include "guarded_antenna.hpp"
 
 namespace azt::app {
@@ -29,54 +30,20 @@ using Clock = std::chrono::steady_clock;
 
 class PwmBackendTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("azt_pwm_backend_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "pwmchip0");
-    std::ofstream(dir_ / "pwmchip0" / "export") << "";
-    for (int ch = 0; ch < 4; ++ch) {
-      const fs::path p = dir_ / "pwmchip0" / ("pwm" + std::to_string(ch));
-      fs::create_directories(p);
-      for (const char* f : {"period", "duty_cycle", "enable"}) std::ofstream(p / f) << "0";
-    }
-    master_ = posix_openpt(O_RDWR | O_NOCTTY);
-    ASSERT_GE(master_, 0);
-    ASSERT_EQ(grantpt(master_), 0);
-    ASSERT_EQ(unlockpt(master_), 0);
-    std::array<char, 128> name{};
-    ASSERT_EQ(ptsname_r(master_, name.data(), name.size()), 0);
-    fs::create_symlink(name.data(), dir_ / "hub");
-  }
-  void TearDown() override {
-    if (master_ >= 0) ::close(master_);
-    fs::remove_all(dir_);
-  }
+  void SetUp() override { station_.make("azt_pwm_backend"); }
+  void TearDown() override { station_.remove(); }
 
   DaemonConfig config() const {
-    const std::string text =
-        "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"pwm\"\n"
-        "[hub]\ndevice = \"" +
-        (dir_ / "hub").string() + "\"\n[pwm]\nchip = \"" + (dir_ / "pwmchip0").string() +
-        "\"\n[sim.az]\nencoder_bits = 12\nstart_deg = 180.0\n"
-        "[sim.el]\nencoder_bits = 12\nstart_deg = 10.0\n";
+    const std::string text = "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"pwm\"\n" +
+                             station_.config_tables() +
+                             "[sim.az]\nencoder_bits = 12\nstart_deg = 180.0\n"
+                             "[sim.el]\nencoder_bits = 12\nstart_deg = 10.0\n";
     return daemon_config_from(ConfigFile::parse(text, "pwm.toml"));
   }
-  void send_frame(double az_deg, double el_deg) const {
-    std::array<std::uint8_t, 32> out{};
-    const proto::HubReading r{12, 12, static_cast<std::uint16_t>(az_deg / 360.0 * 4096.0),
-                              static_cast<std::uint16_t>(el_deg / 360.0 * 4096.0)};
-    const auto n = proto::encode_hub_frame(r, proto::HubFrameVersion::Crc8, out.data(), out.size());
-    ASSERT_EQ(::write(master_, out.data(), n), static_cast<ssize_t>(n));
-  }
-  std::uint64_t duty(int channel) const {
-    std::ifstream in(dir_ / "pwmchip0" / ("pwm" + std::to_string(channel)) / "duty_cycle");
-    std::uint64_t v = 0;
-    in >> v;
-    return v;
-  }
+  void send_frame(double az_deg, double el_deg) const { station_.send_frame(az_deg, el_deg); }
+  std::uint64_t duty(int channel) const { return station_.duty(channel); }
 
-  fs::path dir_;
-  int master_ = -1;
+  testing::FakePwmStation station_;
 };
 
 TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
@@ -89,7 +56,7 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
   };
   control::Demand go;
   go.position = control::AzEl{200.0, 10.0};  // 20° clockwise of where the hub says it is
-  ::write(master_, "\0", 1);                 // the first delimiter
+  ::write(station_.master(), "\0", 1);       // the first delimiter
   double last_frame_s = 0.0;
   bool driven = false;
   // 1.5 s of frames every 50 ms (the antenna "does not move": the readings stay at 180°).
@@ -124,8 +91,7 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
   EXPECT_FALSE(backend->position(seconds()).has_value());  // no cached angle is served
 
   // Unplugged: a fault that refuses motion, named.
-  ::close(master_);
-  master_ = -1;
+  station_.close_hub();
   for (int i = 0; i < 50 && backend->faults().empty(); ++i) {
     io.run_for(std::chrono::milliseconds(10));
     io.restart();
@@ -146,11 +112,11 @@ TEST_F(PwmBackendTest, ALimitSwitchEdgeTurnsTheDriveTowardsItOffAtOnce) {
     return std::chrono::duration<double>(Clock::now() - start).count();
   };
   GuardedAntenna antenna(make_pwm_backend(io, c), c.gpio,
-                         GuardParts{&gpio, nullptr, (dir_ / "estop.latched").string(), seconds,
-                                    [] {}, [](const std::string&) {}});
+                         GuardParts{&gpio, nullptr, (station_.dir() / "estop.latched").string(),
+                                    seconds, [] {}, [](const std::string&) {}});
   control::Demand go;
   go.position = control::AzEl{200.0, 10.0};
-  ::write(master_, "\0", 1);
+  ::write(station_.master(), "\0", 1);
   while (seconds() < 1.0 && duty(0) == 0) {
     send_frame(180.0, 10.0);
     io.run_for(std::chrono::milliseconds(50));
@@ -190,7 +156,7 @@ TEST_F(PwmBackendTest, TheEnableLineFollowsTheDriveAndDropsOnAStop) {
   EXPECT_FALSE(gpio.outputs["[hardware.az] enable"]) << "enabled before anything was driven";
   control::Demand go;
   go.position = control::AzEl{200.0, 10.0};
-  ::write(master_, "\0", 1);
+  ::write(station_.master(), "\0", 1);
   for (int i = 0; i < 40 && duty(0) == 0; ++i) {
     send_frame(180.0, 10.0);
     io.run_for(std::chrono::milliseconds(20));
@@ -207,7 +173,7 @@ TEST_F(PwmBackendTest, TheEnableLineFollowsTheDriveAndDropsOnAStop) {
 TEST_F(PwmBackendTest, AMissingChipOrHubIsAClearErrorAndNothingIsDriven) {
   boost::asio::io_context io;
   DaemonConfig c = config();
-  c.pwm.chip_dir = (dir_ / "pwmchip9").string();
+  c.pwm.chip_dir = (station_.dir() / "pwmchip9").string();
   try {
     (void)make_pwm_backend(io, c);
     FAIL() << "opened a missing PWM chip";
@@ -215,7 +181,7 @@ TEST_F(PwmBackendTest, AMissingChipOrHubIsAClearErrorAndNothingIsDriven) {
     EXPECT_NE(std::string(e.what()).find("[pwm] azimuth"), std::string::npos) << e.what();
   }
   c = config();
-  c.hub.device = (dir_ / "no-hub").string();
+  c.hub.device = (station_.dir() / "no-hub").string();
   try {
     (void)make_pwm_backend(io, c);
     FAIL() << "opened a missing hub";
