@@ -61,6 +61,7 @@ Runner add_serve_command(CLI::App& app) {
     ConfigStore store = ConfigStore::open(opts->config_path);
     // Loudly: a fallback to the backup means the primary file was corrupt.
     for (const auto& notice : store.notices()) spdlog::warn("{}", notice);
+    if (auto removed = store.remove_stale_temps()) spdlog::warn("{}", *removed);
     set_log_level(store.config().log_level);
     return run_daemon(store, *opts);
   };

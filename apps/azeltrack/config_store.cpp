@@ -180,12 +180,15 @@ ConfigStore ConfigStore::open(const std::string& path) {
   store.notices_ = std::move(loaded.notices);
   store.text_ = std::move(loaded.text);
   store.text_from_backup_ = loaded.from_backup;
-  // Temps of writers killed mid-save (each a full copy of the file): nobody will finish them.
-  if (const std::size_t n = linux_os::remove_stale_temp_files(path); n > 0) {
-    store.notices_.push_back("config " + path + ": removed " + std::to_string(n) +
-                             " temp file(s) left by interrupted saves");
-  }
   return store;
+}
+
+std::optional<std::string> ConfigStore::remove_stale_temps() const {
+  // Temps of writers killed mid-save (each a full copy of the file): nobody will finish them.
+  const std::size_t n = linux_os::remove_stale_temp_files(path_);
+  if (n == 0) return std::nullopt;
+  return "config " + path_ + ": removed " + std::to_string(n) +
+         " temp file(s) left by interrupted saves";
 }
 
 std::string ConfigStore::serialize(const toml::table& root) {

@@ -46,6 +46,9 @@ class ConfigStore {
   [[nodiscard]] const DaemonConfig& config() const { return config_; }
   /// Things to log loudly: a fallback to the backup, migrations applied in memory.
   [[nodiscard]] const std::vector<std::string>& notices() const { return notices_; }
+  /// Removes the temp files of writers that were killed mid-save (`FILE.tmp.PID` of a PID that
+  /// no longer runs), as the daemon does at start; the notice to log when there were some.
+  [[nodiscard]] std::optional<std::string> remove_stale_temps() const;
 
   using Change = std::function<void(toml::table&)>;
 

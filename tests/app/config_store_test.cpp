@@ -378,7 +378,7 @@ TEST_F(ConfigStoreTest, AHeldLockFailsTheSaveAfterTheWaitAndChangesNothing) {
 }
 
 // Issue 12 row 11: temps of killed writers go at open; what is created is private.
-TEST_F(ConfigStoreTest, TempFilesOfDeadWritersGoAtOpenAndNewFilesArePrivate) {
+TEST_F(ConfigStoreTest, TempFilesOfDeadWritersGoAtStartAndNewFilesArePrivate) {
   write(path_, kValid);
   pid_t dead = 4194303;  // above the usual pid_max; checked below
   while (::kill(dead, 0) == 0 || errno == EPERM) --dead;
@@ -386,6 +386,10 @@ TEST_F(ConfigStoreTest, TempFilesOfDeadWritersGoAtOpenAndNewFilesArePrivate) {
   write(path_ + ".bak.tmp." + std::to_string(dead), kValid);
   write(path_ + ".tmp.1", kValid);  // pid 1 is alive: its writer may still finish
   ConfigStore store = ConfigStore::open(path_);
+  EXPECT_TRUE(fs::exists(path_ + ".tmp." + std::to_string(dead)));  // open only reads
+  const auto notice = store.remove_stale_temps();
+  ASSERT_TRUE(notice.has_value());
+  EXPECT_NE(notice->find("removed 2 temp file(s)"), std::string::npos) << *notice;
   EXPECT_FALSE(fs::exists(path_ + ".tmp." + std::to_string(dead)));
   EXPECT_FALSE(fs::exists(path_ + ".bak.tmp." + std::to_string(dead)));
   EXPECT_TRUE(fs::exists(path_ + ".tmp.1"));

@@ -279,12 +279,12 @@ TEST(WebApi, PasswordChecksAreBoundedWhateverTheAddresses) {
 
 TEST(WebApi, TheFailedLoginTableForgetsAddressesAfterAnHour) {
   Rig rig;
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < 20; ++i) {  // each a real Argon2id check (~0.1 s)
     WebRequest r = Rig::request("POST", "/api/login", json{{"password", "guess"}}.dump());
     r.client = "203.0.113." + std::to_string(i);
     EXPECT_EQ(rig.handle(r).status, 401U);
   }
-  EXPECT_EQ(rig.auth.clients_tracked(), 200U);
+  EXPECT_EQ(rig.auth.clients_tracked(), 20U);
   rig.now_s += 3601.0;
   EXPECT_EQ(rig.handle(Rig::request("POST", "/api/login", "{\"password\":\"x\"}")).status, 401U);
   EXPECT_EQ(rig.auth.clients_tracked(), 1U);

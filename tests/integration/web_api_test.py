@@ -268,11 +268,13 @@ try:
                          capture_output=True).returncode == 0, "the saved file is valid")
 
     # WebSocket: a same-origin handshake is accepted, a forged one refused; 20 clients get pushes.
-    def ws_handshake(origin):
+    # Views without a login share 16 places (issue 12); these 20 are a logged-in station's.
+    def ws_handshake(origin, token=None):
         s = socket.create_connection(("127.0.0.1", PORT), timeout=5)
         key = base64.b64encode(os.urandom(16)).decode()
+        auth = f"Authorization: Bearer {token}\r\n" if token else ""
         s.sendall((f"GET /ws HTTP/1.1\r\nHost: 127.0.0.1:{PORT}\r\nUpgrade: websocket\r\n"
-                   f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\n"
+                   f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\n{auth}"
                    f"Sec-WebSocket-Version: 13\r\nOrigin: {origin}\r\n\r\n").encode())
         head = b""
         while b"\r\n\r\n" not in head:
@@ -284,7 +286,7 @@ try:
     s.close()
     clients = []
     for _ in range(20):
-        s, status = ws_handshake(f"http://127.0.0.1:{PORT}")
+        s, status = ws_handshake(f"http://127.0.0.1:{PORT}", TOKEN)
         check(" 101 " in status, f"WebSocket handshake: {status}")
         clients.append(s)
     start = time.time()
