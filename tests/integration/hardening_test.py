@@ -545,6 +545,21 @@ try:
     figure(1, f"WebSocket upgrade with Host b'caf\\xe9': {status}")
     alive(1)
 
+    # ---- §7: a refusal a PC program sees is visible to the operator --------------------------
+    s = socket.create_connection(("127.0.0.1", ROT_PORT), timeout=2)
+    s.sendall(b"P 100 -20\n")
+    got = s.recv(64)
+    s.close()
+    check(got.startswith(b"RPRT -"), f"§7: a target below the travel is refused: {got!r}")
+    events = []
+
+    def refusal_listed():
+        events[:] = state().get("events", [])
+        return any("refused" in e.get("text", "") and "rotctld" in e.get("text", "")
+                   for e in events)
+    wait_for("the refusal in /api/state events", refusal_listed, 2.0)
+    check(refusal_listed(), f"§7: the refusal is in the console's recent events: {events[:3]}")
+
     # ---- Row 9: slot numbers beyond 32 bits --------------------------------------------------
     mode_before = state()["mode"]
     for park in [4294967297, -4294967295, 18446744073709551617]:
