@@ -272,7 +272,7 @@ class Daemon {
     for (std::size_t i = 0; i < config_.serial.size(); ++i) {
       const SerialServerConfig& c = config_.serial[i];
       auto server = linux_os::SerialProtocolServer::open(
-          io_, c.device, c.baud, serial_session(c, service_, limits),
+          io_, c.device, c.baud, [this, c, limits] { return serial_session(c, service_, limits); },
           [this, c](const std::string& event) {
             log_.info(c.device, c.protocol + " " + c.device + ": " + event, now_s());
           });

@@ -873,6 +873,29 @@ try:
                   f"{got[:16]!r})")
         alive(8)
 
+    # A client that leaves in the middle of a command: its half line must not prefix the next
+    # client's first command (the session starts afresh at a hang-up).
+    fd = os.open(GS232B, os.O_RDWR | os.O_NOCTTY)
+    os.write(fd, b"W12")
+    time.sleep(0.2)  # read by the daemon before the hang-up
+    os.close(fd)
+    time.sleep(0.2)
+    fd = os.open(GS232B, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+    try:
+        os.write(fd, b"C2\r")
+        got = b""
+        end = time.monotonic() + 2.0
+        while time.monotonic() < end and b"\r" not in got:
+            try:
+                got += os.read(fd, 65536)
+            except BlockingIOError:
+                time.sleep(0.01)
+    finally:
+        os.close(fd)
+    check(got.startswith(b"AZ="), f"row 8: a half line left by a client that hung up does not "
+                                  f"spoil the next one's C2: {got[:48]!r}")
+    alive(8)
+
     # ---- Row 5: the rotctld idle timeout (the clients started after row 11) -----------------
     if IDLE_S is None:
         # This build has no [rotctld] idle_timeout_s (the 600 s default is not a key): a 600 s

@@ -75,17 +75,18 @@ Result<bool> make_link(const std::string& link, const std::string& target) {
 
 }  // namespace
 
-SerialProtocolServer::SerialProtocolServer(asio::io_context& io,
-                                           std::unique_ptr<proto::ProtocolSession> s, Log log)
-    : stream_(io), session_(std::move(s)), log_(std::move(log)) {}
+SerialProtocolServer::SerialProtocolServer(asio::io_context& io, SessionFactory factory, Log log)
+    : stream_(io), factory_(std::move(factory)), session_(factory_()), log_(std::move(log)) {}
 
 SerialProtocolServer::~SerialProtocolServer() { close(); }
 
-Result<std::unique_ptr<SerialProtocolServer>> SerialProtocolServer::open(
-    asio::io_context& io, const std::string& device, unsigned baud,
-    std::unique_ptr<proto::ProtocolSession> session, Log log) {
+Result<std::unique_ptr<SerialProtocolServer>> SerialProtocolServer::open(asio::io_context& io,
+                                                                         const std::string& device,
+                                                                         unsigned baud,
+                                                                         SessionFactory factory,
+                                                                         Log log) {
   std::unique_ptr<SerialProtocolServer> server(
-      new SerialProtocolServer(io, std::move(session), std::move(log)));
+      new SerialProtocolServer(io, std::move(factory), std::move(log)));
   constexpr std::string_view kPty = "pty:";
   if (device.rfind(kPty, 0) == 0) {
     if (device.size() == kPty.size()) return fail(device + ": give a path after pty:");
@@ -223,7 +224,10 @@ void SerialProtocolServer::discard_pending(bool hang_up) {
   // wrote that are not read yet (the master's input) and the replies not yet written.
   pending_.clear();
   (void)::tcflush(keep_slave_fd_, TCIFLUSH);
-  if (hang_up) (void)::tcflush(stream_.native_handle(), TCIFLUSH);
+  if (hang_up) {
+    (void)::tcflush(stream_.native_handle(), TCIFLUSH);
+    session_ = factory_();  // a half-sent line of the leaving client must not prefix the next's
+  }
   if (log_) log_(hang_up ? "client closed the port" : "client opened the port");
 }
 

@@ -23,12 +23,16 @@ namespace azt::linux_os {
 class SerialProtocolServer {
  public:
   using Log = std::function<void(const std::string& event)>;
+  /// Makes the session for one client's conversation: at start, and afresh when a client of a
+  /// pseudo-terminal hangs up, so nothing the leaving client half-sent prefixes the next one's.
+  using SessionFactory = std::function<std::unique_ptr<proto::ProtocolSession>()>;
 
   /// Opens the device (or creates the pseudo-terminal and its link). Errors name the device and
   /// the reason: missing, busy (another program has it open exclusively), not a tty, bad baud.
-  static Result<std::unique_ptr<SerialProtocolServer>> open(
-      boost::asio::io_context& io, const std::string& device, unsigned baud,
-      std::unique_ptr<proto::ProtocolSession> session, Log log);
+  static Result<std::unique_ptr<SerialProtocolServer>> open(boost::asio::io_context& io,
+                                                            const std::string& device,
+                                                            unsigned baud, SessionFactory factory,
+                                                            Log log);
   ~SerialProtocolServer();
   SerialProtocolServer(const SerialProtocolServer&) = delete;
   SerialProtocolServer& operator=(const SerialProtocolServer&) = delete;
@@ -38,8 +42,7 @@ class SerialProtocolServer {
   void close();
 
  private:
-  SerialProtocolServer(boost::asio::io_context& io, std::unique_ptr<proto::ProtocolSession> s,
-                       Log log);
+  SerialProtocolServer(boost::asio::io_context& io, SessionFactory factory, Log log);
   void read();
   void write(const std::string& bytes);
   void watch_clients(const std::string& slave_name);
@@ -56,6 +59,7 @@ class SerialProtocolServer {
   int keep_slave_fd_ = -1;  ///< our own open slave end: reads never fail with EIO between clients
   std::string path_;
   std::string link_;  ///< the symlink we created, removed on close
+  SessionFactory factory_;
   std::unique_ptr<proto::ProtocolSession> session_;
   Log log_;
   std::array<char, 1024> buffer_{};
