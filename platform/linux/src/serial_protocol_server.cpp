@@ -146,21 +146,19 @@ void SerialProtocolServer::read() {
                               if (log_) log_("read failed, server stopped: " + ec.message());
                               return;
                             }
-                            // A client's hang-up queued before these bytes were handled makes
-                            // them the leaving client's: dropped, never answered to the next.
-                            if (drain_client_events()) {
-                              read();
-                              return;
+                            // Events queued before these bytes are looked at first. If the
+                            // client hung up, the bytes are its last: its commands still act
+                            // (rotctl sends a set and exits at once), its replies go nowhere.
+                            const std::string events = queued_client_events();
+                            const bool leaving = hangs_up(events);
+                            if (leaving) {
+                              (void)feed(std::string_view(buffer_.data(), n));
                             }
-                            std::string reply;
-                            try {
-                              reply = session_->feed(std::string_view(buffer_.data(), n));
-                            } catch (const std::exception& e) {
-                              // A fault in the session drops these bytes, never the daemon.
-                              if (log_)
-                                log_(std::string("internal error, input dropped: ") + e.what());
+                            (void)apply_client_events(events.data(), events.size());
+                            if (!leaving) {
+                              const std::string reply = feed(std::string_view(buffer_.data(), n));
+                              if (!reply.empty()) write(reply);
                             }
-                            if (!reply.empty()) write(reply);
                             read();
                           });
 }
@@ -207,27 +205,53 @@ bool SerialProtocolServer::apply_client_events(const char* data, std::size_t siz
   return hung_up;
 }
 
-bool SerialProtocolServer::drain_client_events() {
-  if (!clients_.is_open()) return false;
-  bool hung_up = false;
+std::string SerialProtocolServer::queued_client_events() {
+  std::string out;
+  if (!clients_.is_open()) return out;
   std::array<char, 1024> events{};
   for (;;) {
     const ssize_t n = ::read(clients_.native_handle(), events.data(), events.size());
-    if (n <= 0) return hung_up;  // EAGAIN: nothing more queued
-    hung_up = apply_client_events(events.data(), static_cast<std::size_t>(n)) || hung_up;
+    if (n <= 0) return out;  // EAGAIN: nothing more queued
+    out.append(events.data(), static_cast<std::size_t>(n));
+  }
+}
+
+bool SerialProtocolServer::hangs_up(const std::string& events) {
+  for (std::size_t at = 0; at + sizeof(inotify_event) <= events.size();) {
+    inotify_event event{};
+    std::memcpy(&event, events.data() + at, sizeof event);
+    if ((event.mask & IN_CLOSE) != 0U) return true;
+    at += sizeof(inotify_event) + event.len;
+  }
+  return false;
+}
+
+std::string SerialProtocolServer::feed(std::string_view bytes) {
+  try {
+    return session_->feed(bytes);
+  } catch (const std::exception& e) {
+    // A fault in the session drops these bytes, never the daemon.
+    if (log_) log_(std::string("internal error, input dropped: ") + e.what());
+    return {};
   }
 }
 
 void SerialProtocolServer::discard_pending(bool hang_up) {
-  // What a client that left did not read must not greet the next one (issue 12 row 8): the
-  // replies queued towards the slave go (the slave's input), and at a hang-up the commands it
-  // wrote that are not read yet (the master's input) and the replies not yet written.
+  // What a client that left did not read must not greet the next one (issue 12 row 8). At a
+  // hang-up the commands it sent that are not read yet still act (a set sent just before
+  // closing is meant), but their replies are dropped; a half-sent line is forgotten with the
+  // session. Then, and at an open, the replies queued towards the slave are flushed.
+  if (hang_up) {
+    std::array<char, 1024> bytes{};
+    for (int i = 0; i < 64; ++i) {  // bounded: a pty holds a few KiB
+      const ssize_t n = ::read(stream_.native_handle(), bytes.data(), bytes.size());
+      if (n <= 0) break;
+      (void)feed(std::string_view(bytes.data(), static_cast<std::size_t>(n)));
+    }
+    session_ = factory_();
+  }
   pending_.clear();
   (void)::tcflush(keep_slave_fd_, TCIFLUSH);
-  if (hang_up) {
-    (void)::tcflush(stream_.native_handle(), TCIFLUSH);
-    session_ = factory_();  // a half-sent line of the leaving client must not prefix the next's
-  }
   if (log_) log_(hang_up ? "client closed the port" : "client opened the port");
 }
 

@@ -49,8 +49,11 @@ class SerialProtocolServer {
   void read_client_events();
   /// Acts on inotify events in order; true if a client hung up.
   bool apply_client_events(const char* data, std::size_t size);
-  /// Reads and acts on the events already queued, before input is handled; true on a hang-up.
-  bool drain_client_events();
+  /// The inotify events already queued (read without waiting), to act on around input.
+  std::string queued_client_events();
+  [[nodiscard]] static bool hangs_up(const std::string& events);
+  /// The session's answer to `bytes`; an exception drops them (logged), never the daemon.
+  std::string feed(std::string_view bytes);
   void discard_pending(bool hang_up);
 
   boost::asio::posix::stream_descriptor stream_;
