@@ -161,10 +161,7 @@ class Daemon {
         std::move(inner), config_.gpio,
         GuardParts{gpio_.get(), sequencer_.get(), latch, [this] { return now_s(); },
                    [this] { modes_.stop(); },
-                   [](const std::string& line) { spdlog::warn("{}", line); },
-                   [this](std::function<void()> work, std::function<void()> done) {
-                     worker_.post(std::move(work), std::move(done));
-                   }});
+                   [](const std::string& line) { spdlog::warn("{}", line); }, off_loop()});
     guard_ = guarded.get();
     return guarded;
   }
@@ -193,9 +190,7 @@ class Daemon {
   int run() {
     linux_os::install_crash_handlers();
     satellites_.poll_file(unix_now_s());  // at once: the start target may be a satellite
-    satellites_.set_offload([this](std::function<void()> work, std::function<void()> done) {
-      worker_.post(std::move(work), std::move(done));
-    });
+    satellites_.set_offload(off_loop());
     start_target();
     open_servers();
     signals_.async_wait([this](boost::system::error_code ec, int signal) {
@@ -231,6 +226,13 @@ class Daemon {
   }
 
  private:
+  /// What may block goes to the worker; its result comes back to the loop (off_loop.hpp).
+  Offload off_loop() {
+    return [this](std::function<void()> work, std::function<void()> done) {
+      worker_.post(std::move(work), std::move(done));
+    };
+  }
+
   double now_s() const {
     return std::chrono::duration<double>(SteadyClock::now() - start_).count();
   }
@@ -312,10 +314,8 @@ class Daemon {
                        io["sequencer"] = sequencer_->state();
                        return io;
                      },
-                     [this](std::function<void()> work, std::function<void()> done) {
-                       worker_.post(std::move(work), std::move(done));
-                     },
-                     &events_, [](const std::string& line) { spdlog::warn("{}", line); }},
+                     off_loop(), &events_,
+                     [](const std::string& line) { spdlog::warn("{}", line); }},
         [](const std::string& line) { spdlog::warn("{}", line); });
     spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
   }

@@ -57,6 +57,8 @@ struct WebServer::Shared {
 
   void prune();
   [[nodiscard]] std::size_t live();
+  /// Open connections for which `which` holds.
+  [[nodiscard]] std::size_t count(const std::function<bool(const WebConnection&)>& which);
   [[nodiscard]] std::size_t from(const std::string& peer);
   [[nodiscard]] std::size_t websockets();
   [[nodiscard]] std::size_t anonymous_websockets();
@@ -295,26 +297,22 @@ std::size_t WebServer::Shared::live() {
   return connections.size();
 }
 
-std::size_t WebServer::Shared::from(const std::string& peer) {
+std::size_t WebServer::Shared::count(const std::function<bool(const WebConnection&)>& which) {
   prune();
-  return static_cast<std::size_t>(
-      std::count_if(connections.begin(), connections.end(),
-                    [&](const auto& w) { return w.lock()->peer == peer; }));
+  return static_cast<std::size_t>(std::count_if(connections.begin(), connections.end(),
+                                                [&](const auto& w) { return which(*w.lock()); }));
+}
+
+std::size_t WebServer::Shared::from(const std::string& peer) {
+  return count([&](const WebConnection& c) { return c.peer == peer; });
 }
 
 std::size_t WebServer::Shared::websockets() {
-  prune();
-  return static_cast<std::size_t>(std::count_if(connections.begin(), connections.end(),
-                                                [](auto& w) { return w.lock()->websocket; }));
+  return count([](const WebConnection& c) { return c.websocket; });
 }
 
 std::size_t WebServer::Shared::anonymous_websockets() {
-  prune();
-  return static_cast<std::size_t>(
-      std::count_if(connections.begin(), connections.end(), [](auto& w) {
-        const auto c = w.lock();
-        return c->websocket && !c->has_session;
-      }));
+  return count([](const WebConnection& c) { return c.websocket && !c.has_session; });
 }
 
 bool WebServer::Shared::evict_one_anonymous() {

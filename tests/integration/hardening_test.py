@@ -818,6 +818,17 @@ try:
     alive(4)
 
     # ---- Row 8: a pseudo-terminal client that does not read its replies ---------------------
+    def read_until_cr(fd, seconds=2.0):
+        """What a non-blocking pty reads until a reply's CR, or `seconds`."""
+        got = b""
+        end = time.monotonic() + seconds
+        while time.monotonic() < end and b"\r" not in got:
+            try:
+                got += os.read(fd, 65536)
+            except BlockingIOError:
+                time.sleep(0.01)
+        return got
+
     def unread_then_next(descheduled):
         """A client writes 300 C2 and closes without reading; a new client opens the path and
         reads after 0.3 s (the row's definition), then sends its own C2. With `descheduled` the
@@ -842,13 +853,7 @@ try:
             except BlockingIOError:
                 stale_bytes = b""
             os.write(fd, b"C2\r")
-            got = b""
-            end = time.monotonic() + 2.0
-            while time.monotonic() < end and b"\r" not in got:
-                try:
-                    got += os.read(fd, 65536)
-                except BlockingIOError:
-                    time.sleep(0.01)
+            got = read_until_cr(fd)
             quiet_end = time.monotonic() + 0.3  # and nothing more after it
             while time.monotonic() < quiet_end:
                 try:
@@ -883,13 +888,7 @@ try:
     fd = os.open(GS232B, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
     try:
         os.write(fd, b"C2\r")
-        got = b""
-        end = time.monotonic() + 2.0
-        while time.monotonic() < end and b"\r" not in got:
-            try:
-                got += os.read(fd, 65536)
-            except BlockingIOError:
-                time.sleep(0.01)
+        got = read_until_cr(fd)
     finally:
         os.close(fd)
     check(got.startswith(b"AZ="), f"row 8: a half line left by a client that hung up does not "
