@@ -17,7 +17,7 @@
     loginDismissed: localStorage.getItem('azt.loginbar') === 'hidden',
     sel: null, // what TRACK starts: {body, label, serverName}
     ws: null, connected: false, backoff: 250, attempts: 0, lastMsg: 0, openedAt: 0, retryTimer: 0,
-    trend: [], trendDrawn: 0, skyDrawn: 0, skyListDrawn: 0, faultsKey: '', eventsKey: '', ioKey: '', dopKey: '',
+    trend: [], trendDrawn: 0, skyDrawn: 0, skyListDrawn: 0, faultsKey: '', eventsKey: '', commandsKey: '', ioKey: '', dopKey: '',
   };
 
   // ------------------------------------------------------------------ small helpers ----------
@@ -361,7 +361,8 @@
     $('mini-mode').className = `mini-mode m-${mode}`;
     renderFaults(Array.isArray(st.faults) ? st.faults : []);
     renderIo(st.station_io);
-    renderEvents(Array.isArray(st.events) ? st.events : []);
+    renderLog('event-list', 'eventsKey', Array.isArray(st.events) ? st.events : [], 10);
+    renderLog('command-list', 'commandsKey', Array.isArray(st.commands) ? st.commands : [], 6);
     renderMoon(m);
     // trend
     const now = performance.now() / 1000;
@@ -386,13 +387,14 @@
     $('fault-list').replaceChildren(...list.map((f) => h('li', { text: String(f) })));
   }
 
-  // Refusals given to PC programs and changes of who commands (docs/web-api.md "events").
-  function renderEvents(list) {
+  // A newest-first list of {utc, text, count}: the refusals any source was given ("events") and
+  // the accepted motion commands with their sources ("commands"), docs/web-api.md.
+  function renderLog(listId, keyName, list, max) {
     const key = JSON.stringify(list);
-    if (key === S.eventsKey) return;
-    S.eventsKey = key;
-    if (!list.length) { $('event-list').replaceChildren(h('li', { class: 'dimtxt', text: 'none yet' })); return; }
-    $('event-list').replaceChildren(...list.slice(0, 10).map((e) => h('li', {
+    if (key === S[keyName]) return;
+    S[keyName] = key;
+    if (!list.length) { $(listId).replaceChildren(h('li', { class: 'dimtxt', text: 'none yet' })); return; }
+    $(listId).replaceChildren(...list.slice(0, max).map((e) => h('li', {
       text: `${String(e.utc || '').slice(11, 19)}  ${String(e.text)}${e.count > 1 ? ` (×${e.count})` : ''}`,
     })));
   }

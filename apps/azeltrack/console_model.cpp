@@ -147,7 +147,7 @@ const DaemonConsole::Snapshot& DaemonConsole::snapshot() {
 
 json DaemonConsole::target_json() {
   const control::Mode mode = p_.modes.mode();
-  if (mode == control::Mode::Track && following_satellite()) {
+  if (p_.commands.tracking_satellite()) {
     const json s = p_.satellites->status(p_.unix_s());
     return {{"name", p_.modes.who()},
             {"az_deg", s.value("aim_az_deg", json(nullptr))},
@@ -164,18 +164,6 @@ json DaemonConsole::target_json() {
     return {{"name", p_.modes.who()}, {"az_deg", fixed->az_deg}, {"el_deg", fixed->el_deg}};
   }
   return {{"name", nullptr}, {"az_deg", nullptr}, {"el_deg", nullptr}};
-}
-
-void DaemonConsole::mark_commander(std::string who) {
-  mode_signature_ = std::string(control::to_string(p_.modes.mode())) + "|" + p_.modes.who();
-  commander_ = std::move(who);
-}
-
-std::string DaemonConsole::commander() const {
-  const std::string now = std::string(control::to_string(p_.modes.mode())) + "|" + p_.modes.who();
-  if (now == mode_signature_) return commander_;
-  // Changed since: by a PC program (EXT names its client; a stop or park from one does not).
-  return p_.modes.mode() == control::Mode::External ? p_.modes.who() : "PC program";
 }
 
 json DaemonConsole::state() {
@@ -203,7 +191,7 @@ json DaemonConsole::state() {
   const auto& obs = p_.config.sim.station.sky.observer;
   return {{"utc", utc_text(p_.unix_s())},
           {"mode", std::string(control::to_string(p_.modes.mode()))},
-          {"who", commander()},
+          {"who", p_.commands.commander()},
           {"pc_locked_out", p_.modes.external_locked()},
           {"antenna", antenna},
           {"target", target},
@@ -223,6 +211,7 @@ json DaemonConsole::state() {
           {"clock", {{"source", "system"}}},
           {"faults", p_.antenna.faults()},
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
+          {"commands", p_.motions != nullptr ? p_.motions->to_json() : json::array()},
           {"station_io", p_.station_io ? p_.station_io() : json(nullptr)},
           {"servers", p_.servers}};
 }
@@ -309,7 +298,7 @@ json DaemonConsole::sky(double hours) {
   }
   out["moon_path"] = moon_path;
   out["sun_path"] = sun_path;
-  out["pass_path"] = following_satellite() ? p_.satellites->pass_track() : json::array();
+  out["pass_path"] = p_.commands.tracking_satellite() ? p_.satellites->pass_track() : json::array();
   return out;
 }
 
@@ -350,21 +339,20 @@ void DaemonConsole::apply_corrections(const control::PositionCorrections& correc
   (void)p_.antenna.set_corrections(corrections);
 }
 
-void DaemonConsole::act(const std::string& action, const json& body, ActDone done) {
+void DaemonConsole::act(const std::string& action, const json& body, const std::string& source,
+                        ActDone done) {
   if (action == "target") {
-    json out = act_target(body);
-    mark_commander("console");
-    done(ActResult{std::move(out), std::nullopt});
+    done(ActResult{act_target(body, source), std::nullopt});
     return;
   }
   if (action == "stop") {
-    p_.modes.stop(true);
-    mark_commander("console");
+    p_.commands.stop(CommandSource{CommandSource::Kind::Console, source});
     done(ActResult{});
     return;
   }
   if (action == "faults/clear") {
     p_.antenna.clear_faults();
+    p_.log(source + ": latched faults cleared");
     done(ActResult{});
     return;
   }
@@ -383,57 +371,31 @@ void DaemonConsole::act(const std::string& action, const json& body, ActDone don
   (this->*(it->second))(body, std::move(done));
 }
 
-bool DaemonConsole::following_satellite() const {
-  return p_.satellites != nullptr && p_.satellites->following() &&
-         p_.modes.who().rfind("sat:", 0) == 0;
-}
-
-json DaemonConsole::act_target(const json& body) {
-  if (body.contains("name") && text(body, "name").rfind("sat:", 0) == 0) {
-    if (p_.satellites == nullptr) throw ApiError(400, "name", "no satellite catalogue");
-    const auto here = p_.antenna.position(p_.monotonic_s());
-    auto r = p_.satellites->follow(text(body, "name").substr(4), p_.unix_s(),
-                                   here ? here->az_mount_deg : 0.0);
-    if (!r) throw ApiError(400, "name", r.error().message);
-    p_.modes.track("sat:" + r.value());
-    return {{"mode", "TRACK"}, {"target", "sat:" + r.value()}};
-  }
-  if (body.contains("name")) {
-    const std::string name = text(body, "name");
-    const auto target = find_station_target(p_.config.sim.station, name);
-    if (!target) throw ApiError(400, "name", "'" + name + "' is not a target of this station");
-    p_.sky.follow(*target);
-    p_.modes.track(target->name);
-    return {{"mode", "TRACK"}, {"target", target->name}};
-  }
+TargetRequest DaemonConsole::target_request(const json& body) {
+  if (body.contains("name")) return target_from_name(text(body, "name"));
   if (body.contains("ra_deg") || body.contains("dec_deg")) {
-    const double ra = number(body, "ra_deg");
-    const double dec = number(body, "dec_deg");
-    auto target = astro::Target::radec(ra, dec);
-    if (!target)
-      throw ApiError(400, ra < 0.0 || ra >= 360.0 ? "ra_deg" : "dec_deg", target.error().message);
-    p_.sky.follow(*target);
-    p_.modes.track(target->name);
-    return {{"mode", "TRACK"}, {"target", target->name}};
+    return RaDecTarget{number(body, "ra_deg"), number(body, "dec_deg")};
   }
   if (body.contains("park")) {
-    const auto slot = whole_number(body, "park", 1, 4, "park must be a slot number 1 to 4");
-    auto r = p_.modes.park(static_cast<int>(slot));
-    if (!r) throw ApiError(400, "park", r.error().message);
-    return {{"mode", "PARK"}};
+    return ParkTarget{whole_number(body, "park", 1, 4, "park must be a slot number 1 to 4")};
   }
   if (body.contains("az_deg") || body.contains("el_deg")) {
-    const double az = number(body, "az_deg");
-    const double el = number(body, "el_deg");
-    if (az < 0.0 || az >= 360.0) throw ApiError(400, "az_deg", "az_deg must be 0 to 360");
-    if (!control::plan_elevation(el, p_.config.sim.setup.el_range)) {
-      throw ApiError(400, "el_deg", "el_deg is outside the elevation travel");
-    }
-    auto r = p_.modes.manual(control::AzEl{az, el});
-    if (!r) throw ApiError(400, "az_deg", r.error().message);
-    return {{"mode", "MAN"}};
+    return PositionTarget{number(body, "az_deg"), number(body, "el_deg")};
   }
   throw ApiError(400, "name", "expected name, ra_deg/dec_deg, park or az_deg/el_deg");
+}
+
+json DaemonConsole::act_target(const json& body, const std::string& source) {
+  const CommandOutcome outcome =
+      p_.commands.point(CommandSource{CommandSource::Kind::Console, source}, target_request(body));
+  if (const auto& r = outcome.refusal) {
+    // The same refusal a PC program gets, as HTTP: a bad value, "not now", or no position.
+    const unsigned status = r->status == proto::ServiceStatus::Rejected      ? 409
+                            : r->status == proto::ServiceStatus::Unavailable ? 503
+                                                                             : 400;
+    throw ApiError(status, r->field, r->reason);
+  }
+  return {{"mode", outcome.mode}, {"target", outcome.target}};
 }
 
 void DaemonConsole::act_correction(const json& body, ActDone done) {

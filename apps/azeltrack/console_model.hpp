@@ -19,6 +19,7 @@
 #include "recent_events.hpp"
 #include "satellite_tracker.hpp"
 #include "sky_follower.hpp"
+#include "station_commands.hpp"
 #include "web_api.hpp"
 
 namespace azt::app {
@@ -30,6 +31,7 @@ struct ConsoleParts {
   const astro::Ephemeris& ephemeris;
   SkyFollower& sky;
   control::ModeController& modes;
+  StationCommands& commands;  ///< the front door every motion command goes through
   AntennaBackend& antenna;
   SatelliteTracker* satellites;         ///< null: no satellite catalogue
   std::function<double()> monotonic_s;  ///< the control loop's clock
@@ -39,21 +41,21 @@ struct ConsoleParts {
   std::function<nlohmann::json()> station_io;
   /// Where saves run: the daemon's worker thread (off the event loop), or run_inline in tests.
   Offload offload = run_inline;
-  const RecentEvents* events = nullptr;  ///< refusals and changes of owner, for the state
+  const RecentEvents* events = nullptr;   ///< refusals given to any source, for the state
+  const RecentEvents* motions = nullptr;  ///< accepted motion commands and their sources
   std::function<void(const std::string&)> log = [](const std::string&) {};
 };
 
 class DaemonConsole final : public ConsoleModel {
  public:
-  explicit DaemonConsole(ConsoleParts parts) : p_(std::move(parts)) {
-    mark_commander("config");  // the mode the daemon started in
-  }
+  explicit DaemonConsole(ConsoleParts parts) : p_(std::move(parts)) {}
 
   nlohmann::json state() override;
   nlohmann::json config() override;
   nlohmann::json targets() override;
   nlohmann::json sky(double hours) override;
-  void act(const std::string& action, const nlohmann::json& body, ActDone done) override;
+  void act(const std::string& action, const nlohmann::json& body, const std::string& source,
+           ActDone done) override;
 
  private:
   /// Sun, Moon and every target at one whole second, computed once per second.
@@ -66,9 +68,9 @@ class DaemonConsole final : public ConsoleModel {
   const Snapshot& snapshot();
   nlohmann::json target_json();
 
-  nlohmann::json act_target(const nlohmann::json& body);
-  /// TRACK of a satellite chosen here or in the configuration (not a sky target).
-  [[nodiscard]] bool following_satellite() const;
+  /// The console's target body, parsed into the one request type (a malformed field: ApiError).
+  static TargetRequest target_request(const nlohmann::json& body);
+  nlohmann::json act_target(const nlohmann::json& body, const std::string& source);
   // The settings: each validates the body at once (ApiError), then saves off the loop.
   void act_correction(const nlohmann::json& body, ActDone done);
   void act_station(const nlohmann::json& body, ActDone done);
@@ -86,15 +88,10 @@ class DaemonConsole final : public ConsoleModel {
             std::function<nlohmann::json()> apply, ActDone done);
   [[nodiscard]] ApiError save_refusal(const std::string& field, std::string message) const;
   void apply_corrections(const control::PositionCorrections& corrections);
-  /// Remembers that the present mode was chosen by `who`; state() reports it while it lasts.
-  void mark_commander(std::string who);
-  [[nodiscard]] std::string commander() const;
 
   ConsoleParts p_;
   Snapshot snapshot_;
   std::vector<std::string> restart_needed_;
-  std::string mode_signature_;  ///< mode and target when the console (or config) last chose them
-  std::string commander_;
 };
 
 }  // namespace azt::app

@@ -32,7 +32,9 @@
 #include "sequencer_runner.hpp"
 #include "sky_follower.hpp"
 #include "sky_setup.hpp"
+#include "station_commands.hpp"
 #include "station_service.hpp"
+#include "target_request.hpp"
 #include "tick_stats.hpp"
 
 namespace azt::app {
@@ -72,6 +74,14 @@ class RateLimitedLog {
   std::map<std::string, Bucket> buckets_;
 };
 
+/// A client's bytes may be in a log line: valid UTF-8, no control characters, a bounded length.
+std::string log_safe(const std::string& text) {
+  std::string line = valid_utf8(text.substr(0, 240));
+  std::replace_if(
+      line.begin(), line.end(), [](char c) { return c >= 0 && c < ' '; }, ' ');
+  return line;
+}
+
 std::unique_ptr<proto::ProtocolSession> serial_session(const SerialServerConfig& c,
                                                        proto::RotatorService& service,
                                                        const proto::TargetLimits& limits) {
@@ -110,11 +120,21 @@ class Daemon {
         antenna_(make_guarded(make_backend())),
         satellites_(satellite_settings(),
                     [](const std::string& line) { spdlog::info("{}", line); }),
+        commands_(StationCommandParts{modes_, *antenna_, sky_, &satellites_,
+                                      config_.target_limits(), config_.sim.setup.el_range,
+                                      [this] { return now_s(); }, [] { return unix_now_s(); },
+                                      config_.sim.setup.az_plant.start_deg,
+                                      [this](const CommandSource& source, const std::string& what) {
+                                        motion_event(source, what);
+                                      },
+                                      [this](const CommandSource& source, const Refusal& refusal) {
+                                        control_event(source.name + ": refused: " + refusal.reason);
+                                      }}),
         service_(
-            modes_, *antenna_, config_.target_limits(), config_.sim.setup.el_range,
+            commands_, modes_, *antenna_, [this] { return now_s(); },
             "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
                 config_.sim.station.sky.grid,
-            [this] { return now_s(); }, [this](const std::string& line) { control_event(line); }),
+            [this](const std::string& line) { control_event(line); }),
         // SIGHUP too: a closed terminal must stop the motors, not kill the process mid-move.
         signals_(io_, SIGINT, SIGTERM, SIGHUP),
         timer_(io_),
@@ -239,19 +259,13 @@ class Daemon {
 
   void start_target() {
     if (config_.start_target == "stop" || guard_->estop_latched()) return;
-    if (config_.start_target.rfind("sat:", 0) == 0) {
-      auto r = satellites_.follow(config_.start_target.substr(4), unix_now_s(), mount_az());
-      if (!r) throw UsageError("[target].name: " + r.error().message);
-      modes_.track("sat:" + r.value());
-      return;
+    const auto outcome =
+        commands_.point(CommandSource{CommandSource::Kind::Configuration, "configuration"},
+                        target_from_name(config_.start_target));
+    // A name the station does not know is a mistake in the file; a latched fault is "not now".
+    if (!outcome.accepted() && outcome.refusal->status == proto::ServiceStatus::Invalid) {
+      throw UsageError("[target].name: " + outcome.refusal->reason);
     }
-    const auto target = sky_.find(config_.start_target);
-    if (!target) {
-      throw UsageError("[target].name '" + config_.start_target +
-                       "' is not a configured target (sun, moon, or a [sky] source)");
-    }
-    sky_.follow(*target);
-    modes_.track(target->name);
   }
 
   void open_servers() {
@@ -307,14 +321,14 @@ class Daemon {
     }
     console_ = std::make_unique<ConsoleServer>(
         io_,
-        ConsoleParts{config_, store_, *ephemeris_, sky_, modes_, *antenna_, &satellites_,
+        ConsoleParts{config_, store_, *ephemeris_, sky_, modes_, commands_, *antenna_, &satellites_,
                      [this] { return now_s(); }, [] { return unix_now_s(); }, servers,
                      [this] {
                        nlohmann::json io = guard_->state();
                        io["sequencer"] = sequencer_->state();
                        return io;
                      },
-                     off_loop(), &events_,
+                     off_loop(), &events_, &motions_,
                      [](const std::string& line) { spdlog::warn("{}", line); }},
         [](const std::string& line) { spdlog::warn("{}", line); });
     spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
@@ -343,8 +357,7 @@ class Daemon {
     modes_.update(now);
     satellites_.poll_file(unix_now_s());
     satellites_.refresh_passes(unix_now_s());
-    if (modes_.mode() == control::Mode::Track && satellites_.following() &&
-        modes_.who().rfind("sat:", 0) == 0) {
+    if (commands_.tracking_satellite()) {
       control::AzEl rate;
       const control::Demand demand = satellites_.demand(unix_now_s(), mount_az(), rate);
       antenna_->tick(now, demand, rate);
@@ -368,15 +381,23 @@ class Daemon {
     notifier_.watchdog();
   }
 
-  /// A command accepted from a new owner, or a refusal a client was given: in the journal (at
-  /// most 10 lines a minute per client) and in the console's recent events.
+  /// A refusal a client was given: in the journal (at most 10 lines a minute per client) and in
+  /// the console's recent events.
   void control_event(const std::string& text) {
-    // A client's bytes may be in it: valid UTF-8, no control characters, a bounded length.
-    std::string line = valid_utf8(text.substr(0, 240));
-    std::replace_if(
-        line.begin(), line.end(), [](char c) { return c >= 0 && c < ' '; }, ' ');
+    const std::string line = log_safe(text);
     log_.info("control " + line.substr(0, line.find(": ")), line, now_s());
     events_.add(unix_now_s(), line);
+  }
+
+  /// An accepted motion command: in the journal (at most 10 lines a minute per source, the rest
+  /// counted) and in the console's recent commands, one line per source and kind of command.
+  void motion_event(const CommandSource& source, const std::string& what) {
+    const std::string line = log_safe(source.name + ": " + what);
+    log_.info("motion " + source.name, line, now_s());
+    // A program's stream of positions is one entry; a new target or a STOP is a new one.
+    const bool stream = what.rfind("position ", 0) == 0 || what.rfind("continuous ", 0) == 0;
+    motions_.add(unix_now_s(), line,
+                 source.name + "|" + (stream ? what.substr(0, what.find(' ')) : what));
   }
 
   void report_faults() {
@@ -436,6 +457,8 @@ class Daemon {
   SatelliteTracker satellites_;
   RateLimitedLog log_;
   RecentEvents events_;
+  RecentEvents motions_;  ///< accepted motion commands, with their sources
+  StationCommands commands_;
   StationService service_;
   asio::signal_set signals_;
   asio::steady_timer timer_;

@@ -1,5 +1,7 @@
 #include "daemon_config.hpp"
 
+#include "target_request.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -274,7 +276,8 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   const ConfigSection target = file.section("target", {"name"});
   c.start_target = target.text("name").value_or("moon");
   // "sat:NAME" is looked up in the satellite catalogue when the daemon starts.
-  if (c.start_target != "stop" && c.start_target.rfind("sat:", 0) != 0 &&
+  if (c.start_target != "stop" &&
+      std::holds_alternative<NamedTarget>(target_from_name(c.start_target)) &&
       !find_station_target(c.sim.station, c.start_target)) {
     target.fail("name", "'" + c.start_target +
                             "' is not a target of this station: sun, moon, a [sky] source, "

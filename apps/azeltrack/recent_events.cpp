@@ -5,14 +5,16 @@
 
 namespace azt::app {
 
-void RecentEvents::add(double unix_s, std::string text) {
+void RecentEvents::add(double unix_s, std::string text, std::string merge_key) {
   text = valid_utf8(text);  // a client's name or bytes may be anything
-  if (!events_.empty() && events_.back().text == text) {
+  if (merge_key.empty()) merge_key = text;
+  if (!events_.empty() && events_.back().key == merge_key) {
     ++events_.back().count;
     events_.back().last_s = unix_s;
+    events_.back().text = std::move(text);
     return;
   }
-  events_.push_back(Event{unix_s, unix_s, std::move(text), 1});
+  events_.push_back(Event{unix_s, unix_s, std::move(text), std::move(merge_key), 1});
   while (events_.size() > kMaxEvents) events_.pop_front();
 }
 

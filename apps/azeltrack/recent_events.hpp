@@ -16,8 +16,10 @@ class RecentEvents {
  public:
   static constexpr std::size_t kMaxEvents = 20;
 
-  /// `text` is "who: what" as the daemon logs it; `unix_s` is UTC seconds.
-  void add(double unix_s, std::string text);
+  /// `text` is "who: what" as the daemon logs it; `unix_s` is UTC seconds. The newest entry is
+  /// counted again, with `text` as its latest words, when `merge_key` is the same (by default the
+  /// text itself): a program sending a new position every second makes one line, not a flood.
+  void add(double unix_s, std::string text, std::string merge_key = {});
   /// Newest first: [{"utc", "text", "count"}].
   [[nodiscard]] nlohmann::json to_json() const;
 
@@ -26,6 +28,7 @@ class RecentEvents {
     double first_s = 0.0;
     double last_s = 0.0;
     std::string text;
+    std::string key;
     std::size_t count = 1;
   };
   std::deque<Event> events_;  ///< oldest first

@@ -260,8 +260,13 @@ nlohmann::json SatelliteTracker::list(double unix_s) const {
 nlohmann::json SatelliteTracker::pass_track() const {
   nlohmann::json out = nlohmann::json::array();
   if (!planned_) return out;
-  for (std::size_t i = 0; i < planned_->sky.size(); i += 10) {
-    const auto& s = planned_->sky[i];
+  const auto& sky = planned_->sky;
+  for (std::size_t i = 0; i < sky.size(); i += 10) {
+    out.push_back({{"utc", iso(sky[i].t_s)}, {"az_deg", sky[i].az_deg}, {"el_deg", sky[i].el_deg}});
+  }
+  // The end of the pass too, so a short (grazing) pass still draws as a line from AOS to LOS.
+  if (sky.size() > 1 && (sky.size() - 1) % 10 != 0) {
+    const auto& s = sky.back();
     out.push_back({{"utc", iso(s.t_s)}, {"az_deg", s.az_deg}, {"el_deg", s.el_deg}});
   }
   return out;

@@ -16,7 +16,8 @@ namespace {
 class SimBackend final : public AntennaBackend {
  public:
   explicit SimBackend(const sim::StationSimSetup& s)
-      : antenna_(s.az_plant, s.el_plant, s.frame_version, s.link, s.seed),
+      : faults_(s.plant_faults),
+        antenna_(s.az_plant, s.el_plant, s.frame_version, s.link, s.seed),
         station_(sim::station_control_config(s),
                  control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg}) {
     station_.set_corrections(s.corrections);
@@ -31,6 +32,7 @@ class SimBackend final : public AntennaBackend {
       if (dt > 0.0) antenna_.step(duties_.az, duties_.el, dt, substeps);
     }
     last_s_ = now_s;
+    inject_due_faults(now_s);
     if (const auto reading = antenna_.transmit_frame()) {
       station_.on_encoder_reading(now_s, reading->az_deg, reading->el_deg);
     }
@@ -72,6 +74,18 @@ class SimBackend final : public AntennaBackend {
   }
 
  private:
+  /// The configured plant faults ([sim.az] fault), timed from the first tick.
+  void inject_due_faults(double now_s) {
+    if (!first_s_) first_s_ = now_s;
+    while (next_fault_ < faults_.size() && faults_[next_fault_].at_s <= now_s - *first_s_) {
+      antenna_.inject(faults_[next_fault_].azimuth, faults_[next_fault_].fault);
+      ++next_fault_;
+    }
+  }
+
+  std::vector<sim::ScheduledFault> faults_;  ///< sorted by time
+  std::size_t next_fault_ = 0;
+  std::optional<double> first_s_;
   sim::SimAntenna antenna_;
   control::StationController station_;
   control::Duties duties_;

@@ -80,6 +80,30 @@ void read_out_of_range(const ConfigSection& c, sim::StationSimSetup& setup) {
   setup.park_when_out_of_range = park;
 }
 
+/// `fault = "frozen_shaft" | "reversed_motor" | "encoder_offset"` starting `fault_at_s` seconds
+/// after the start (`fault_counts` for the offset): a plant fault to rehearse, or to test the
+/// station's refusals against.
+void read_plant_fault(const ConfigSection& s, bool azimuth, sim::StationSimSetup& setup) {
+  const auto kind = s.text("fault");
+  if (!kind) return;
+  sim::AxisFault fault;
+  if (*kind == "reversed_motor") {
+    fault.kind = sim::AxisFaultKind::ReversedMotor;
+  } else if (*kind == "encoder_offset") {
+    fault.kind = sim::AxisFaultKind::EncoderOffset;
+    const std::int64_t counts = s.integer("fault_counts").value_or(100);
+    if (counts < -65535 || counts > 65535) s.fail("fault_counts", "must be -65535 to 65535");
+    fault.counts = static_cast<std::int32_t>(counts);
+  } else if (*kind != "frozen_shaft") {
+    s.fail("fault", "must be \"frozen_shaft\", \"reversed_motor\" or \"encoder_offset\"");
+  }
+  const double at_s = s.number("fault_at_s").value_or(0.0);
+  if (!(at_s >= 0.0)) s.fail("fault_at_s", "must be 0 or more seconds");
+  setup.plant_faults.push_back(sim::ScheduledFault{at_s, azimuth, fault});
+  std::sort(setup.plant_faults.begin(), setup.plant_faults.end(),
+            [](const auto& a, const auto& b) { return a.at_s < b.at_s; });
+}
+
 void read_link(const ConfigSection& s, sim::StationSimSetup& setup) {
   const std::string version = s.text("frame_version").value_or("crc8");
   if (version == "seed") {
@@ -130,7 +154,8 @@ SimConfig sim_config_from(const ConfigFile& file) {
       file.section("sim", {"az", "el", "frame_version", "frame_loss", "byte_corruption", "seed"});
   const std::initializer_list<std::string_view> plant_keys = {
       "max_rate_deg_s", "time_constant_s", "backlash_deg", "stiction_duty",
-      "encoder_bits",   "start_deg",       "min_deg",      "max_deg"};
+      "encoder_bits",   "start_deg",       "min_deg",      "max_deg",
+      "fault",          "fault_at_s",      "fault_counts"};
   sim::AxisParams az_defaults;
   az_defaults.max_rate_deg_s = 1.5;
   az_defaults.min_deg = 0.0;
@@ -147,6 +172,8 @@ SimConfig sim_config_from(const ConfigFile& file) {
   el_defaults.max_deg = setup.el_range.max_deg;
   setup.az_plant = read_plant(sim_section.child("az", plant_keys), az_defaults);
   setup.el_plant = read_plant(sim_section.child("el", plant_keys), el_defaults);
+  read_plant_fault(sim_section.child("az", plant_keys), true, setup);
+  read_plant_fault(sim_section.child("el", plant_keys), false, setup);
   read_link(sim_section, setup);
   const ConfigSection control =
       file.section("control", {"window_deg", "ramp_s", "tracking_speed", "fast_zone_deg", "lead",

@@ -1,26 +1,23 @@
 #pragma once
-// The station as PC programs see it: RotatorService over the mode controller and the antenna.
-// Who is in control: a program's target puts the station in EXT mode and names the client; a
-// console STOP locks programs out until the console chooses again (ModeController).
+// The station as PC programs see it: RotatorService over the station's front door
+// (station_commands.hpp), which applies the same rules to every source. Who is in control: a
+// program's target puts the station in EXT mode and names the client; a console STOP locks
+// programs out until the console chooses again (ModeController).
 
 #include <functional>
 #include <string>
 
-#include "antenna_backend.hpp"
-#include "azt/control/modes.hpp"
 #include "azt/proto/rotator_service.hpp"
-#include "azt/proto/target_limits.hpp"
+#include "station_commands.hpp"
 
 namespace azt::app {
 
 class StationService final : public proto::RotatorService {
  public:
-  using Clock = std::function<double()>;  ///< monotonic seconds
   using Log = std::function<void(const std::string&)>;
 
-  StationService(control::ModeController& modes, AntennaBackend& antenna,
-                 proto::TargetLimits limits, control::ElevationRange el_range, std::string info,
-                 Clock now, Log log);
+  StationService(StationCommands& commands, const control::ModeController& modes,
+                 AntennaBackend& antenna, std::function<double()> now, std::string info, Log log);
 
   [[nodiscard]] std::optional<proto::PositionReport> position() const override;
   proto::ServiceStatus goto_position(std::string_view client, double az_deg,
@@ -31,27 +28,22 @@ class StationService final : public proto::RotatorService {
   proto::ServiceStatus park(std::string_view client) override;
   void activity(std::string_view client) override;
   [[nodiscard]] std::string info() const override { return info_; }
-  void refused(std::string_view client, std::string_view why) override {
-    (void)refuse(client, proto::ServiceStatus::Invalid, std::string(why));
-  }
+  void refused(std::string_view client, std::string_view why) override;
 
  private:
-  void announce(std::string_view client, const std::string& what);
-  /// A latched fault refuses every motion request until an operator clears it; a client must not
-  /// be told "RPRT 0" for a move that cannot happen.
-  [[nodiscard]] bool faulted() const { return !antenna_.faults().empty(); }
-  /// Logs a refusal the client was given (rate-limited by the daemon's log) and returns it.
-  proto::ServiceStatus refuse(std::string_view client, proto::ServiceStatus status,
-                              const std::string& why);
+  static CommandSource program(std::string_view client) {
+    return CommandSource{CommandSource::Kind::Program, std::string(client)};
+  }
+  static proto::ServiceStatus status_of(const CommandOutcome& outcome) {
+    return outcome.accepted() ? proto::ServiceStatus::Ok : outcome.refusal->status;
+  }
 
-  control::ModeController& modes_;
+  StationCommands& commands_;
+  const control::ModeController& modes_;
   AntennaBackend& antenna_;
-  proto::TargetLimits limits_;
-  control::ElevationRange el_range_;
+  std::function<double()> now_;
   std::string info_;
-  Clock now_;
   Log log_;
-  std::string last_announced_;
 };
 
 }  // namespace azt::app

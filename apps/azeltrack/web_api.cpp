@@ -237,15 +237,16 @@ void WebApi::handle_action(const WebRequest& request, const Respond& respond) {
       return;
     }
   }
-  model_.act(request.path.substr(5), body, [respond](ActResult result) {
-    if (result.error) {
-      respond(error_reply(result.error->status(), result.error->what(), result.error->field()));
-      return;
-    }
-    json answer{{"ok", true}};
-    answer.update(result.fields);
-    respond(json_reply(200, answer));
-  });
+  model_.act(
+      request.path.substr(5), body, "console " + request.client, [respond](ActResult result) {
+        if (result.error) {
+          respond(error_reply(result.error->status(), result.error->what(), result.error->field()));
+          return;
+        }
+        json answer{{"ok", true}};
+        answer.update(result.fields);
+        respond(json_reply(200, answer));
+      });
 }
 
 }  // namespace azt::app

@@ -48,10 +48,12 @@ class ConsoleModel {
   virtual nlohmann::json config() = 0;
   virtual nlohmann::json targets() = 0;
   virtual nlohmann::json sky(double hours) = 0;
-  /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …). Throws ApiError
+  /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …); `source` names
+  /// who asked ("console 192.168.1.20") for the station's record of commands. Throws ApiError
   /// for a refusal known at once; otherwise calls `done` exactly once, at once or later (a save
   /// finishes off the event loop), always on the loop's thread.
-  virtual void act(const std::string& action, const nlohmann::json& body, ActDone done) = 0;
+  virtual void act(const std::string& action, const nlohmann::json& body, const std::string& source,
+                   ActDone done) = 0;
 };
 
 struct WebApiConfig {

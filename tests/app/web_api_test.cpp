@@ -21,7 +21,8 @@ class RecordingModel final : public ConsoleModel {
   json config() override { return {{"band", "144"}}; }
   json targets() override { return {{"targets", json::array()}}; }
   json sky(double hours) override { return {{"hours", hours}}; }
-  void act(const std::string& action, const json& body, ActDone done) override {
+  void act(const std::string& action, const json& body, const std::string& /*source*/,
+           ActDone done) override {
     actions.push_back(action + " " + body.dump());
     if (action == "config/station" && body.value("grid", "") == "ZZ99") {
       throw ApiError(400, "grid", "locator ZZ99 is not valid");

@@ -197,6 +197,9 @@ async function main() {
       await until('Moon on screen', async () => (await text(page, '#target-name')).includes('Moon'), 3000);
       const s = await state();
       if (s.target.name !== 'Moon' || s.mode !== 'TRACK') throw new Error(`daemon: ${s.mode} ${s.target.name}`);
+      // Who moved the antenna (issue 13 §1): the console's choice, with its address.
+      await until('the command in the list', async () =>
+        (await text(page, '#command-list')).includes('console 127.0.0.1: track Moon'), 3000);
     });
 
     await scenario('the station I/O panel shows the T/R chain and what is wired', page, async () => {

@@ -125,8 +125,8 @@ Result<EasyCommToken> parse_token(std::string_view token, const Entry& entry,
   const auto angle = parse_angle(rest);
   if (!angle) return fail("EasyComm: malformed angle '" + std::string(rest) + "'");
   const bool az = entry.set_op == EasyCommOp::SetAz;
-  if (!(az ? limits.accepts_az(*angle) : limits.accepts_el(*angle))) {
-    return fail("EasyComm: target out of range");
+  if (auto why = az ? limits.why_not_az(*angle) : limits.why_not_el(*angle); !why.empty()) {
+    return fail(std::move(why));
   }
   out.op = entry.set_op;
   out.angle_deg = *angle;

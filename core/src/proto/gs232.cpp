@@ -72,7 +72,7 @@ Result<Gs232Command> parse_args(const Entry& entry, std::string_view rest,
   }
   const auto az = three_digits(rest.substr(0, 3));
   if (!az) return fail("GS-232: azimuth must be three digits");
-  if (!limits.accepts_az(*az)) return fail("GS-232: azimuth out of range");
+  if (auto why = limits.why_not_az(*az); !why.empty()) return fail(std::move(why));
   cmd.az_deg = *az;
   rest.remove_prefix(3);
   if (entry.args == Args::Az) {
@@ -82,7 +82,7 @@ Result<Gs232Command> parse_args(const Entry& entry, std::string_view rest,
   if (rest.size() != 4 || rest[0] != ' ') return fail("GS-232: expected 'Waaa eee'");
   const auto el = three_digits(rest.substr(1));
   if (!el) return fail("GS-232: elevation must be three digits");
-  if (!limits.accepts_el(*el)) return fail("GS-232: elevation out of range");
+  if (auto why = limits.why_not_el(*el); !why.empty()) return fail(std::move(why));
   cmd.el_deg = *el;
   return cmd;
 }

@@ -90,8 +90,8 @@ std::optional<std::string> apply_tag(std::string_view name, std::string_view val
     const bool az = equals_ci(name, "AZIMUTH");
     const auto angle = parse_lenient_angle(value);
     if (!angle) return "PstRotator: malformed angle '" + std::string(value) + "'";
-    if (!(az ? limits.accepts_az(*angle) : limits.accepts_el(*angle))) {
-      return "PstRotator: target out of range";
+    if (auto why = az ? limits.why_not_az(*angle) : limits.why_not_el(*angle); !why.empty()) {
+      return why;
     }
     (az ? command.az_deg : command.el_deg) = *angle;
     return std::nullopt;

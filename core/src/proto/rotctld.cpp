@@ -182,16 +182,15 @@ std::optional<MoveDirection> parse_direction(std::string_view text) {
   return std::nullopt;
 }
 
-/// Fills the kind-specific fields; returns an error message or an empty view.
-std::string_view fill_args(RotctldCommand& command, const Args& args, const TargetLimits& limits) {
+/// Fills the kind-specific fields; returns an error message or an empty string.
+std::string fill_args(RotctldCommand& command, const Args& args, const TargetLimits& limits) {
   switch (command.kind) {
     case RotctldCommandKind::SetPos: {
       const auto az = parse_angle(args.values[0]);
       const auto el = parse_angle(args.values[1]);
       if (!az || !el) return "set_pos needs two finite numbers";
-      if (!limits.accepts_az(*az) || !limits.accepts_el(*el)) {
-        return "set_pos target outside the rotator's limits";
-      }
+      if (auto why = limits.why_not_az(*az); !why.empty()) return why;
+      if (auto why = limits.why_not_el(*el); !why.empty()) return why;
       command.az_deg = *az;
       command.el_deg = *el;
       return {};

@@ -8,6 +8,8 @@
 // rotator, which rotctld announces in `\dump_state` (reference/rotator-controllers-and-protocols.md
 // §3 and §8.1): az −180..450, el 0..90.
 
+#include <string>
+
 namespace azt::proto {
 
 struct TargetLimits {
@@ -23,6 +25,10 @@ struct TargetLimits {
   [[nodiscard]] constexpr bool accepts_el(double el_deg) const {
     return el_deg >= el_min_deg && el_deg <= el_max_deg;
   }
+  /// Why a value is refused ("az 500° is outside -180° to 450°"), "" when it is accepted: one
+  /// wording for every protocol and the console, so an operator reads one reason (issue 13 §1).
+  [[nodiscard]] std::string why_not_az(double az_deg) const;
+  [[nodiscard]] std::string why_not_el(double el_deg) const;
 };
 
 }  // namespace azt::proto
