@@ -121,8 +121,10 @@ class FakeModel final : public app::ConsoleModel {
     AZT_FUZZ_REQUIRE(std::isfinite(hours) && hours >= 0.0 && hours <= 24.0);
     return {{"hours", hours}, {"passes", json::array()}};
   }
-  void act(const std::string& action, const json& body, app::ActDone done) override {
+  void act(const std::string& action, const json& body, const std::string& source,
+           app::ActDone done) override {
     acted = true;
+    AZT_FUZZ_REQUIRE(source.rfind("console ", 0) == 0);
     AZT_FUZZ_REQUIRE(body.is_object());
     const std::string field = body.empty() ? std::string() : body.begin().key();
     if (refuse_at_once_ || body.contains("refuse")) {
