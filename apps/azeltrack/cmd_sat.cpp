@@ -9,6 +9,7 @@
 
 #include "cli_error.hpp"
 #include "commands.hpp"
+#include "horizon_mask_option.hpp"
 #include "satellites.hpp"
 #include "sky_setup.hpp"
 

@@ -27,6 +27,7 @@
 #include "cli_error.hpp"
 #include "console_server.hpp"
 #include "guarded_antenna.hpp"
+#include "horizon_mask_option.hpp"
 #include "recent_events.hpp"
 #include "satellite_tracker.hpp"
 #include "sequencer_runner.hpp"

@@ -1,15 +1,14 @@
 #include "daemon_config.hpp"
 
-#include "target_request.hpp"
-
 #include <algorithm>
 #include <cmath>
 
 #include "cli_error.hpp"
 #include "config_file.hpp"
 #include "hardware_config.hpp"
-#include "satellites.hpp"
+#include "horizon_mask_option.hpp"
 #include "station_config.hpp"
+#include "target_request.hpp"
 
 namespace azt::app {
 namespace {

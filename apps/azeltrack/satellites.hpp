@@ -73,8 +73,4 @@ Result<std::vector<track::SkyPoint>> sample_pass(const Satellite& sat,
                                                  const astro::Observer& site,
                                                  double time_offset_s = 0.0);
 
-/// "0:5,90:10,180:3": sector start azimuths and their minimum elevations; or one number for a
-/// flat horizon. Throws UsageError naming `option`.
-orbit::HorizonMask parse_horizon_mask(const std::string& option, const std::string& text);
-
 }  // namespace azt::app

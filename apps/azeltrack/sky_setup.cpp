@@ -10,7 +10,6 @@
 #include "azt/astro/erfa_ephemeris.hpp"
 #include "azt/astro/maidenhead.hpp"
 #include "cli_error.hpp"
-#include "commands.hpp"
 #ifdef AZT_HAVE_SWISS
 #include "azt/astro/swiss_ephemeris.hpp"
 #endif

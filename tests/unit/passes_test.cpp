@@ -133,5 +133,23 @@ TEST(Passes, FarBelowTheHorizonTheStepsAreLongButNothingIsMissed) {
   EXPECT_LT(fast, slow) << "the bound did not lengthen any step";
 }
 
+TEST(HorizonMaskParse, ReadsOneElevationOrSectors) {
+  auto flat = HorizonMask::parse("5");
+  ASSERT_TRUE(flat.ok());
+  EXPECT_DOUBLE_EQ(flat->min_el_at(123.0), 5.0);
+  auto sectors = HorizonMask::parse("0:5,90:12,200:3");
+  ASSERT_TRUE(sectors.ok());
+  EXPECT_DOUBLE_EQ(sectors->min_el_at(100.0), 12.0);
+  EXPECT_DOUBLE_EQ(sectors->min_el_at(359.0), 3.0);
+}
+
+TEST(HorizonMaskParse, QuotesWhatItCouldNotRead) {
+  EXPECT_EQ(HorizonMask::parse("low").error().message, "'low' is not a number of degrees");
+  EXPECT_EQ(HorizonMask::parse("0:5,90").error().message, "'90' is not AZ:MIN_EL (e.g. 0:5,90:10)");
+  EXPECT_EQ(HorizonMask::parse("0:5,,90:1").error().message,
+            "'' is not AZ:MIN_EL (e.g. 0:5,90:10)");
+  EXPECT_FALSE(HorizonMask::parse("90:5,10:1").ok());  // not increasing: make() refuses it
+}
+
 }  // namespace
 }  // namespace azt::orbit

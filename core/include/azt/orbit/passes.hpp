@@ -10,6 +10,7 @@
 // small against the shortest pass of the orbit.
 
 #include <functional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -25,6 +26,9 @@ class HorizonMask {
   HorizonMask() = default;
   /// Validates: 1–72 sectors, starts 0 ≤ az < 360 strictly increasing, elevations −10..90.
   static Result<HorizonMask> make(std::vector<std::pair<double, double>> sectors);
+  /// From text as operators type it: one elevation ("5", a flat horizon) or "AZ:MIN_EL" sectors
+  /// separated by commas ("0:5,90:12,200:3"); the error quotes what could not be read.
+  static Result<HorizonMask> parse(std::string_view text);
   static HorizonMask flat(double min_el_deg);
   [[nodiscard]] double min_el_at(double az_deg) const;
   [[nodiscard]] double lowest() const;
