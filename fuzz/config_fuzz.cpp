@@ -15,11 +15,11 @@
 #include <string>
 #include <string_view>
 
-#include "cli_error.hpp"
-#include "config_file.hpp"
-#include "config_store.hpp"
-#include "config_text_edit.hpp"
-#include "daemon_config.hpp"
+#include "common/usage_error.hpp"
+#include "config/config_file.hpp"
+#include "config/config_store.hpp"
+#include "config/config_text_edit.hpp"
+#include "config/daemon_config.hpp"
 #include "fuzz_support.hpp"
 
 namespace {

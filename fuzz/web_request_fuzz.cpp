@@ -48,12 +48,12 @@
 #include <utility>
 
 #include "azt/util/valid_utf8.hpp"
+#include "common/off_loop.hpp"
+#include "console/web_api.hpp"
+#include "console/web_auth.hpp"
+#include "console/web_request.hpp"
+#include "console/web_server.hpp"
 #include "fuzz_support.hpp"
-#include "off_loop.hpp"
-#include "web_api.hpp"
-#include "web_auth.hpp"
-#include "web_request.hpp"
-#include "web_server.hpp"
 
 namespace {
 

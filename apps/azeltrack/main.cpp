@@ -6,8 +6,8 @@
 #include <exception>
 #include <iostream>
 
-#include "cli_error.hpp"
-#include "commands.hpp"
+#include "cli/commands.hpp"
+#include "common/usage_error.hpp"
 
 namespace {
 

@@ -1,0 +1,70 @@
+#pragma once
+
+// The antenna behind the daemon: the simulated one (plants, hub link and the station's own
+// controller), or an existing rotator controller driven through Hamlib.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "azt/control/corrections.hpp"
+#include "azt/control/modes.hpp"
+#include "azt/control/station_controller.hpp"
+#include "azt/proto/rotator_service.hpp"
+#include "config/daemon_config.hpp"
+
+namespace boost::asio {
+class io_context;
+}  // namespace boost::asio
+
+namespace azt::app {
+
+class AntennaBackend {
+ public:
+  AntennaBackend() = default;
+  AntennaBackend(const AntennaBackend&) = delete;
+  AntennaBackend& operator=(const AntennaBackend&) = delete;
+  virtual ~AntennaBackend() = default;
+
+  /// One control tick at `now_s` (monotonic seconds): move towards `demand`. `rate` is the
+  /// target's sky rate (deg/s) for feed-forward.
+  virtual void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) = 0;
+  /// nullopt while the position is unknown (stale sensors, lost link).
+  [[nodiscard]] virtual std::optional<proto::PositionReport> position(double now_s) const = 0;
+  /// Motors off now (shutdown, fatal paths).
+  virtual void stop_now(double now_s) = 0;
+  /// Latched faults in words (empty when healthy).
+  [[nodiscard]] virtual std::vector<std::string> faults() const = 0;
+  virtual void clear_faults() = 0;
+  /// The Offset / ± / UP / DWN / tilt settings, applied to every reading from now on. False when
+  /// this backend cannot apply them (a Hamlib rotator closes its own loop).
+  virtual bool set_corrections(const control::PositionCorrections& corrections) = 0;
+  /// The encoder angles as read, before corrections; nullopt when there are no encoders of ours.
+  [[nodiscard]] virtual std::optional<control::AzEl> encoder_reading() const = 0;
+  [[nodiscard]] virtual std::string describe() const = 0;
+  /// The travel-end switches changed (an input edge, between ticks): a drive towards a tripped
+  /// switch goes off now. A Hamlib rotator has its own limit switches, so the default ignores
+  /// them.
+  virtual void set_limits(double now_s, const control::LimitSwitches& limits) {
+    (void)now_s;
+    (void)limits;
+  }
+};
+
+/// The EncoderHub on a serial device and two IBT-2 bridges on sysfs PWM ([hub], [pwm]); throws
+/// UsageError naming the device or channel that cannot be opened (nothing is driven then).
+std::unique_ptr<AntennaBackend> make_pwm_backend(boost::asio::io_context& io,
+                                                 const DaemonConfig& config);
+struct HardwarePorts;
+/// Per-axis drives and sensors ([hardware.az] / [hardware.el]) on the devices `ports` opens;
+/// throws UsageError naming the key of a device that cannot be had (nothing is driven then).
+std::unique_ptr<AntennaBackend> make_hardware_backend(boost::asio::io_context& io,
+                                                      const DaemonConfig& config,
+                                                      HardwarePorts ports);
+/// The simulated antenna of the [sim] tables, in real time.
+std::unique_ptr<AntennaBackend> make_sim_backend(const DaemonConfig& config);
+/// A Hamlib rotator ([hamlib]); throws UsageError naming the model/device when it cannot open.
+std::unique_ptr<AntennaBackend> make_hamlib_backend(const DaemonConfig& config);
+
+}  // namespace azt::app

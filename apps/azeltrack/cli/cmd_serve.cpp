@@ -1,0 +1,70 @@
+// `azeltrack serve`: the daemon (docs/daemon.md).
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "azt/linux/atomic_file.hpp"
+#include "cli/commands.hpp"
+#include "common/usage_error.hpp"
+#include "config/config_store.hpp"
+#include "daemon/daemon.hpp"
+
+namespace azt::app {
+namespace {
+
+/// /etc/azeltrack/azeltrack.toml for root (the systemd unit), else the user's config directory.
+std::string default_config_path() {
+  if (geteuid() == 0) return "/etc/azeltrack/azeltrack.toml";
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg != nullptr && *xdg != '\0') {
+    return std::string(xdg) + "/azeltrack/azeltrack.toml";
+  }
+  const char* home = std::getenv("HOME");
+  return std::string(home != nullptr ? home : ".") + "/.config/azeltrack/azeltrack.toml";
+}
+
+/// A first run writes the commented default (the simulated antenna) and uses it. A missing file
+/// with a backup beside it is not a first run: ConfigStore recovers the backup.
+void write_default_if_missing(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) || std::filesystem::exists(path + ".bak", ec)) return;
+  const std::filesystem::path p(path);
+  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
+  auto written = linux_os::write_file_atomically(path, default_config_text());
+  if (!written)
+    throw UsageError("cannot write the default configuration: " + written.error().message);
+  spdlog::warn("no configuration at {}: wrote the default (simulated antenna); edit it and restart",
+               path);
+}
+
+void set_log_level(const std::string& level) {
+  spdlog::set_level(level == "debug"  ? spdlog::level::debug
+                    : level == "warn" ? spdlog::level::warn
+                                      : spdlog::level::info);
+}
+
+}  // namespace
+
+Runner add_serve_command(CLI::App& app) {
+  auto opts = std::make_shared<DaemonOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "serve", "Run the daemon: control loop, rotctld, serial and PstRotator servers");
+  cmd->add_option("--config", opts->config_path,
+                  "Configuration file (default: /etc/azeltrack/azeltrack.toml as root, else "
+                  "~/.config/azeltrack/azeltrack.toml; written with defaults if missing)");
+  cmd->add_option("--run-for", opts->run_for_s, "Stop after this many seconds (tests)")
+      ->check(CLI::Range(0.0, 1e9));
+  return [opts] {
+    if (opts->config_path.empty()) opts->config_path = default_config_path();
+    write_default_if_missing(opts->config_path);
+    ConfigStore store = ConfigStore::open(opts->config_path);
+    // Loudly: a fallback to the backup means the primary file was corrupt.
+    for (const auto& notice : store.notices()) spdlog::warn("{}", notice);
+    if (auto removed = store.remove_stale_temps()) spdlog::warn("{}", *removed);
+    set_log_level(store.config().log_level);
+    return run_daemon(store, *opts);
+  };
+}
+
+}  // namespace azt::app

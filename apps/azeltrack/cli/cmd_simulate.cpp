@@ -1,0 +1,182 @@
+// `azeltrack simulate`: the real controller against the simulated antenna in virtual time.
+#include <cmath>
+#include <ctime>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "azt/sim/pass_sim.hpp"
+#include "azt/sim/sky_track.hpp"
+#include "azt/sim/station_sim.hpp"
+#include "cli/commands.hpp"
+#include "common/usage_error.hpp"
+#include "config/config_file.hpp"
+#include "config/sim_config.hpp"
+#include "satellites/satellite_catalogue.hpp"
+
+namespace azt::app {
+namespace {
+
+struct SimulateOptions {
+  std::string config = "examples/sim.toml";
+  std::string scenario;
+  std::string from;
+  std::string hours = "6";
+  std::string to_az, to_el;
+  std::string tle, sat;
+  bool json = false;
+};
+
+nlohmann::json axis_json(const sim::AxisMetrics& m) {
+  return {{"rms_error_deg", m.rms_error_deg},
+          {"max_error_deg", m.max_error_deg},
+          {"starts", m.starts},
+          {"starts_per_hour", m.starts_per_hour},
+          {"overshoot_deg", m.overshoot_deg},
+          {"travel_deg", m.travel_deg}};
+}
+
+nlohmann::json result_json(const sim::SimResult& r, const std::string& scenario, double cpu_s) {
+  auto opt = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+  };
+  return {{"scenario", scenario},
+          {"rms_error_deg", r.rms_error_deg},
+          {"max_error_deg", r.max_error_deg},
+          {"motor_starts_per_hour", {{"az", r.az.starts_per_hour}, {"el", r.el.starts_per_hour}}},
+          {"slew_time_s", opt(r.slew_time_s)},
+          {"slew_min_time_s", r.slew_min_time_s},
+          {"overshoot_deg", std::max(r.az.overshoot_deg, r.el.overshoot_deg)},
+          {"faults", r.faults},
+          {"acquired_s", opt(r.acquired_s)},
+          {"simulated_s", r.simulated_s},
+          {"cpu_s", cpu_s},
+          {"az", axis_json(r.az)},
+          {"el", axis_json(r.el)},
+          {"hub", {{"frames_ok", r.hub.frames_ok()}, {"rejected", r.hub.rejected()}}}};
+}
+
+sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double hours) {
+  const auto ephemeris = open_ephemeris(c.station.sky.ephemeris);
+  astro::UtcInstant start = utc_now();
+  if (!o.from.empty()) {
+    auto parsed = astro::parse_iso8601_utc(o.from);
+    if (!parsed) throw UsageError("--from: " + parsed.error().message);
+    start = *parsed;
+  }
+  time_scales_at(start, c.station.sky.dut1_s);  // validates the instant, warns once if needed
+  sim::SkyTrackSetup track;
+  track.ephemeris = ephemeris.get();
+  track.target = o.scenario == "sun" ? astro::Target::sun() : astro::Target::moon();
+  track.observer = c.station.sky.observer;
+  track.atmosphere = c.station.sky.atmosphere;
+  track.start = start;
+  track.dut1_s = c.station.sky.dut1_s;
+  track.leap_table = &leap_table();
+  return sim::simulate_tracking(c.setup, sim::make_sky_track(track), hours * 3600.0);
+}
+
+/// The next pass of --sat after --from, flown by the real controller on the simulated plant
+/// (issue 7 §3): the mount is the configuration's travel and plant rates.
+int run_pass(const SimConfig& c, const SimulateOptions& o) {
+  if (o.tle.empty() || o.sat.empty()) throw UsageError("pass needs --tle FILE and --sat NAME");
+  const SatelliteCatalogue cat = SatelliteCatalogue::load(o.tle);
+  const Satellite& sat = cat.find(o.sat);
+  astro::UtcInstant from = utc_now();
+  if (!o.from.empty()) {
+    auto parsed = astro::parse_iso8601_utc(o.from);
+    if (!parsed) throw UsageError("--from: " + parsed.error().message);
+    from = *parsed;
+  }
+  const double dut1 = c.station.sky.dut1_s;
+  const astro::Observer& site = c.station.sky.observer;
+  auto passes = find_satellite_passes(sat, from, 48.0, orbit::HorizonMask::flat(0.0), dut1, site);
+  if (!passes) throw std::runtime_error(passes.error().message);
+  const orbit::Pass* next = nullptr;
+  for (const auto& p : passes.value()) {
+    if (!p.starts_before_window && !p.ends_after_window) {
+      next = &p;
+      break;
+    }
+  }
+  if (next == nullptr)
+    throw std::runtime_error("no whole pass of " + sat.elements.label() + " in 48 h");
+  auto sky = sample_pass(sat, from, *next, dut1, site);
+  if (!sky) throw std::runtime_error(sky.error().message);
+  const track::MountGeometry mount = sim::mount_geometry(c.setup);
+  const double prep_s = std::min(600.0, next->aos_s);
+  const std::clock_t cpu_start = std::clock();
+  auto r = sim::simulate_pass(sky.value(), mount, c.setup,
+                              {c.setup.az_plant.start_deg, c.setup.el_plant.start_deg}, prep_s);
+  if (!r) throw std::runtime_error(r.error().message);
+  const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  const auto iso = [&from](double t) { return astro::format_iso8601_utc(utc_plus(from, t)); };
+  const nlohmann::json j{{"scenario", "pass"},
+                         {"sat", sat.elements.label()},
+                         {"aos", iso(next->aos_s)},
+                         {"tca", iso(next->tca_s)},
+                         {"los", iso(next->los_s)},
+                         {"max_el_deg", next->max_el_deg},
+                         {"flip", r->flip},
+                         {"max_error_deg", r->max_error_deg},
+                         {"rms_error_deg", r->rms_error_deg},
+                         {"max_error_beyond_plan_deg", r->max_excess_deg},
+                         {"az_travel_deg", r->az_travel_deg},
+                         {"pass_span_deg", r->pass_span_deg},
+                         {"unwinds", r->unwinds},
+                         {"faults", r->faults},
+                         {"prepositioning_s", prep_s},
+                         {"cpu_s", cpu_s}};
+  std::cout << (o.json ? j.dump() : j.dump(2)) << '\n';
+  return 0;
+}
+
+int run_simulate(const SimulateOptions& o) {
+  if (o.scenario != "moon" && o.scenario != "sun" && o.scenario != "slew" && o.scenario != "pass") {
+    throw UsageError("--scenario must be moon, sun, slew or pass");
+  }
+  const SimConfig config = sim_config_from(ConfigFile::load(o.config));
+  if (o.scenario == "pass") return run_pass(config, o);
+  const double hours = parse_number_option("--hours", o.hours);
+  if (hours <= 0.0 || hours > 48.0) throw UsageError("--hours must be in (0, 48]");
+  const std::clock_t cpu_start = std::clock();
+  sim::SimResult result;
+  if (o.scenario == "slew") {
+    if (o.to_az.empty() || o.to_el.empty()) throw UsageError("slew needs --to-az and --to-el");
+    const control::AzEl to{parse_number_option("--to-az", o.to_az),
+                           parse_number_option("--to-el", o.to_el)};
+    if (to.az_deg < 0.0 || to.az_deg >= 360.0 ||
+        !control::plan_elevation(to.el_deg, config.setup.el_range)) {
+      throw UsageError("--to-az must be 0..360 and --to-el inside the elevation range");
+    }
+    result = sim::simulate_slew(config.setup, to, 3600.0);
+  } else {
+    result = run_tracking(config, o, hours);
+  }
+  const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  const nlohmann::json j = result_json(result, o.scenario, cpu_s);
+  std::cout << (o.json ? j.dump() : j.dump(2)) << '\n';
+  return 0;
+}
+
+}  // namespace
+
+Runner add_simulate_command(CLI::App& app) {
+  auto opts = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "simulate", "Run the real controller against the simulated antenna in virtual time");
+  cmd->add_option("--config", opts->config, "Configuration file (default examples/sim.toml)");
+  cmd->add_option("--scenario", opts->scenario, "moon, sun, slew or pass")->required();
+  cmd->add_option("--from", opts->from, "Start instant, ISO 8601 UTC (default now)");
+  cmd->add_option("--hours", opts->hours, "Tracking duration in simulated hours (default 6)");
+  cmd->add_option("--to-az", opts->to_az, "Slew target azimuth, degrees");
+  cmd->add_option("--to-el", opts->to_el, "Slew target elevation, degrees");
+  cmd->add_option("--tle", opts->tle, "pass: the element sets (TLE or OMM)");
+  cmd->add_option("--sat", opts->sat, "pass: the satellite, by name or NORAD number");
+  cmd->add_flag("--json", opts->json, "One JSON line instead of indented JSON");
+  return [opts] { return run_simulate(*opts); };
+}
+
+}  // namespace azt::app

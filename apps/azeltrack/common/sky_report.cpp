@@ -1,0 +1,104 @@
+#include "common/sky_report.hpp"
+
+#include "azt/astro/bands.hpp"
+#include "common/usage_error.hpp"
+
+namespace azt::app {
+namespace {
+
+astro::Epoch make_epoch_or_throw(const astro::Ephemeris& ephemeris, const astro::TimeScales& t) {
+  auto epoch = astro::make_epoch(ephemeris, t);
+  if (!epoch) throw UsageError(epoch.error().message);
+  return *epoch;
+}
+
+nlohmann::json optional_json(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json moon_echo_json(const TargetReport& r, const SkySettings& settings) {
+  nlohmann::json out;
+  const double rate = *r.observation.place.range_rate_km_s;
+  out["echo_delay_s"] = astro::echo_delay_s(*r.observation.place.distance_km);
+  if (settings.freq_mhz) {
+    out["freq_mhz"] = *settings.freq_mhz;
+    out["echo_doppler_hz"] = astro::self_echo_doppler_hz(*settings.freq_mhz, rate);
+    if (r.dx_range_rate_km_s) {
+      out["dx_echo_doppler_hz"] =
+          astro::dx_echo_doppler_hz(*settings.freq_mhz, rate, *r.dx_range_rate_km_s);
+    }
+  }
+  nlohmann::json bands = nlohmann::json::array();
+  for (const auto& band : astro::eme_bands()) {
+    nlohmann::json b{{"band", band.name},
+                     {"freq_mhz", band.freq_mhz},
+                     {"echo_doppler_hz", astro::self_echo_doppler_hz(band.freq_mhz, rate)}};
+    if (r.dx_range_rate_km_s) {
+      b["dx_echo_doppler_hz"] =
+          astro::dx_echo_doppler_hz(band.freq_mhz, rate, *r.dx_range_rate_km_s);
+    }
+    bands.push_back(b);
+  }
+  out["bands"] = bands;
+  return out;
+}
+
+}  // namespace
+
+SkySnapshot::SkySnapshot(const astro::Ephemeris& ephemeris, const SkySettings& settings,
+                         const astro::UtcInstant& utc)
+    : ephemeris_(ephemeris),
+      settings_(settings),
+      epoch_(make_epoch_or_throw(ephemeris, time_scales_at(utc, settings.dut1_s))),
+      station_(astro::make_station(epoch_, settings.observer)) {
+  if (settings.dx) dx_station_ = astro::make_station(epoch_, *settings.dx);
+}
+
+TargetReport SkySnapshot::observe(const astro::Target& target) const {
+  auto obs = astro::observe(target, ephemeris_, epoch_, station_, settings_.atmosphere);
+  if (!obs) throw UsageError(obs.error().message);
+  TargetReport report{target, *obs, std::nullopt, std::nullopt};
+  if (target.kind == astro::Target::Kind::Moon && dx_station_) {
+    auto dx = astro::observe_moon(ephemeris_, epoch_, *dx_station_);
+    if (!dx) throw UsageError(dx.error().message);
+    report.dx_range_rate_km_s = dx->range_rate_km_s;
+    report.dx_place = *dx;
+  }
+  return report;
+}
+
+nlohmann::json report_json(const TargetReport& r, const SkySnapshot& snapshot,
+                           const SkySettings& settings, const std::string& ephemeris_name) {
+  const astro::Place& p = r.observation.place;
+  const astro::TimeScales& t = snapshot.time();
+  nlohmann::json out{
+      {"target", r.target.name},
+      {"utc", astro::format_iso8601_utc(t.utc)},
+      {"ephemeris", ephemeris_name},
+      {"observer",
+       {{"lat_deg", settings.observer.lat_deg},
+        {"lon_deg", settings.observer.lon_deg},
+        {"height_m", settings.observer.height_m},
+        {"grid", settings.grid}}},
+      {"dut1_s", t.dut1_s},
+      {"tai_minus_utc_s", t.tai_minus_utc_s},
+      {"refraction", std::string(astro::to_string(settings.atmosphere.model))},
+      {"az_deg", p.az_deg},
+      {"el_deg", r.observation.el_deg},
+      {"el_geometric_deg", p.el_geometric_deg},
+      {"ra_deg", p.ra_deg},
+      {"dec_deg", p.dec_deg},
+      {"distance_km", optional_json(p.distance_km)},
+      {"range_rate_km_s", optional_json(p.range_rate_km_s)},
+  };
+  if (r.target.kind == astro::Target::Kind::Moon) out.update(moon_echo_json(r, settings));
+  if (r.dx_place) {
+    out["dx"] = {{"grid", settings.dx_grid},
+                 {"az_deg", r.dx_place->az_deg},
+                 {"el_geometric_deg", r.dx_place->el_geometric_deg},
+                 {"range_rate_km_s", optional_json(r.dx_range_rate_km_s)}};
+  }
+  return out;
+}
+
+}  // namespace azt::app

@@ -1,0 +1,367 @@
+#include "config/daemon_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/horizon_mask_option.hpp"
+#include "common/target_request.hpp"
+#include "common/usage_error.hpp"
+#include "config/config_file.hpp"
+#include "config/hardware_config.hpp"
+#include "config/station_config.hpp"
+
+namespace azt::app {
+namespace {
+
+unsigned short read_port(const ConfigSection& s, std::string_view key, unsigned short fallback) {
+  const auto port = s.integer(key);
+  if (!port) return fallback;
+  if (*port < 0 || *port > 65535) s.fail(key, "must be 0 to 65535 (0 disables)");
+  return static_cast<unsigned short>(*port);
+}
+
+NetServerConfig read_net(const ConfigSection& s, NetServerConfig fallback) {
+  fallback.bind = s.text("bind").value_or(fallback.bind);
+  fallback.port = read_port(s, "port", fallback.port);
+  return fallback;
+}
+
+std::vector<SerialServerConfig> read_serial(const ConfigFile& file) {
+  std::vector<SerialServerConfig> out;
+  for (const ConfigSection& s : file.section_array("serial", {"protocol", "device", "baud"})) {
+    SerialServerConfig c;
+    c.protocol = s.text("protocol").value_or("");
+    constexpr std::array<std::string_view, 6> kKnown = {"gs232a",    "gs232b", "easycomm1",
+                                                        "easycomm2", "spid",   "rot1prog"};
+    if (std::find(kKnown.begin(), kKnown.end(), c.protocol) == kKnown.end()) {
+      s.fail("protocol", "must be gs232a, gs232b, easycomm1, easycomm2, spid or rot1prog");
+    }
+    c.device = s.text("device").value_or("");
+    if (c.device.empty()) s.fail("device", "is required: \"pty:/path\" or a serial device path");
+    const auto baud = s.integer("baud").value_or(9600);
+    if (baud < 600 || baud > 115200) s.fail("baud", "must be 600 to 115200");
+    c.baud = static_cast<unsigned>(baud);
+    for (const auto& other : out) {
+      if (other.device == c.device) s.fail("device", "is used by two [[serial]] servers");
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+linux_os::HamlibConfig read_hamlib(const ConfigSection& s) {
+  linux_os::HamlibConfig h;
+  const auto model = s.integer("model").value_or(h.model);
+  if (model < 1 || model > 100000) s.fail("model", "must be a Hamlib rotator model (rotctl -l)");
+  h.model = static_cast<int>(model);
+  h.device = s.text("device").value_or("");
+  const auto baud = s.integer("baud").value_or(0);
+  if (baud < 0 || baud > 1000000) s.fail("baud", "must be 0 (backend default) or a serial speed");
+  h.baud = static_cast<int>(baud);
+  h.poll_s = s.number("poll_s").value_or(h.poll_s);
+  if (h.poll_s < 0.05 || h.poll_s > 5.0) s.fail("poll_s", "must be 0.05 to 5 seconds");
+  h.min_move_deg = s.number("min_move_deg").value_or(h.min_move_deg);
+  if (h.min_move_deg < 0.0 || h.min_move_deg > 10.0) s.fail("min_move_deg", "must be 0 to 10");
+  return h;
+}
+
+WebConfig read_web(const ConfigSection& s) {
+  WebConfig w;
+  w.bind = s.text("bind").value_or(w.bind);
+  w.port = read_port(s, "port", w.port);
+  w.password_hash = s.text("password_hash").value_or("");
+  if (!w.password_hash.empty() && w.password_hash.rfind("$argon2id$", 0) != 0) {
+    s.fail("password_hash", "must be an Argon2id hash as `azeltrack web password` writes it");
+  }
+  w.api_token_sha256 = s.text("api_token_sha256").value_or("");
+  if (!w.api_token_sha256.empty() &&
+      (w.api_token_sha256.size() != 64 ||
+       w.api_token_sha256.find_first_not_of("0123456789abcdef") != std::string::npos)) {
+    s.fail("api_token_sha256", "must be 64 lower-case hex digits (`azeltrack web token`)");
+  }
+  if (const toml::array* hosts = s.array("allowed_hosts")) {
+    for (const auto& h : *hosts) {
+      const auto name = h.value<std::string>();
+      if (!name || name->empty()) s.fail("allowed_hosts", "must hold host names");
+      w.allowed_hosts.push_back(*name);
+    }
+  }
+  return w;
+}
+
+sequencer::SequencerConfig read_sequencer(const ConfigSection& s) {
+  auto d = sequencer::SequencerConfig::seed_default();
+  std::vector<std::string> outputs = d.outputs;
+  if (const toml::array* a = s.array("outputs")) {
+    outputs.clear();
+    for (const auto& n : *a) {
+      const auto name = n.value<std::string>();
+      if (!name) s.fail("outputs", "must hold line names");
+      outputs.push_back(*name);
+    }
+  }
+  if (s.has("delay_ms") && s.has("delays_ms"))
+    s.fail("delays_ms", "give delay_ms or delays_ms, not both");
+  std::vector<double> delays(outputs.empty() ? 0 : outputs.size() - 1,
+                             s.number("delay_ms").value_or(20.0));
+  if (const toml::array* a = s.array("delays_ms")) {
+    delays.clear();
+    for (const auto& n : *a) {
+      const auto v = n.value<double>();
+      if (!v) s.fail("delays_ms", "must hold numbers");
+      delays.push_back(*v);
+    }
+  }
+  auto c = sequencer::SequencerConfig::make(
+      outputs, delays, s.number("debounce_ms").value_or(d.debounce_ms),
+      s.number("tx_timeout_s").value_or(d.tx_timeout_s), s.boolean("hold_motion").value_or(true));
+  if (!c) {
+    // "tx_timeout_s: 1 to 3600 …" -> the key, and the rule.
+    const std::string& why = c.error().message;
+    const auto colon = why.find(':');
+    std::string key = why.substr(0, colon);
+    if (key == "delays" || key == "delays_ms") key = s.has("delays_ms") ? "delays_ms" : "delay_ms";
+    s.fail(key, "— " + (colon == std::string::npos ? why : why.substr(colon + 2)));
+  }
+  return *c;
+}
+
+linux_os::HubSerialConfig read_hub(const ConfigSection& s) {
+  linux_os::HubSerialConfig h;
+  h.device = s.text("device").value_or("");
+  const auto baud = s.integer("baud").value_or(9600);
+  if (baud < 600 || baud > 115200) s.fail("baud", "must be 600 to 115200");
+  h.baud = static_cast<unsigned>(baud);
+  const std::string accept = s.text("accept").value_or("crc8");
+  if (accept == "crc8") {
+    h.accept = proto::HubAccept::Crc8Only;
+  } else if (accept == "seed") {
+    h.accept = proto::HubAccept::SeedOnly;
+  } else {
+    s.fail("accept", "must be \"crc8\" (azeltrack's hub) or \"seed\" (AnTrack-Pro frames)");
+  }
+  return h;
+}
+
+/// The first of `seen` on the same chip and line as `line`, or null.
+const linux_os::GpioLineSpec* same_line(const std::vector<const linux_os::GpioLineSpec*>& seen,
+                                        const linux_os::GpioLineSpec& line) {
+  for (const auto* other : seen) {
+    if (other->chip == line.chip && other->offset == line.offset) return other;
+  }
+  return nullptr;
+}
+
+GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
+  GpioConfig g;
+  g.chip = s.text("chip").value_or(g.chip);
+  // Normally closed switches to ground with pull-ups: an open switch or a cut wire reads high,
+  // which is "tripped"; the radio's PTT output pulls its line low.
+  const bool limits_low = s.boolean("limits_active_low").value_or(false);
+  g.estop = read_gpio_line(s, "estop", g.chip, s.boolean("estop_active_low").value_or(false));
+  g.az_ccw_limit = read_gpio_line(s, "az_ccw_limit", g.chip, limits_low);
+  g.az_cw_limit = read_gpio_line(s, "az_cw_limit", g.chip, limits_low);
+  g.el_down_limit = read_gpio_line(s, "el_down_limit", g.chip, limits_low);
+  g.el_up_limit = read_gpio_line(s, "el_up_limit", g.chip, limits_low);
+  g.ptt = read_gpio_line(s, "ptt", g.chip, s.boolean("ptt_active_low").value_or(true));
+  const bool outputs_low = s.boolean("sequencer_active_low").value_or(false);
+  if (const toml::array* a = s.array("sequencer")) {
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      linux_os::GpioLineSpec spec{g.chip, 0, outputs_low,
+                                  "[gpio] sequencer[" + std::to_string(i) + "]"};
+      const auto n = (*a)[i].value<std::int64_t>();
+      if (!n || *n < 0 || *n > 1023) s.fail("sequencer", "must hold line numbers 0 to 1023");
+      spec.offset = static_cast<unsigned>(*n);
+      g.sequencer.push_back(spec);
+    }
+    if (g.sequencer.size() != sequencer_outputs) {
+      s.fail("sequencer", "has " + std::to_string(g.sequencer.size()) + " lines for " +
+                              std::to_string(sequencer_outputs) + " [sequencer] outputs");
+    }
+  }
+  if (g.ptt && g.sequencer.empty()) s.fail("ptt", "needs the [gpio] sequencer output lines");
+  g.estop_latch_file = s.text("estop_latch_file").value_or("");
+  // One line, one job: a line named twice would be requested twice (EBUSY) or, worse, wired to two
+  // functions.
+  std::vector<const linux_os::GpioLineSpec*> seen;
+  for (const auto* l : g.lines()) {
+    if (const auto* other = same_line(seen, *l)) {
+      s.fail(l->key.substr(7), "is the same line as " + other->key);
+    }
+    seen.push_back(l);
+  }
+  return g;
+}
+
+PwmConfig read_pwm(const ConfigSection& s) {
+  PwmConfig p;
+  p.chip_dir = s.text("chip").value_or(p.chip_dir);
+  unsigned* channels[] = {&p.az_rpwm, &p.az_lpwm, &p.el_rpwm, &p.el_lpwm};
+  const char* keys[] = {"az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto v = s.integer(keys[i]).value_or(*channels[i]);
+    if (v < 0 || v > 63) s.fail(keys[i], "must be a PWM channel number 0 to 63");
+    *channels[i] = static_cast<unsigned>(v);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (*channels[j] == *channels[i])
+        s.fail(keys[i], std::string("is the same channel as ") + keys[j]);
+    }
+  }
+  p.frequency_hz = s.number("frequency_hz").value_or(p.frequency_hz);
+  if (p.frequency_hz < 10.0 || p.frequency_hz > 100000.0)
+    s.fail("frequency_hz", "must be 10 to 100000");
+  p.dead_time_s = s.number("dead_time_s").value_or(p.dead_time_s);
+  if (p.dead_time_s < 0.01 || p.dead_time_s > 3.0) s.fail("dead_time_s", "must be 0.01 to 3 s");
+  return p;
+}
+
+/// Four slots: the configured [[park]] entries in order, the rest from defaults inside the travel.
+std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
+    const ConfigFile& file, const sim::StationSimSetup& setup) {
+  const double el_low = setup.el_range.min_deg;
+  const double el_high = std::min(90.0, setup.el_range.max_deg);
+  const control::AzEl first = setup.park_when_out_of_range.value_or(control::AzEl{180.0, el_low});
+  std::array<control::ParkSlot, control::ModeController::kParkSlots> slots = {{
+      {"park", first},
+      {"stow", {180.0, el_high}},
+      {"north", {0.0, el_low}},
+      {"service", {90.0, el_low}},
+  }};
+  const auto entries = file.section_array("park", {"name", "az_deg", "el_deg"});
+  if (entries.size() > slots.size()) file.fail("at most 4 [[park]] slots");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const ConfigSection& s = entries[i];
+    control::ParkSlot slot{
+        s.text("name").value_or("park " + std::to_string(i + 1)),
+        {s.number("az_deg").value_or(180.0), s.number("el_deg").value_or(el_low)}};
+    if (slot.position.az_deg < 0.0 || slot.position.az_deg >= 360.0) {
+      s.fail("az_deg", "must be 0 to 360");
+    }
+    if (!control::plan_elevation(slot.position.el_deg, setup.el_range)) {
+      s.fail("el_deg", "must be inside [geometry] el_min_deg..el_max_deg");
+    }
+    slots[i] = slot;
+  }
+  return slots;
+}
+
+/// A relay line that is also a [gpio] line (or another relay) would be driven by two functions.
+void check_relay_lines(const DaemonConfig& c, const ConfigSection& antenna) {
+  std::vector<const linux_os::GpioLineSpec*> seen = c.gpio.lines();
+  for (const HardwareAxisConfig* a : {&c.hardware.az, &c.hardware.el}) {
+    for (const auto* l : a->gpio_lines()) {
+      if (const auto* other = same_line(seen, *l)) {
+        antenna.fail("backend", l->key + " is the same line as " + other->key);
+      }
+      seen.push_back(l);
+    }
+  }
+}
+
+}  // namespace
+
+proto::TargetLimits DaemonConfig::target_limits() const {
+  proto::TargetLimits l;
+  l.az_min_deg = std::min(-180.0, sim.setup.az_range.min_deg);
+  l.az_max_deg = std::max(450.0, sim.setup.az_range.max_deg);
+  l.el_min_deg = sim.setup.el_range.min_deg;
+  l.el_max_deg = sim.setup.el_range.max_deg;
+  return l;
+}
+
+DaemonConfig daemon_config_from(const ConfigFile& file) {
+  DaemonConfig c;
+  c.sim = sim_config_from(file);
+  const ConfigSection target = file.section("target", {"name"});
+  c.start_target = target.text("name").value_or("moon");
+  // "sat:NAME" is looked up in the satellite catalogue when the daemon starts.
+  if (c.start_target != "stop" &&
+      std::holds_alternative<NamedTarget>(target_from_name(c.start_target)) &&
+      !find_station_target(c.sim.station, c.start_target)) {
+    target.fail("name", "'" + c.start_target +
+                            "' is not a target of this station: sun, moon, a [sky] source, "
+                            "sat:NAME, or \"stop\"");
+  }
+  const ConfigSection antenna = file.section("antenna", {"backend"});
+  c.backend = antenna.text("backend").value_or("sim");
+  if (c.backend != "sim" && c.backend != "hamlib" && c.backend != "pwm" &&
+      c.backend != "hardware") {
+    antenna.fail("backend", "must be \"sim\", \"hamlib\", \"pwm\" or \"hardware\"");
+  }
+  const ConfigSection hub = file.section("hub", {"device", "baud", "accept"});
+  c.hub = read_hub(hub);
+  c.pwm = read_pwm(file.section(
+      "pwm", {"chip", "az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm", "frequency_hz", "dead_time_s"}));
+  if (c.backend == "pwm" && c.hub.device.empty()) {
+    antenna.fail("backend", "is \"pwm\" but [hub] device is not set");
+  }
+  const ConfigSection hamlib =
+      file.section("hamlib", {"model", "device", "baud", "poll_s", "min_move_deg"});
+  c.hamlib = read_hamlib(hamlib);
+  if (c.backend == "hamlib" && !hamlib.present()) {
+    antenna.fail("backend", "is \"hamlib\" but there is no [hamlib] table");
+  }
+  const ConfigSection rotctld = file.section("rotctld", {"bind", "port", "idle_timeout_s"});
+  c.rotctld = read_net(rotctld, c.rotctld);
+  if (const auto idle = rotctld.number("idle_timeout_s")) {
+    // 0 turns it off; below 10 s a client polling every few seconds would be cut.
+    if (*idle != 0.0 && !(*idle >= 10.0 && *idle <= 86400.0)) {
+      rotctld.fail("idle_timeout_s", "must be 0 (never) or 10 to 86400 seconds");
+    }
+    c.rotctld_idle_timeout_s = *idle;
+  }
+  const ConfigSection pst = file.section("pstrotator", {"bind", "port", "reply_port"});
+  c.pstrotator = read_net(pst, c.pstrotator);
+  c.pstrotator_reply_port =
+      read_port(pst, "reply_port", c.pstrotator.port == 0 ? 0 : c.pstrotator.port + 1);
+  c.serial = read_serial(file);
+  c.sequencer =
+      read_sequencer(file.section("sequencer", {"outputs", "delay_ms", "delays_ms", "debounce_ms",
+                                                "tx_timeout_s", "hold_motion"}));
+  c.gpio =
+      read_gpio(file.section("gpio", {"chip", "estop", "estop_active_low", "az_ccw_limit",
+                                      "az_cw_limit", "el_down_limit", "el_up_limit",
+                                      "limits_active_low", "ptt", "ptt_active_low", "sequencer",
+                                      "sequencer_active_low", "estop_latch_file"}),
+                c.sequencer.outputs.size());
+  c.hardware = read_hardware(file, c.gpio.chip);
+  if (c.backend == "hardware") {
+    if (c.hardware.uses_hub() && c.hub.device.empty()) {
+      antenna.fail("backend", "is \"hardware\" with a hub sensor but [hub] device is not set");
+    }
+    check_relay_lines(c, antenna);
+  }
+  const ConfigSection sats = file.section("satellites", {"file", "mask"});
+  c.satellites.file = sats.text("file").value_or("");
+  c.satellites.mask = sats.text("mask").value_or("0");
+  try {
+    (void)parse_horizon_mask("mask", c.satellites.mask);
+  } catch (const UsageError& e) {
+    sats.fail("mask", std::string(e.what()).substr(6));
+  }
+  c.web = read_web(
+      file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));
+  c.park = read_park(file, c.sim.setup);
+  if (c.sim.setup.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
+  const ConfigSection log = file.section("log", {"level"});
+  c.log_level = log.text("level").value_or("info");
+  if (c.log_level != "debug" && c.log_level != "info" && c.log_level != "warn") {
+    log.fail("level", "must be debug, info or warn");
+  }
+  return c;
+}
+
+std::vector<const linux_os::GpioLineSpec*> GpioConfig::lines() const {
+  std::vector<const linux_os::GpioLineSpec*> out;
+  for (const auto* l : {&estop, &az_ccw_limit, &az_cw_limit, &el_down_limit, &el_up_limit, &ptt}) {
+    if (*l) out.push_back(&**l);
+  }
+  for (const auto& l : sequencer) out.push_back(&l);
+  return out;
+}
+
+DaemonConfig load_daemon_config(const std::string& path) {
+  return daemon_config_from(ConfigFile::load(path));
+}
+
+}  // namespace azt::app

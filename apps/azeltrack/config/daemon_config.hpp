@@ -1,0 +1,111 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "azt/control/modes.hpp"
+#include "azt/linux/gpio.hpp"
+#include "azt/linux/hamlib_rotator.hpp"
+#include "azt/linux/hub_serial_link.hpp"
+#include "azt/proto/target_limits.hpp"
+#include "azt/sequencer/tr_sequencer.hpp"
+#include "config/hardware_config.hpp"
+#include "config/sim_config.hpp"
+
+namespace azt::app {
+
+struct SerialServerConfig {
+  std::string protocol;  ///< gs232a | gs232b | easycomm1 | easycomm2 | spid | rot1prog
+  std::string device;    ///< "pty:/path" or a device path
+  unsigned baud = 9600;
+};
+
+struct NetServerConfig {
+  std::string bind = "127.0.0.1";
+  unsigned short port = 0;  ///< 0: disabled
+};
+
+/// [pwm]: two IBT-2 H-bridges on one sysfs PWM chip (the `pwm` backend; docs/hardware.md).
+struct PwmConfig {
+  std::string chip_dir = "/sys/class/pwm/pwmchip0";
+  unsigned az_rpwm = 0;
+  unsigned az_lpwm = 1;
+  unsigned el_rpwm = 2;
+  unsigned el_lpwm = 3;
+  double frequency_hz = 1000.0;
+  double dead_time_s = 0.1;
+};
+
+/// [gpio]: the station's GPIO lines (docs/hardware.md). Absent lines are not wired.
+struct GpioConfig {
+  std::string chip = "gpiochip0";  ///< the chip of lines given as bare numbers
+  std::optional<linux_os::GpioLineSpec> estop;
+  std::optional<linux_os::GpioLineSpec> az_ccw_limit;
+  std::optional<linux_os::GpioLineSpec> az_cw_limit;
+  std::optional<linux_os::GpioLineSpec> el_down_limit;
+  std::optional<linux_os::GpioLineSpec> el_up_limit;
+  std::optional<linux_os::GpioLineSpec> ptt;
+  std::vector<linux_os::GpioLineSpec> sequencer;  ///< one per [sequencer] output, keying order
+  std::string estop_latch_file;  ///< empty: "estop.latched" beside the configuration file
+
+  /// Every configured line, inputs first, then the sequencer outputs.
+  [[nodiscard]] std::vector<const linux_os::GpioLineSpec*> lines() const;
+  [[nodiscard]] bool any_line() const { return !lines().empty(); }
+};
+
+/// [satellites]: the element-set catalogue the daemon tracks satellites from (issue 7).
+struct SatellitesConfig {
+  std::string file;        ///< TLE or OMM; relative to the configuration's directory; empty: none
+  std::string mask = "0";  ///< horizon: one elevation, or "AZ:MIN_EL,…" sectors
+};
+
+/// [web]: the console's HTTP server and who may act through it (docs/web-api.md).
+struct WebConfig {
+  std::string bind = "127.0.0.1";
+  unsigned short port = 8080;    ///< 0: disabled
+  std::string password_hash;     ///< libsodium Argon2id string; empty: generated at first start
+  std::string api_token_sha256;  ///< hex SHA-256 of the scripts' bearer token; empty: none
+  std::vector<std::string> allowed_hosts;  ///< Host names besides IP literals and localhost
+};
+
+/// Everything `serve` reads (README "Configuration").
+struct DaemonConfig {
+  SimConfig sim;                      ///< station, sky, control, geometry, and the simulated plant
+  std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
+  std::string backend = "sim";        ///< [antenna] backend: sim | hamlib | pwm | hardware
+  linux_os::HamlibConfig hamlib;
+  linux_os::HubSerialConfig hub;  ///< [hub]: the EncoderHub's serial device (`pwm` backend)
+  PwmConfig pwm;
+  GpioConfig gpio;
+  HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
+  SatellitesConfig satellites;
+  NetServerConfig rotctld{"127.0.0.1", 4533};
+  /// A rotctld client silent this long is disconnected (0: never); Gpredict polls every second.
+  double rotctld_idle_timeout_s = 600.0;
+  std::vector<SerialServerConfig> serial;
+  NetServerConfig pstrotator{"127.0.0.1", 12000};
+  WebConfig web;
+  /// [sequencer]: the T/R chain (the seed's default when the table is absent).
+  sequencer::SequencerConfig sequencer = sequencer::SequencerConfig::seed_default();
+  unsigned short pstrotator_reply_port = 12001;  ///< 0: reply to the sender's port
+  std::array<control::ParkSlot, control::ModeController::kParkSlots> park;
+  control::OutOfRangePolicy out_of_range = control::OutOfRangePolicy::Hold;
+  std::string log_level = "info";
+  bool jog_enabled = true;
+
+  /// The targets PC programs may send: the travel in sky terms, azimuth in any convention
+  /// clients use (−180..450).
+  [[nodiscard]] proto::TargetLimits target_limits() const;
+};
+
+/// Parses and validates; throws UsageError naming the key and its line.
+DaemonConfig daemon_config_from(const ConfigFile& file);
+DaemonConfig load_daemon_config(const std::string& path);
+
+/// The commented configuration a first run writes: the simulated antenna tracking the Moon,
+/// every server on 127.0.0.1.
+std::string default_config_text();
+
+}  // namespace azt::app

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "azt/astro/target.hpp"
+#include "common/sky_setup.hpp"
+
+namespace azt::app {
+
+/// What `watch` reads from the configuration file (see README "Configuration").
+struct StationConfig {
+  SkySettings sky;
+  std::string band_name;               ///< the band whose Moon echo Doppler is shown
+  std::vector<astro::Target> targets;  ///< Sun, Moon, then the listed sources
+};
+
+class ConfigFile;
+
+/// The station, sky and atmosphere tables of a parsed configuration file.
+StationConfig station_config_from(const ConfigFile& file);
+
+/// Reads and validates a TOML configuration file. Unknown keys, wrong types and out-of-range
+/// values are errors naming the key; throws UsageError.
+StationConfig load_station_config(const std::string& path);
+
+/// A target of the station by name, case-blind: "sun", "moon", a source's name or alias, with or
+/// without spaces ("casa", "Cassiopeia A").
+std::optional<astro::Target> find_station_target(const StationConfig& station,
+                                                 const std::string& name);
+
+}  // namespace azt::app

@@ -1,0 +1,69 @@
+#include "console/console_server.hpp"
+
+#include "common/usage_error.hpp"
+
+namespace azt::app {
+namespace {
+
+bool is_loopback(const std::string& bind) {
+  boost::system::error_code ec;
+  const auto address = boost::asio::ip::make_address(bind, ec);
+  return !ec && address.is_loopback();
+}
+
+/// The password hash to use: the configured one, or a new one saved through the store.
+std::string ensure_password(ConsoleParts& parts,
+                            const std::function<void(const std::string&)>& log) {
+  const WebConfig& web = parts.config.web;
+  if (!web.password_hash.empty()) return web.password_hash;
+  if (!is_loopback(web.bind)) {
+    throw UsageError("[web] bind = \"" + web.bind +
+                     "\" serves the network but no password is set: run `azeltrack web password "
+                     "--config FILE` first");
+  }
+  const std::string password = random_password();
+  std::string hash = hash_password(password);
+  auto saved = parts.store.update([&hash](toml::table& root) {
+    if (!root.contains("web")) root.insert("web", toml::table{});
+    root["web"].as_table()->insert_or_assign("password_hash", hash);
+  });
+  if (!saved)
+    throw UsageError("[web] cannot save the generated password: " + saved.error().message);
+  parts.config.web.password_hash = hash;
+  log("web console password (shown once; change it with `azeltrack web password`): " + password);
+  return hash;
+}
+
+}  // namespace
+
+ConsoleServer::ConsoleServer(boost::asio::io_context& io, ConsoleParts parts,
+                             const std::function<void(const std::string&)>& log) {
+  const WebConfig web = parts.config.web;
+  auth_ =
+      std::make_unique<WebAuth>(WebAuth::Config{ensure_password(parts, log), web.api_token_sha256});
+  std::function<double()> now = parts.monotonic_s;
+  Offload offload = parts.offload;
+  console_ = std::make_unique<DaemonConsole>(std::move(parts));
+  api_ = std::make_unique<WebApi>(*console_, *auth_, WebApiConfig{web.allowed_hosts}, now,
+                                  std::move(offload));
+  WebServer::Callbacks callbacks;
+  callbacks.handler = [this](const WebRequest& r, const WebServer::Respond& respond) {
+    const bool change = r.method != "GET" && r.method != "HEAD";
+    api_->handle(r, [this, change, respond](WebReply reply) {
+      // A change made here reaches every open console now, not at the next periodic push.
+      if (change && reply.status == 200 && server_) server_->push_now();
+      respond(std::move(reply));
+    });
+  };
+  callbacks.upgrade_check = [this](const WebRequest& r) { return api_->check_upgrade(r); };
+  callbacks.has_session = [this](const WebRequest& r) { return api_->has_session(r); };
+  callbacks.state = [this] {
+    return console_->state().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  };
+  callbacks.log = log;
+  auto server = WebServer::open(io, web.bind, web.port, std::move(callbacks), 0.2);
+  if (!server) throw UsageError("[web]: " + server.error().message);
+  server_ = std::move(server).value();
+}
+
+}  // namespace azt::app

@@ -1,0 +1,252 @@
+#include "console/web_api.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <memory>
+
+#include "azt/linux/asio.hpp"
+#include "console/web_assets.hpp"
+
+namespace azt::app {
+namespace {
+
+using json = nlohmann::json;
+
+WebReply json_reply(unsigned status, const json& body) {
+  // Replace, never throw: whatever text reached the body (a header echoed in a message, a name
+  // from a file), the answer is sent (issue 12 rows 1, 2 and 12).
+  return WebReply{
+      status, "application/json", body.dump(-1, ' ', false, json::error_handler_t::replace), {}};
+}
+
+WebReply error_reply(unsigned status, const std::string& message, const std::string& field = "") {
+  json body{{"error", message}};
+  if (!field.empty()) body["field"] = field;
+  return json_reply(status, body);
+}
+
+/// "host:port" or "[v6]:port" -> host.
+std::string host_name(const std::string& host_header) {
+  if (!host_header.empty() && host_header.front() == '[') {
+    const auto close = host_header.find(']');
+    return close == std::string::npos ? host_header : host_header.substr(1, close - 1);
+  }
+  const auto colon = host_header.rfind(':');
+  return colon == std::string::npos ? host_header : host_header.substr(0, colon);
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+double query_number(const std::string& query, const std::string& key, double fallback) {
+  const std::string wanted = key + "=";
+  std::size_t start = 0;
+  while (start <= query.size()) {
+    const auto end = std::min(query.find('&', start), query.size());
+    const std::string_view item(query.data() + start, end - start);
+    if (item.substr(0, wanted.size()) == wanted) {
+      try {
+        const double v = std::stod(std::string(item.substr(wanted.size())));
+        return std::isfinite(v) ? v : fallback;
+      } catch (const std::exception&) {
+        return fallback;
+      }
+    }
+    start = end + 1;
+  }
+  return fallback;
+}
+
+}  // namespace
+
+std::string cookie_value(const std::string& cookie_header, const std::string& name) {
+  std::size_t start = 0;
+  while (start < cookie_header.size()) {
+    auto end = cookie_header.find(';', start);
+    if (end == std::string::npos) end = cookie_header.size();
+    std::string item = cookie_header.substr(start, end - start);
+    item.erase(0, item.find_first_not_of(' '));
+    if (item.size() > name.size() && item.compare(0, name.size(), name) == 0 &&
+        item[name.size()] == '=') {
+      return item.substr(name.size() + 1);
+    }
+    start = end + 1;
+  }
+  return "";
+}
+
+bool WebApi::host_allowed(const std::string& host) const {
+  const std::string name = lower(host_name(host));
+  if (name.empty()) return true;  // HTTP/1.0 clients send none
+  boost::system::error_code ec;
+  (void)boost::asio::ip::make_address(name, ec);
+  if (!ec || name == "localhost") return true;
+  return std::any_of(config_.allowed_hosts.begin(), config_.allowed_hosts.end(),
+                     [&name](const std::string& h) { return lower(h) == name; });
+}
+
+bool WebApi::origin_matches(const WebRequest& request) {
+  // Non-browser clients send no Origin; browsers always do on POST and WebSocket upgrades, so a
+  // page from elsewhere is always caught here.
+  if (request.origin.empty()) return true;
+  return request.origin == "http://" + request.host || request.origin == "https://" + request.host;
+}
+
+std::optional<WebReply> WebApi::check_upgrade(const WebRequest& request) const {
+  if (!host_allowed(request.host)) return error_reply(403, "Host not allowed");
+  if (!origin_matches(request)) return error_reply(403, "cross-origin WebSocket refused");
+  return std::nullopt;
+}
+
+void WebApi::handle(const WebRequest& request, const Respond& respond) {
+  if (!host_allowed(request.host)) {
+    respond(error_reply(
+        403, "Host '" + request.host + "' is not allowed: add it to [web] allowed_hosts"));
+    return;
+  }
+  try {
+    if (request.method == "GET" || request.method == "HEAD") {
+      respond(handle_get(request));
+    } else if (request.method == "POST" || request.method == "PUT") {
+      handle_action(request, respond);
+    } else {
+      respond(error_reply(405, "method not allowed"));
+    }
+  } catch (const ApiError& e) {
+    respond(error_reply(e.status(), e.what(), e.field()));
+  } catch (const std::exception& e) {
+    // The daemon keeps running whatever a request does; the message says what went wrong.
+    respond(error_reply(500, e.what()));
+  }
+}
+
+WebReply WebApi::handle_get(const WebRequest& request) {
+  const std::string& p = request.path;
+  if (p == "/api/state") return json_reply(200, model_.state());
+  if (p == "/api/config") return json_reply(200, model_.config());
+  if (p == "/api/targets") return json_reply(200, model_.targets());
+  if (p == "/api/sky") {
+    return json_reply(
+        200, model_.sky(std::clamp(query_number(request.query, "hours", 12.0), 0.0, 24.0)));
+  }
+  if (p == "/api/session") {
+    const auto csrf = auth_.csrf_of(cookie_value(request.cookie, "azt_session"), now_());
+    json body{{"logged_in", csrf.has_value()}, {"password_set", auth_.has_password()}};
+    if (csrf) body["csrf"] = *csrf;
+    return json_reply(200, body);
+  }
+  if (const WebAsset* asset = find_web_asset(p == "/" ? "/index.html" : p)) {
+    return WebReply{200, std::string(asset->content_type), std::string(asset->body), {}};
+  }
+  return error_reply(404, "no such page: " + p);
+}
+
+std::optional<WebReply> WebApi::authorize(const WebRequest& request) const {
+  if (!origin_matches(request)) return error_reply(403, "cross-origin request refused");
+  if (request.authorization.rfind("Bearer ", 0) == 0) {
+    if (auth_.bearer_ok(std::string_view(request.authorization).substr(7))) return std::nullopt;
+    return error_reply(401, "login required: the bearer token is not valid");
+  }
+  const auto csrf = auth_.csrf_of(cookie_value(request.cookie, "azt_session"), now_());
+  if (!csrf) return error_reply(401, "login required");
+  if (request.csrf.empty() || !constant_time_equal(request.csrf, *csrf)) {
+    return error_reply(403, "CSRF token missing or wrong");
+  }
+  return std::nullopt;
+}
+
+bool WebApi::has_session(const WebRequest& request) const {
+  if (request.authorization.rfind("Bearer ", 0) == 0) {
+    return auth_.bearer_ok(std::string_view(request.authorization).substr(7));
+  }
+  return auth_.csrf_of(cookie_value(request.cookie, "azt_session"), now_()).has_value();
+}
+
+void WebApi::login(const WebRequest& request, const Respond& respond) {
+  if (!origin_matches(request)) {
+    respond(error_reply(403, "cross-origin request refused"));
+    return;
+  }
+  const json body = json::parse(request.body, nullptr, false);
+  if (body.is_discarded() || !body.is_object() || !body.contains("password") ||
+      !body["password"].is_string()) {
+    respond(error_reply(400, "expected {\"password\": \"…\"}", "password"));
+    return;
+  }
+  const auto ticket = auth_.begin_login(request.client, now_());
+  if (ticket.outcome != WebAuth::LoginOutcome::Checking) {
+    const bool busy = ticket.outcome == WebAuth::LoginOutcome::Busy;
+    WebReply r = error_reply(busy ? 503 : 429, busy ? "busy checking other logins: try again"
+                                                    : "too many failed logins: try again later");
+    r.headers.emplace_back("Retry-After",
+                           std::to_string(static_cast<long>(std::ceil(ticket.retry_after_s))));
+    respond(r);
+    return;
+  }
+  // Argon2id takes ~0.1 s and 64 MiB: on the worker, never on the loop (issue 12 row 4).
+  auto matched = std::make_shared<bool>(false);
+  offload_(
+      [matched, hash = auth_.password_hash(), password = body["password"].get<std::string>()] {
+        *matched = !hash.empty() && verify_password(hash, password);
+      },
+      [this, matched, client = request.client, respond] {
+        const auto result = auth_.finish_login(client, *matched, now_());
+        if (result.outcome != WebAuth::LoginOutcome::Ok) {
+          respond(error_reply(401, "wrong password", "password"));
+          return;
+        }
+        WebReply r = json_reply(200, json{{"ok", true}, {"csrf", result.csrf}});
+        r.headers.emplace_back(
+            "Set-Cookie", "azt_session=" + result.session + "; HttpOnly; SameSite=Strict; Path=/");
+        respond(r);
+      });
+}
+
+void WebApi::handle_action(const WebRequest& request, const Respond& respond) {
+  if (request.path == "/api/login" && request.method == "POST") {
+    login(request, respond);
+    return;
+  }
+  if (auto refusal = authorize(request)) {
+    respond(*refusal);
+    return;
+  }
+  if (request.path == "/api/logout" && request.method == "POST") {
+    auth_.logout(cookie_value(request.cookie, "azt_session"));
+    WebReply r = json_reply(200, json{{"ok", true}});
+    r.headers.emplace_back("Set-Cookie",
+                           "azt_session=; HttpOnly; SameSite=Strict; Path=/; Max-Age=0");
+    respond(r);
+    return;
+  }
+  const bool is_config = request.path.rfind("/api/config/", 0) == 0;
+  if (is_config != (request.method == "PUT") || request.path.rfind("/api/", 0) != 0) {
+    respond(error_reply(request.path.rfind("/api/", 0) == 0 ? 405 : 404,
+                        request.method + " " + request.path + " is not an action"));
+    return;
+  }
+  json body = json::object();
+  if (!request.body.empty()) {
+    body = json::parse(request.body, nullptr, false);
+    if (body.is_discarded() || !body.is_object()) {
+      respond(error_reply(400, "the body must be a JSON object"));
+      return;
+    }
+  }
+  model_.act(
+      request.path.substr(5), body, "console " + request.client, [respond](ActResult result) {
+        if (result.error) {
+          respond(error_reply(result.error->status(), result.error->what(), result.error->field()));
+          return;
+        }
+        json answer{{"ok", true}};
+        answer.update(result.fields);
+        respond(json_reply(200, answer));
+      });
+}
+
+}  // namespace azt::app

@@ -1,0 +1,48 @@
+#include "console/web_request.hpp"
+
+#include <boost/beast/http/field.hpp>
+#include <boost/beast/websocket/rfc6455.hpp>
+
+#include <string_view>
+
+#include "azt/util/valid_utf8.hpp"
+
+namespace azt::app {
+
+namespace http = boost::beast::http;
+
+namespace {
+
+/// Beast's string_view is Boost's; the sanitizer takes the standard one.
+std::string clean(boost::beast::string_view text) {
+  return valid_utf8(std::string_view(text.data(), text.size()));
+}
+
+/// A header's value as valid UTF-8 ("" when absent): a Latin-1 or binary byte in a header must
+/// never reach JSON or a log line as it is (issue 12 row 1).
+std::string header(const http::request<http::string_body>& req, http::field f) {
+  const auto it = req.find(f);
+  return it == req.end() ? std::string() : clean(it->value());
+}
+
+}  // namespace
+
+WebRequest to_web_request(const http::request<http::string_body>& req, const std::string& peer) {
+  WebRequest r;
+  r.method = clean(req.method_string());
+  const std::string target = clean(req.target());  // "/\xff" is a 404, not a crash
+  const auto q = target.find('?');
+  r.path = target.substr(0, q);
+  if (q != std::string::npos) r.query = target.substr(q + 1);
+  r.body = req.body();
+  r.origin = header(req, http::field::origin);
+  r.host = header(req, http::field::host);
+  r.cookie = header(req, http::field::cookie);
+  r.authorization = header(req, http::field::authorization);
+  if (const auto it = req.find("X-CSRF-Token"); it != req.end()) r.csrf = clean(it->value());
+  r.client = peer;
+  r.websocket = boost::beast::websocket::is_upgrade(req);
+  return r;
+}
+
+}  // namespace azt::app

@@ -1,0 +1,126 @@
+#include "satellites/satellite_catalogue.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "azt/linux/atomic_file.hpp"
+#include "common/usage_error.hpp"
+#include "satellites/element_sets.hpp"
+
+namespace azt::app {
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+bool all_digits(const std::string& s) {
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+}  // namespace
+
+SatelliteCatalogue SatelliteCatalogue::parse(std::string_view text, const std::string& source) {
+  SatelliteCatalogue c;
+  c.source_ = source;
+  // TLE or OMM (XML, JSON, KVN, CSV): errors already name the source and the entry.
+  ElementSetFile parsed = parse_element_sets(text, source);
+  c.errors_ = std::move(parsed.errors);
+  for (auto& e : parsed.sets) {
+    auto sgp4 = orbit::Sgp4::make(e);
+    if (!sgp4) {
+      c.errors_.push_back(source + ": " + e.label() + ": " + sgp4.error().message);
+      continue;
+    }
+    c.satellites_.push_back(Satellite{e, std::move(sgp4).value()});
+  }
+  return c;
+}
+
+SatelliteCatalogue SatelliteCatalogue::load(const std::string& path) {
+  auto text = linux_os::read_file(path);
+  if (!text) throw UsageError("satellite elements: " + text.error().message);
+  return parse(text.value(), path);
+}
+
+const Satellite& SatelliteCatalogue::find(const std::string& name_or_norad) const {
+  if (all_digits(name_or_norad)) {
+    const std::string wanted = name_or_norad.substr(
+        std::min(name_or_norad.find_first_not_of('0'), name_or_norad.size() - 1));
+    for (const auto& s : satellites_) {
+      const std::string& cat = s.elements.catalog;
+      const std::string trimmed = cat.substr(std::min(cat.find_first_not_of('0'), cat.size() - 1));
+      if (trimmed == wanted) return s;
+    }
+  }
+  const std::string key = lower(name_or_norad);
+  const Satellite* prefix = nullptr;
+  int prefixes = 0;
+  for (const auto& s : satellites_) {
+    const std::string name = lower(s.elements.name);
+    if (name == key) return s;
+    if (!key.empty() && name.rfind(key, 0) == 0) {
+      prefix = &s;
+      ++prefixes;
+    }
+  }
+  if (prefixes == 1) return *prefix;
+  std::string why = "'" + name_or_norad + "' is not in " + source_;
+  if (prefixes > 1) why += " unambiguously (" + std::to_string(prefixes) + " names start so)";
+  for (const auto& e : errors_) {
+    if (lower(e).find(key) != std::string::npos) why += "; its entry was refused: " + e;
+  }
+  throw UsageError(why);
+}
+
+double element_age_days(const orbit::Elements& e, const astro::UtcInstant& utc) {
+  return (utc.jd.jd1 - e.epoch_jd) + (utc.jd.jd2 - e.epoch_jd_frac);
+}
+
+astro::UtcInstant utc_plus(const astro::UtcInstant& from, double seconds) {
+  astro::UtcInstant t = from;
+  t.jd.jd2 += seconds / 86400.0;
+  return t;
+}
+
+Result<orbit::LookAngles> look(const Satellite& sat, const astro::UtcInstant& utc, double dut1_s,
+                               const astro::Observer& site) {
+  auto state = sat.sgp4.at_jd(utc.jd.jd1, utc.jd.jd2);
+  if (!state) return fail(sat.elements.label() + ": " + state.error().message);
+  const astro::JulianDate ut1{utc.jd.jd1, utc.jd.jd2 + dut1_s / 86400.0};
+  return orbit::look_angles(state->r_km, state->v_km_s, ut1, site);
+}
+
+Result<std::vector<orbit::Pass>> find_satellite_passes(const Satellite& sat,
+                                                       const astro::UtcInstant& from, double hours,
+                                                       const orbit::HorizonMask& mask,
+                                                       double dut1_s, const astro::Observer& site) {
+  const orbit::PassSearch search = orbit::orbit_pass_search(
+      sat.elements.mean_motion_rev_day, sat.elements.eccentricity, 0.0, hours * 3600.0, mask);
+  const orbit::LookFunction at = [&](double t) {
+    return look(sat, utc_plus(from, t), dut1_s, site);
+  };
+  return orbit::find_passes(at, search);
+}
+
+Result<std::vector<track::SkyPoint>> sample_pass(const Satellite& sat,
+                                                 const astro::UtcInstant& from,
+                                                 const orbit::Pass& pass, double dut1_s,
+                                                 const astro::Observer& site,
+                                                 double time_offset_s) {
+  std::vector<track::SkyPoint> sky;
+  const auto seconds = static_cast<long>(std::floor(pass.los_s - pass.aos_s));
+  for (long i = 0; i <= seconds; ++i) {
+    const double t = pass.aos_s + static_cast<double>(i);
+    auto l = look(sat, utc_plus(from, t), dut1_s, site);
+    if (!l) return l.error();
+    sky.push_back({time_offset_s + t, l->az_deg, l->el_deg});
+  }
+  return sky;
+}
+
+}  // namespace azt::app

@@ -1,0 +1,80 @@
+#pragma once
+// The antenna as the daemon drives it: a backend behind the station's hard inputs (issue 6 §2):
+// the E-stop, the travel-end switches, and the T/R sequencer's motion hold.
+//
+// E-stop: the input going active stops the drives, puts the mode to STOP, releases the PTT chain
+// and latches. The latch is written to a file, so a restart (or a crash) with the button released
+// still starts stopped; only the operator's "clear faults" lifts it, and only once the input is
+// released. Limit switches act on their edge, between control ticks.
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "antenna/antenna_backend.hpp"
+#include "azt/linux/gpio.hpp"
+#include "common/off_loop.hpp"
+#include "config/daemon_config.hpp"
+#include "station/sequencer_runner.hpp"
+
+namespace azt::app {
+
+struct GuardParts {
+  linux_os::GpioProvider* gpio = nullptr;  ///< null when no [gpio] line is configured
+  SequencerRunner* sequencer = nullptr;    ///< null: no sequencer hold or release
+  std::string latch_path;                  ///< the E-stop latch file
+  std::function<double()> now_s;           ///< the control loop's clock
+  std::function<void()> on_estop;          ///< the daemon's reaction (mode to STOP)
+  std::function<void(const std::string&)> log;
+  /// Where the latch file is written (an fsync): the daemon's worker, never the loop. Writes and
+  /// removals run in the order asked, so a clear after a latch leaves no file.
+  Offload offload = run_inline;
+};
+
+class GuardedAntenna final : public AntennaBackend {
+ public:
+  /// Requests the input lines of `gpio`; throws UsageError naming the key of a line that cannot
+  /// be had. Reads the latch file: a latch left by an earlier run stops the antenna at once.
+  GuardedAntenna(std::unique_ptr<AntennaBackend> inner, const GpioConfig& gpio, GuardParts parts);
+
+  void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) override;
+  [[nodiscard]] std::optional<proto::PositionReport> position(double now_s) const override;
+  void stop_now(double now_s) override;
+  [[nodiscard]] std::vector<std::string> faults() const override;
+  /// Clears the backend's faults and the sequencer's; the E-stop latch only when its input is
+  /// released.
+  void clear_faults() override;
+  bool set_corrections(const control::PositionCorrections& corrections) override;
+  [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override;
+  [[nodiscard]] std::string describe() const override;
+  void set_limits(double now_s, const control::LimitSwitches& limits) override;
+
+  [[nodiscard]] bool estop_latched() const { return latched_; }
+  [[nodiscard]] const control::LimitSwitches& limits() const { return limits_; }
+  /// {"estop": {"wired","input","latched"}, "limits": {...} | null}
+  [[nodiscard]] nlohmann::json state() const;
+
+ private:
+  void on_limit_edge();
+  void on_estop_input(bool active);
+  void latch(const std::string& why);
+  std::unique_ptr<linux_os::GpioInput> request(const linux_os::GpioLineSpec& spec,
+                                               linux_os::GpioEdgeHandler on_edge);
+
+  std::unique_ptr<AntennaBackend> inner_;
+  GuardParts parts_;
+  std::unique_ptr<linux_os::GpioInput> estop_;
+  std::unique_ptr<linux_os::GpioInput> az_ccw_;
+  std::unique_ptr<linux_os::GpioInput> az_cw_;
+  std::unique_ptr<linux_os::GpioInput> el_down_;
+  std::unique_ptr<linux_os::GpioInput> el_up_;
+  control::LimitSwitches limits_;
+  bool latched_ = false;
+  std::string latch_reason_;
+};
+
+}  // namespace azt::app

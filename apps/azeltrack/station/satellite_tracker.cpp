@@ -1,0 +1,275 @@
+#include "station/satellite_tracker.hpp"
+
+#include <sys/stat.h>
+
+#include <cmath>
+#include <memory>
+
+namespace azt::app {
+namespace {
+
+constexpr double kSearchHours = 48.0;
+constexpr double kRetryS = 600.0;
+
+std::optional<double> modification_time(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return std::nullopt;
+  return static_cast<double>(st.st_mtim.tv_sec) + static_cast<double>(st.st_mtim.tv_nsec) * 1e-9;
+}
+
+std::string iso(double unix_s) {
+  return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
+}
+
+}  // namespace
+
+SatelliteTracker::SatelliteTracker(SatelliteSettings settings,
+                                   std::function<void(const std::string&)> log)
+    : s_(std::move(settings)), log_(std::move(log)) {}
+
+void SatelliteTracker::poll_file(double unix_s) {
+  if (s_.file.empty() || unix_s - last_poll_s_ < 10.0) return;
+  last_poll_s_ = unix_s;
+  const auto mtime = modification_time(s_.file);
+  if (!mtime || mtime == file_mtime_) {
+    if (!mtime && !file_mtime_) {
+      file_mtime_ = -1.0;  // said once
+      log_("satellites: cannot read " + s_.file + " (no satellites until it appears)");
+    }
+    return;
+  }
+  file_mtime_ = mtime;
+  // The first load is at once (the start target may be a satellite); a reload of a changed file
+  // (a CelesTrak catalogue is megabytes) is read and parsed off the loop when it can be.
+  if (!offload_ || !loaded_once_) {
+    adopt(load_catalogue(s_.file), unix_s);
+    return;
+  }
+  if (loading_) {
+    file_mtime_.reset();  // look again at the next poll
+    return;
+  }
+  loading_ = true;
+  auto fresh = std::make_shared<Loaded>();
+  offload_([fresh, file = s_.file] { *fresh = load_catalogue(file); },
+           [this, fresh, unix_s] {
+             loading_ = false;
+             adopt(std::move(*fresh), unix_s);
+           });
+}
+
+SatelliteTracker::Loaded SatelliteTracker::load_catalogue(const std::string& file) {
+  try {
+    return Loaded{SatelliteCatalogue::load(file), {}};
+  } catch (const std::exception& e) {
+    return Loaded{{}, e.what()};
+  }
+}
+
+void SatelliteTracker::adopt(Loaded loaded, double unix_s) {
+  loaded_once_ = true;
+  if (!loaded.error.empty()) {
+    log_("satellites: " + loaded.error + "; keeping the previous catalogue");
+    return;
+  }
+  SatelliteCatalogue& fresh = loaded.catalogue;
+  for (const auto& e : fresh.errors()) log_("satellites: " + e);
+  if (fresh.satellites().empty() && !catalogue_.satellites().empty()) {
+    log_("satellites: " + s_.file + " holds no usable element set; keeping the previous catalogue");
+    return;
+  }
+  catalogue_ = std::move(fresh);
+  upcoming_.clear();
+  log_("satellites: " + std::to_string(catalogue_.satellites().size()) + " element sets from " +
+       s_.file);
+  // The followed satellite's new elements give a new plan (not mid-pass: the old one finishes).
+  if (planned_ && unix_s >= planned_->pass.aos_s) return;
+  planned_.reset();
+  next_plan_s_ = -1e9;
+}
+
+const Satellite* SatelliteTracker::current() const {
+  if (!following_) return nullptr;
+  for (const auto& s : catalogue_.satellites()) {
+    if (s.elements.catalog == *following_) return &s;
+  }
+  return nullptr;
+}
+
+Result<std::string> SatelliteTracker::follow(const std::string& name_or_norad, double unix_s,
+                                             double mount_az_deg) {
+  const Satellite* sat = nullptr;
+  try {
+    sat = &catalogue_.find(name_or_norad);
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+  following_ = sat->elements.catalog;
+  planned_.reset();
+  next_plan_s_ = -1e9;
+  problem_.clear();
+  plan_next(unix_s, mount_az_deg);
+  return sat->elements.label();
+}
+
+void SatelliteTracker::plan_next(double unix_s, double mount_az_deg) {
+  const Satellite* sat = current();
+  if (sat == nullptr || unix_s < next_plan_s_) return;
+  const astro::UtcInstant from = astro::UtcInstant::from_unix_seconds(unix_s);
+  auto passes = find_satellite_passes(*sat, from, kSearchHours, s_.mask, s_.dut1_s, s_.site);
+  next_plan_s_ = unix_s + kRetryS;
+  if (!passes || passes.value().empty()) {
+    problem_ = passes ? "no pass in the next 48 h" : passes.error().message;
+    return;
+  }
+  const orbit::Pass& p = passes.value().front();
+  Planned next;
+  next.pass = p;
+  // Sampled every second from AOS (or now, mid-pass) to LOS, in Unix seconds.
+  auto sky = sample_pass(*sat, from, p, s_.dut1_s, s_.site, unix_s);
+  if (!sky) {
+    problem_ = sky.error().message;
+    return;
+  }
+  next.sky = std::move(sky).value();
+  if (next.sky.size() < 2) {
+    problem_ = "the pass is too short to plan";
+    return;
+  }
+  auto plan = track::plan_pass(next.sky, s_.mount, mount_az_deg);
+  if (!plan) {
+    problem_ = plan.error().message;
+    return;
+  }
+  next.plan = std::move(plan).value();
+  for (double* t : {&next.pass.aos_s, &next.pass.tca_s, &next.pass.los_s}) *t += unix_s;
+  log_("satellites: " + sat->elements.label() + " next pass AOS " + iso(next.pass.aos_s) +
+       ", max el " + std::to_string(static_cast<int>(std::lround(p.max_el_deg))) + "°" +
+       (next.plan.flip ? ", flipped" : ""));
+  problem_.clear();
+  planned_ = std::move(next);
+}
+
+control::Demand SatelliteTracker::demand(double unix_s, double mount_az_deg, control::AzEl& rate) {
+  rate = control::AzEl{};
+  if (planned_ && unix_s > planned_->pass.los_s) planned_.reset();
+  if (!planned_) plan_next(unix_s, mount_az_deg);
+  control::Demand d;
+  if (!planned_) {
+    d.reason = "satellite: " + problem_;
+    return d;
+  }
+  const track::MountPoint here = planned_->plan.at(unix_s);
+  d.position = control::AzEl{here.az_deg, here.el_deg};
+  d.mount = true;
+  if (unix_s >= planned_->pass.aos_s) {
+    const track::MountPoint ahead = planned_->plan.at(unix_s + 1.0);
+    rate = control::AzEl{ahead.az_deg - here.az_deg, ahead.el_deg - here.el_deg};
+    d.reason = "tracking pass";
+  } else {
+    d.reason = "pre-positioned for AOS";
+  }
+  return d;
+}
+
+nlohmann::json SatelliteTracker::status(double unix_s) const {
+  const Satellite* sat = current();
+  if (sat == nullptr) return nullptr;
+  const double age = element_age_days(sat->elements, astro::UtcInstant::from_unix_seconds(unix_s));
+  nlohmann::json j{
+      {"sat", sat->elements.label()},
+      {"norad", sat->elements.catalog},
+      {"element_age_days", age},
+      {"stale", std::fabs(age) > kStaleElementDays},
+      {"problem", problem_.empty() ? nlohmann::json(nullptr) : nlohmann::json(problem_)}};
+  if (auto l = look(*sat, astro::UtcInstant::from_unix_seconds(unix_s), s_.dut1_s, s_.site)) {
+    j["az_deg"] = l->az_deg;
+    j["el_deg"] = l->el_deg;
+    j["range_km"] = l->range_km;
+    j["range_rate_km_s"] = l->range_rate_km_s;
+  }
+  if (planned_) {
+    // Where the antenna is meant to point now: the satellite during the pass, where the pass
+    // starts before it (so the console's pointing error means something while waiting).
+    const track::SkyPoint aim = track::mount_to_sky(planned_->plan.at(unix_s));
+    j["aim_az_deg"] = aim.az_deg;
+    j["aim_el_deg"] = aim.el_deg;
+    j["phase"] = unix_s < planned_->pass.aos_s ? "waiting for AOS" : "tracking";
+    j["aos"] = iso(planned_->pass.aos_s);
+    j["tca"] = iso(planned_->pass.tca_s);
+    j["los"] = iso(planned_->pass.los_s);
+    j["max_el_deg"] = planned_->pass.max_el_deg;
+    j["flip"] = planned_->plan.flip;
+    j["planned_max_error_deg"] = planned_->plan.max_error_deg;
+  } else {
+    j["phase"] = "no pass planned";
+  }
+  return j;
+}
+
+void SatelliteTracker::refresh_passes(double unix_s) {
+  const auto& sats = catalogue_.satellites();
+  if (sats.empty()) return;
+  if (upcoming_.size() != sats.size()) upcoming_.assign(sats.size(), Upcoming{});
+  next_refresh_ %= sats.size();
+  Upcoming& u = upcoming_[next_refresh_];
+  const Satellite& sat = sats[next_refresh_];
+  next_refresh_ = (next_refresh_ + 1) % sats.size();
+  if (unix_s - u.at_s < 60.0) return;  // each satellite's list at most once a minute
+  u.at_s = unix_s;
+  u.passes = nlohmann::json::array();
+  const astro::UtcInstant now = astro::UtcInstant::from_unix_seconds(unix_s);
+  auto passes = find_satellite_passes(sat, now, 24.0, s_.mask, s_.dut1_s, s_.site);
+  if (!passes) return;
+  for (const auto& p : passes.value()) {
+    u.passes.push_back({{"aos", iso(unix_s + p.aos_s)},
+                        {"tca", iso(unix_s + p.tca_s)},
+                        {"los", iso(unix_s + p.los_s)},
+                        {"max_el_deg", p.max_el_deg},
+                        {"aos_az_deg", p.aos_az_deg},
+                        {"los_az_deg", p.los_az_deg}});
+  }
+}
+
+nlohmann::json SatelliteTracker::list(double unix_s) const {
+  nlohmann::json out = nlohmann::json::array();
+  const astro::UtcInstant now = astro::UtcInstant::from_unix_seconds(unix_s);
+  const auto& sats = catalogue_.satellites();
+  for (std::size_t i = 0; i < sats.size(); ++i) {
+    const Satellite& sat = sats[i];
+    // Where it is now costs one propagation; the passes come from refresh_passes().
+    nlohmann::json j{{"name", sat.elements.label()},
+                     {"norad", sat.elements.catalog},
+                     {"element_age_days", element_age_days(sat.elements, now)}};
+    if (auto l = look(sat, now, s_.dut1_s, s_.site)) {
+      j["az_deg"] = l->az_deg;
+      j["el_deg"] = l->el_deg;
+    } else {
+      j["error"] = l.error().message;
+    }
+    const nlohmann::json passes = i < upcoming_.size() && !upcoming_[i].passes.is_null()
+                                      ? upcoming_[i].passes
+                                      : nlohmann::json::array();
+    if (!passes.empty()) j["next_pass"] = passes.front();
+    j["passes"] = passes;
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+nlohmann::json SatelliteTracker::pass_track() const {
+  nlohmann::json out = nlohmann::json::array();
+  if (!planned_) return out;
+  const auto& sky = planned_->sky;
+  for (std::size_t i = 0; i < sky.size(); i += 10) {
+    out.push_back({{"utc", iso(sky[i].t_s)}, {"az_deg", sky[i].az_deg}, {"el_deg", sky[i].el_deg}});
+  }
+  // The end of the pass too, so a short (grazing) pass still draws as a line from AOS to LOS.
+  if (sky.size() > 1 && (sky.size() - 1) % 10 != 0) {
+    const auto& s = sky.back();
+    out.push_back({{"utc", iso(s.t_s)}, {"az_deg", s.az_deg}, {"el_deg", s.el_deg}});
+  }
+  return out;
+}
+
+}  // namespace azt::app

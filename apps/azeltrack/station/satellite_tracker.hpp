@@ -1,0 +1,99 @@
+#pragma once
+// A satellite as the daemon's target (issue 7 §2, §3): the next pass is planned as a whole at
+// selection (or after the previous LOS), the antenna is pre-positioned to where the plan starts,
+// and through the pass the planned mount position is the demand (never re-planned to the nearest
+// side mid-pass). The catalogue file is re-read when it changes (replaced atomically by whatever
+// fetches it); a file that no longer parses keeps the old catalogue.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "azt/control/modes.hpp"
+#include "azt/orbit/passes.hpp"
+#include "azt/track/pass_plan.hpp"
+#include "common/off_loop.hpp"
+#include "satellites/satellite_catalogue.hpp"
+
+namespace azt::app {
+
+struct SatelliteSettings {
+  std::string file;  ///< the catalogue (TLE or OMM); empty: no satellites
+  orbit::HorizonMask mask;
+  double dut1_s = 0.0;
+  astro::Observer site;
+  track::MountGeometry mount;
+};
+
+class SatelliteTracker {
+ public:
+  SatelliteTracker(SatelliteSettings settings, std::function<void(const std::string&)> log);
+
+  /// Re-reads the file if its modification time changed (checked every 10 s of `unix_s`). The
+  /// first read is at once; later ones run through `offload` when one is set (the daemon's
+  /// worker), and the new catalogue is adopted when the read is done.
+  void poll_file(double unix_s);
+  void set_offload(Offload offload) { offload_ = std::move(offload); }
+  [[nodiscard]] const SatelliteCatalogue& catalogue() const { return catalogue_; }
+
+  /// Starts following a satellite (name or NORAD number); the error names it.
+  Result<std::string> follow(const std::string& name_or_norad, double unix_s, double mount_az_deg);
+  void stop() { following_.reset(); }
+  [[nodiscard]] bool following() const { return following_.has_value(); }
+
+  /// The demand at `unix_s`: the planned mount position (pre-positioning before AOS), or
+  /// nothing to do (hold) when no pass is found. `rate` gets the plan's rate for feed-forward.
+  control::Demand demand(double unix_s, double mount_az_deg, control::AzEl& rate);
+
+  /// {"sat","norad","phase","aos","tca","los","max_el_deg","flip","element_age_days","stale",
+  /// "az_deg","el_deg"} for the followed satellite; null when none.
+  [[nodiscard]] nlohmann::json status(double unix_s) const;
+  /// Every satellite with its position now and its passes in the next 24 h (as last found by
+  /// refresh_passes()).
+  [[nodiscard]] nlohmann::json list(double unix_s) const;
+  /// Finds the next day's passes of one satellite, the next in turn, each at most once a minute:
+  /// called every control tick, so a large catalogue never stalls the loop (a satellite's 24-hour
+  /// search is about a millisecond; all of a hundred at once would be a tenth of a second).
+  void refresh_passes(double unix_s);
+  /// The followed satellite's planned pass as sky points (for the sky plot), every 10 s.
+  [[nodiscard]] nlohmann::json pass_track() const;
+
+ private:
+  struct Planned {
+    orbit::Pass pass;  ///< times are Unix seconds
+    track::PassPlan plan;
+    std::vector<track::SkyPoint> sky;
+  };
+  struct Loaded {
+    SatelliteCatalogue catalogue;
+    std::string error;  ///< non-empty: the file could not be read
+  };
+  static Loaded load_catalogue(const std::string& file);
+  void adopt(Loaded loaded, double unix_s);
+  void plan_next(double unix_s, double mount_az_deg);
+  [[nodiscard]] const Satellite* current() const;
+
+  SatelliteSettings s_;
+  std::function<void(const std::string&)> log_;
+  SatelliteCatalogue catalogue_;
+  Offload offload_;
+  bool loaded_once_ = false;
+  bool loading_ = false;
+  std::optional<double> file_mtime_;
+  double last_poll_s_ = -1e9;
+  std::optional<std::string> following_;  ///< NORAD number of the followed satellite
+  std::optional<Planned> planned_;
+  double next_plan_s_ = -1e9;  ///< when to search again after finding no pass
+  std::string problem_;        ///< why there is no plan (decayed, no pass in 48 h)
+  struct Upcoming {
+    double at_s = -1e9;
+    nlohmann::json passes;  ///< null until first found
+  };
+  std::vector<Upcoming> upcoming_;  ///< per catalogue entry, same order
+  std::size_t next_refresh_ = 0;
+};
+
+}  // namespace azt::app

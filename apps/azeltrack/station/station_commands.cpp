@@ -1,0 +1,200 @@
+#include "station/station_commands.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <type_traits>
+
+#include "azt/util/format_number.hpp"
+
+namespace azt::app {
+namespace {
+
+using proto::ServiceStatus;
+
+std::string degrees(double deg) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f°", deg);
+  return text;
+}
+
+Refusal invalid(std::string field, std::string reason) {
+  return Refusal{ServiceStatus::Invalid, std::move(field), std::move(reason)};
+}
+
+}  // namespace
+
+std::string describe(const TargetRequest& request) {
+  return std::visit(
+      [](const auto& r) -> std::string {
+        using T = std::decay_t<decltype(r)>;
+        if constexpr (std::is_same_v<T, NamedTarget>) {
+          return "track " + r.name;
+        } else if constexpr (std::is_same_v<T, SatelliteTarget>) {
+          return "track " + std::string(kSatellitePrefix) + r.name_or_norad;
+        } else if constexpr (std::is_same_v<T, RaDecTarget>) {
+          return "track RA " + degrees(r.ra_deg) + " Dec " + degrees(r.dec_deg);
+        } else if constexpr (std::is_same_v<T, ParkTarget>) {
+          return "park in slot " + std::to_string(r.slot);
+        } else {
+          return "position az " + degrees(r.az_deg) + " el " + degrees(r.el_deg);
+        }
+      },
+      request);
+}
+
+StationCommands::StationCommands(StationCommandParts parts) : p_(std::move(parts)) {
+  commander_signature_ = mode_signature();
+}
+
+std::string StationCommands::mode_signature() const {
+  return std::string(control::to_string(p_.modes.mode())) + "|" + p_.modes.who();
+}
+
+std::string StationCommands::commander() const {
+  if (mode_signature() == commander_signature_) return commander_;
+  return p_.modes.who();  // changed by itself: "move stopped: … silent for 1 s"
+}
+
+bool StationCommands::tracking_satellite() const {
+  return p_.modes.mode() == control::Mode::Track && p_.satellites != nullptr &&
+         p_.satellites->following();
+}
+
+CommandOutcome StationCommands::refuse(const CommandSource& source, Refusal refusal) {
+  report_refusal(source, refusal);
+  return CommandOutcome{std::move(refusal), "", ""};
+}
+
+void StationCommands::report_refusal(const CommandSource& source, const Refusal& refusal) {
+  if (p_.refused) p_.refused(source, refusal);
+}
+
+CommandOutcome StationCommands::accept(const CommandSource& source, const std::string& what) {
+  commander_ = source.name;
+  commander_signature_ = mode_signature();
+  if (p_.accepted) p_.accepted(source, what);
+  return CommandOutcome{std::nullopt, std::string(control::to_string(p_.modes.mode())),
+                        p_.modes.who()};
+}
+
+std::optional<Refusal> StationCommands::check_position(const PositionTarget& p) const {
+  // The protocols' own parsers refuse with the same words (TargetLimits::why_not_az).
+  if (auto why = p_.limits.why_not_az(p.az_deg); !why.empty()) return invalid("az_deg", why);
+  if (auto why = p_.limits.why_not_el(p.el_deg); !why.empty()) return invalid("el_deg", why);
+  if (!control::plan_elevation(p.el_deg, p_.el_range)) {
+    return invalid("el_deg", "el " + format_number(p.el_deg) +
+                                 "° is outside the elevation travel (" +
+                                 format_number(p_.el_range.min_deg) + "° to " +
+                                 format_number(p_.el_range.max_deg) + "°)");
+  }
+  return std::nullopt;
+}
+
+std::optional<Refusal> StationCommands::check_now(const CommandSource& source) const {
+  const auto faults = p_.antenna.faults();
+  if (!faults.empty()) {
+    return Refusal{ServiceStatus::Rejected, "", "a fault is latched (" + faults.front() + ")"};
+  }
+  if (source.kind == CommandSource::Kind::Program && p_.modes.external_locked()) {
+    return Refusal{ServiceStatus::Rejected, "",
+                   "PC programs are locked out: STOP was pressed on the console"};
+  }
+  return std::nullopt;
+}
+
+CommandOutcome StationCommands::point(const CommandSource& source, const TargetRequest& request) {
+  // A value the station can never take is Invalid whatever the state; then "not now".
+  if (const auto* p = std::get_if<PositionTarget>(&request)) {
+    if (auto bad = check_position(*p)) return refuse(source, std::move(*bad));
+  }
+  if (const auto* park = std::get_if<ParkTarget>(&request)) {
+    if (park->slot < 1 || park->slot > control::ModeController::kParkSlots) {
+      return refuse(source, invalid("park", "park must be a slot number 1 to 4"));
+    }
+  }
+  if (auto not_now = check_now(source)) return refuse(source, std::move(*not_now));
+  if (auto failed = apply(source, request)) return refuse(source, std::move(*failed));
+  // A name is recorded as found ("track Cassiopeia A" for "casa"), the rest as asked.
+  const bool named = std::holds_alternative<NamedTarget>(request) ||
+                     std::holds_alternative<SatelliteTarget>(request);
+  return accept(source, named ? "track " + p_.modes.who() : describe(request));
+}
+
+std::optional<Refusal> StationCommands::apply(const CommandSource& source,
+                                              const TargetRequest& request) {
+  if (const auto* t = std::get_if<SatelliteTarget>(&request)) return track_satellite(*t);
+  if (const auto* t = std::get_if<PositionTarget>(&request)) return go_to(source, *t);
+  if (const auto* t = std::get_if<ParkTarget>(&request)) {
+    auto r = p_.modes.park(static_cast<int>(t->slot));
+    if (!r) return invalid("park", r.error().message);
+  } else if (const auto* n = std::get_if<NamedTarget>(&request)) {
+    if (auto bad = track_named(*n)) return bad;
+  } else if (auto bad = track_radec(std::get<RaDecTarget>(request))) {
+    return bad;
+  }
+  if (p_.satellites != nullptr) p_.satellites->stop();
+  return std::nullopt;
+}
+
+std::optional<Refusal> StationCommands::track_named(const NamedTarget& t) {
+  const auto target = p_.sky.find(t.name);
+  if (!target) {
+    return invalid("name", "'" + t.name + "' is not a target of this station (sun, moon, or a " +
+                               "[sky] source)");
+  }
+  p_.sky.follow(*target);
+  p_.modes.track(target->name);
+  return std::nullopt;
+}
+
+std::optional<Refusal> StationCommands::track_radec(const RaDecTarget& t) {
+  auto target = astro::Target::radec(t.ra_deg, t.dec_deg);
+  if (!target) {
+    const bool ra_bad = !(t.ra_deg >= 0.0 && t.ra_deg < 360.0);
+    return invalid(ra_bad ? "ra_deg" : "dec_deg", target.error().message);
+  }
+  p_.sky.follow(*target);
+  p_.modes.track(target->name);
+  return std::nullopt;
+}
+
+std::optional<Refusal> StationCommands::track_satellite(const SatelliteTarget& t) {
+  if (p_.satellites == nullptr) return invalid("name", "no satellite catalogue");
+  const auto here = p_.antenna.position(p_.monotonic_s());
+  auto r = p_.satellites->follow(t.name_or_norad, p_.unix_s(),
+                                 here ? here->az_mount_deg : p_.fallback_mount_az_deg);
+  if (!r) return invalid("name", r.error().message);
+  p_.modes.track(satellite_display_name(r.value()));
+  return std::nullopt;
+}
+
+std::optional<Refusal> StationCommands::go_to(const CommandSource& source,
+                                              const PositionTarget& p) {
+  // Clients count azimuth their own way (−180…180, 0…450); the planner picks the mount's side.
+  const control::AzEl sky{control::wrap_360(p.az_deg), p.el_deg};
+  auto r = source.kind == CommandSource::Kind::Console ? p_.modes.manual(sky)
+                                                       : p_.modes.external(sky, source.name);
+  if (!r) return invalid("az_deg", r.error().message);
+  if (p_.satellites != nullptr) p_.satellites->stop();
+  return std::nullopt;
+}
+
+CommandOutcome StationCommands::jog(const CommandSource& source, control::Jog jog) {
+  if (auto not_now = check_now(source)) return refuse(source, std::move(*not_now));
+  auto r = p_.modes.external_jog(jog, source.name, p_.monotonic_s());
+  if (!r) return refuse(source, invalid("", "move: " + r.error().message));
+  if (p_.satellites != nullptr) p_.satellites->stop();
+  return accept(source, "continuous move az " + std::to_string(jog.az) + " el " +
+                            std::to_string(jog.el) + " (stops after 1 s without traffic)");
+}
+
+void StationCommands::stop(const CommandSource& source) {
+  p_.modes.stop(source.kind == CommandSource::Kind::Console);
+  (void)accept(source, "STOP");
+}
+
+void StationCommands::heard_from(const CommandSource& source) {
+  p_.modes.heard_from(source.name, p_.monotonic_s());
+}
+
+}  // namespace azt::app

@@ -1,0 +1,77 @@
+#pragma once
+// A station's front door over an antenna standing still, with faults the test sets: for the
+// StationCommands and StationService tests.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "azt/astro/erfa_ephemeris.hpp"
+#include "config/station_config.hpp"
+#include "station/station_commands.hpp"
+
+namespace azt::app::testing {
+
+/// An antenna standing at az 100°, el 20°, with faults the test sets.
+class StandingAntenna final : public AntennaBackend {
+ public:
+  void tick(double /*now_s*/, const control::Demand& /*demand*/,
+            const control::AzEl& /*rate*/) override {}
+  [[nodiscard]] std::optional<proto::PositionReport> position(double /*now_s*/) const override {
+    proto::PositionReport r;
+    r.az_deg = 100.0;
+    r.el_deg = 20.0;
+    r.az_mount_deg = 100.0;
+    r.fault = !faults_.empty();
+    return r;
+  }
+  void stop_now(double /*now_s*/) override {}
+  [[nodiscard]] std::vector<std::string> faults() const override { return faults_; }
+  void clear_faults() override { faults_.clear(); }
+  bool set_corrections(const control::PositionCorrections& /*corrections*/) override {
+    return false;
+  }
+  [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override {
+    return std::nullopt;
+  }
+  [[nodiscard]] std::string describe() const override { return "standing antenna"; }
+
+  std::vector<std::string> faults_;
+};
+
+/// The front door of a station with the Sun and the Moon as targets, on a 0–450° mount with
+/// el 0–90°; what it accepts and refuses is recorded.
+struct StationRig {
+  std::array<control::ParkSlot, control::ModeController::kParkSlots> slots{{
+      {"park", {180.0, 0.0}},
+      {"stow", {180.0, 90.0}},
+      {"north", {0.0, 0.0}},
+      {"service", {90.0, 0.0}},
+  }};
+  control::ModeController modes{slots, control::OutOfRangePolicy::Hold, 0.0};
+  StandingAntenna antenna;
+  astro::ErfaEphemeris ephemeris;
+  StationConfig station{{}, "144", {astro::Target::sun(), astro::Target::moon()}};
+  SkyFollower sky{ephemeris, station};
+  double now_s = 0.0;
+  std::vector<std::string> accepted;
+  std::vector<std::string> refused;
+  StationCommands commands{StationCommandParts{
+      modes, antenna, sky, nullptr, proto::TargetLimits{-180.0, 450.0, 0.0, 90.0},
+      control::ElevationRange{0.0, 90.0}, [this] { return now_s; }, [] { return 1.8e9; }, 0.0,
+      [this](const CommandSource& s, const std::string& what) {
+        accepted.push_back(s.name + ": " + what);
+      },
+      [this](const CommandSource& s, const Refusal& r) {
+        refused.push_back(s.name + ": " + r.reason);
+      }}};
+};
+
+inline CommandSource console_source() {
+  return CommandSource{CommandSource::Kind::Console, "console 127.0.0.1"};
+}
+inline CommandSource program_source() {
+  return CommandSource{CommandSource::Kind::Program, "rotctld 127.0.0.1:50000"};
+}
+
+}  // namespace azt::app::testing
