@@ -47,7 +47,8 @@ std::string catalogue() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string script = argc > 1 ? argv[1] : "bench/sat_bench.py";
+  // The script's place is known at build time, so the benchmark runs from any directory.
+  const std::string script = argc > 1 ? argv[1] : AZT_SAT_BENCH_SCRIPT;
   const std::string text = catalogue();
   const std::string path = "/tmp/azt_sat_bench.tle";
   std::ofstream(path) << text;
@@ -96,6 +97,7 @@ int main(int argc, char** argv) {
   long py_passes = 0;
   const std::string cmd =
       "/usr/bin/python3 " + script + " " + path + " 46.2 -79.4 2026-11-24T12:00:00 7";
+  int py_status = -1;
   if (FILE* p = ::popen(cmd.c_str(), "r")) {
     char line[256];
     while (std::fgets(line, sizeof line, p) != nullptr) {
@@ -105,15 +107,23 @@ int main(int argc, char** argv) {
       if (key == "propagations_per_s") in >> py_rate;
       if (key == "pass_search_s") in >> py_search >> py_passes;
     }
-    ::pclose(p);
+    py_status = ::pclose(p);
+  }
+  // A benchmark that cannot compare says so and fails, instead of printing a ratio of 0.
+  if (py_status != 0 || py_rate <= 0.0 || py_search <= 0.0) {
+    std::fprintf(stderr,
+                 "azt_sat_bench: the python3-sgp4/skyfield side did not run (`%s` exited with "
+                 "status %d); install python3-sgp4 and python3-skyfield (scripts/install-deps)\n",
+                 cmd.c_str(), py_status);
+    return 1;
   }
   std::printf("| measure | azeltrack | python3-sgp4 / skyfield | ratio |\n|---|---|---|---|\n");
   std::printf("| SGP4 propagations per second | %.0f | %.0f | %.0f× |\n", ours_rate, py_rate,
-              py_rate > 0 ? ours_rate / py_rate : 0.0);
+              ours_rate / py_rate);
   std::printf(
       "| 7-day pass search, 100 LEO satellites | %.3f s (%zu passes) | %.1f s (%ld rises) | %.0f× "
       "|\n",
-      search_s, passes, py_search, py_passes, search_s > 0 ? py_search / search_s : 0.0);
+      search_s, passes, py_search, py_passes, py_search / search_s);
   std::fprintf(stderr, "(checksum %g)\n", sink);
   return 0;
 }

@@ -1,97 +1,54 @@
 #pragma once
-// What the web console sees and does, over the daemon's own parts (docs/web-api.md). Every
-// change of a setting goes through the ConfigStore (validated, atomic, .bak) first and is applied
-// to the running station only once it is saved, so what runs is always what a restart would load.
+// What the web console may see and do, as the HTTP API asks for it (docs/web-api.md): the state,
+// the configuration, the targets and sky, and actions answered once, at once or later. The
+// daemon's implementation is DaemonConsole (daemon_console.hpp); tests and the fuzzer use fakes.
 
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "antenna/antenna_backend.hpp"
-#include "azt/astro/ephemeris.hpp"
-#include "azt/control/modes.hpp"
-#include "common/off_loop.hpp"
-#include "config/config_store.hpp"
-#include "config/daemon_config.hpp"
-#include "console/web_api.hpp"
-#include "station/recent_events.hpp"
-#include "station/satellite_tracker.hpp"
-#include "station/sky_follower.hpp"
-#include "station/station_commands.hpp"
-
 namespace azt::app {
 
-/// The parts of the daemon the console works on; all owned by the daemon.
-struct ConsoleParts {
-  DaemonConfig& config;  ///< the running configuration (station, corrections, park, …)
-  ConfigStore& store;
-  const astro::Ephemeris& ephemeris;
-  SkyFollower& sky;
-  control::ModeController& modes;
-  StationCommands& commands;  ///< the front door every motion command goes through
-  AntennaBackend& antenna;
-  SatelliteTracker* satellites;         ///< null: no satellite catalogue
-  std::function<double()> monotonic_s;  ///< the control loop's clock
-  std::function<double()> unix_s;       ///< UTC seconds since 1970
-  nlohmann::json servers;               ///< where each server listens, for the state
-  /// The station's hard inputs and the T/R sequencer ({"estop","limits","sequencer"}).
-  std::function<nlohmann::json()> station_io;
-  /// Where saves run: the daemon's worker thread (off the event loop), or run_inline in tests.
-  Offload offload = run_inline;
-  const RecentEvents* events = nullptr;   ///< refusals given to any source, for the state
-  const RecentEvents* motions = nullptr;  ///< accepted motion commands and their sources
-  std::function<void(const std::string&)> log = [](const std::string&) {};
-};
-
-class DaemonConsole final : public ConsoleModel {
+/// A refused action: HTTP status (400 for a bad value, 409 for "not now"), the field at fault.
+class ApiError : public std::runtime_error {
  public:
-  explicit DaemonConsole(ConsoleParts parts) : p_(std::move(parts)) {}
-
-  nlohmann::json state() override;
-  nlohmann::json config() override;
-  nlohmann::json targets() override;
-  nlohmann::json sky(double hours) override;
-  void act(const std::string& action, const nlohmann::json& body, const std::string& source,
-           ActDone done) override;
+  ApiError(unsigned status, std::string field, const std::string& message)
+      : std::runtime_error(message), status_(status), field_(std::move(field)) {}
+  [[nodiscard]] unsigned status() const { return status_; }
+  [[nodiscard]] const std::string& field() const { return field_; }
 
  private:
-  /// Sun, Moon and every target at one whole second, computed once per second.
-  struct Snapshot {
-    double unix_s = -1.0;
-    nlohmann::json moon;
-    nlohmann::json sun;
-    std::vector<nlohmann::json> targets;  ///< {"name","kind","az_deg","el_deg"}
-  };
-  const Snapshot& snapshot();
-  nlohmann::json target_json();
+  unsigned status_;
+  std::string field_;
+};
 
-  /// The console's target body, parsed into the one request type (a malformed field: ApiError).
-  static TargetRequest target_request(const nlohmann::json& body);
-  nlohmann::json act_target(const nlohmann::json& body, const std::string& source);
-  // The settings: each validates the body at once (ApiError), then saves off the loop.
-  void act_correction(const nlohmann::json& body, ActDone done);
-  void act_station(const nlohmann::json& body, ActDone done);
-  void act_band(const nlohmann::json& body, ActDone done);
-  void act_dx(const nlohmann::json& body, ActDone done);
-  void act_offsets(const nlohmann::json& body, ActDone done);
-  void act_tilt(const nlohmann::json& body, ActDone done);
-  void act_park(const nlohmann::json& body, ActDone done);
-  void act_control(const nlohmann::json& body, ActDone done);
+/// What an action came to: the fields to add to {"ok": true}, or its refusal.
+struct ActResult {
+  nlohmann::json fields = nlohmann::json::object();
+  std::optional<ApiError> error;
+};
+using ActDone = std::function<void(ActResult)>;
 
-  /// Saves `change` through the store off the loop; then, back on the loop, `apply` brings the
-  /// running station to the saved configuration and gives the answer's fields. A refusal is a
-  /// 400 naming `field` (503 while another program holds the file's lock).
-  void save(const std::string& field, ConfigStore::Change change,
-            std::function<nlohmann::json()> apply, ActDone done);
-  [[nodiscard]] ApiError save_refusal(const std::string& field, std::string message) const;
-  void apply_corrections(const control::PositionCorrections& corrections);
+class ConsoleModel {
+ public:
+  ConsoleModel() = default;
+  ConsoleModel(const ConsoleModel&) = delete;
+  ConsoleModel& operator=(const ConsoleModel&) = delete;
+  virtual ~ConsoleModel() = default;
 
-  ConsoleParts p_;
-  Snapshot snapshot_;
-  std::vector<std::string> restart_needed_;
+  virtual nlohmann::json state() = 0;
+  virtual nlohmann::json config() = 0;
+  virtual nlohmann::json targets() = 0;
+  virtual nlohmann::json sky(double hours) = 0;
+  /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …); `source` names
+  /// who asked ("console 192.168.1.20") for the station's record of commands. Throws ApiError
+  /// for a refusal known at once; otherwise calls `done` exactly once, at once or later (a save
+  /// finishes off the event loop), always on the loop's thread.
+  virtual void act(const std::string& action, const nlohmann::json& body, const std::string& source,
+                   ActDone done) = 0;
 };
 
 }  // namespace azt::app

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "console/console_model.hpp"
+#include "console/daemon_console.hpp"
 #include "console/web_api.hpp"
 #include "console/web_auth.hpp"
 #include "console/web_server.hpp"

@@ -5,56 +5,17 @@
 
 #include <functional>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "common/off_loop.hpp"
+#include "console/console_model.hpp"
 #include "console/web_auth.hpp"
 #include "console/web_server.hpp"
 
 namespace azt::app {
-
-/// A refused action: HTTP status (400 for a bad value, 409 for "not now"), the field at fault.
-class ApiError : public std::runtime_error {
- public:
-  ApiError(unsigned status, std::string field, const std::string& message)
-      : std::runtime_error(message), status_(status), field_(std::move(field)) {}
-  [[nodiscard]] unsigned status() const { return status_; }
-  [[nodiscard]] const std::string& field() const { return field_; }
-
- private:
-  unsigned status_;
-  std::string field_;
-};
-
-/// What an action came to: the fields to add to {"ok": true}, or its refusal.
-struct ActResult {
-  nlohmann::json fields = nlohmann::json::object();
-  std::optional<ApiError> error;
-};
-using ActDone = std::function<void(ActResult)>;
-
-class ConsoleModel {
- public:
-  ConsoleModel() = default;
-  ConsoleModel(const ConsoleModel&) = delete;
-  ConsoleModel& operator=(const ConsoleModel&) = delete;
-  virtual ~ConsoleModel() = default;
-
-  virtual nlohmann::json state() = 0;
-  virtual nlohmann::json config() = 0;
-  virtual nlohmann::json targets() = 0;
-  virtual nlohmann::json sky(double hours) = 0;
-  /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …); `source` names
-  /// who asked ("console 192.168.1.20") for the station's record of commands. Throws ApiError
-  /// for a refusal known at once; otherwise calls `done` exactly once, at once or later (a save
-  /// finishes off the event loop), always on the loop's thread.
-  virtual void act(const std::string& action, const nlohmann::json& body, const std::string& source,
-                   ActDone done) = 0;
-};
 
 struct WebApiConfig {
   /// Host header names accepted besides IP literals and "localhost" (DNS-rebinding defence).

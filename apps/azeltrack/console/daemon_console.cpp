@@ -1,4 +1,4 @@
-#include "console/console_model.hpp"
+#include "console/daemon_console.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,140 @@
+// The daemon's control loop: one thread, one Asio loop (DESIGN.md). The tick runs on a timer
+// re-armed at absolute deadlines; SIGINT, SIGTERM and SIGHUP stop the motors and leave cleanly; an
+// exception that escapes a handler stops the motors and releases the transmitter before exit 1.
+#include <spdlog/spdlog.h>
+
+#include <memory>
+
+#include "azt/linux/crash_safe_outputs.hpp"
+#include "common/usage_error.hpp"
+#include "daemon/station_daemon.hpp"
+
+namespace azt::app {
+
+namespace asio = boost::asio;
+
+int StationDaemon::run() {
+  linux_os::install_crash_handlers();
+  satellites_.poll_file(unix_now_s());  // at once: the start target may be a satellite
+  satellites_.set_offload(off_loop());
+  start_target();
+  open_servers();
+  signals_.async_wait([this](boost::system::error_code ec, int signal) {
+    if (!ec) {
+      shutdown(signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "SIGHUP");
+    }
+  });
+  if (options_.run_for_s > 0.0) {
+    auto stop_timer = std::make_shared<asio::steady_timer>(io_);
+    stop_timer->expires_after(std::chrono::duration_cast<SteadyClock::duration>(
+        std::chrono::duration<double>(options_.run_for_s)));
+    stop_timer->async_wait([this, stop_timer](boost::system::error_code ec) {
+      if (!ec) shutdown("--run-for elapsed");
+    });
+  }
+  deadline_ = SteadyClock::now() + period_;
+  arm_tick();
+  spdlog::info("serving {} with {}; tick {:.0f} Hz", options_.config_path, antenna_->describe(),
+               1.0 / config_.sim.setup.tick_s);
+  notifier_.ready("tracking " + modes_.who());
+  if (options_.on_loop_started) asio::post(io_, [this] { options_.on_loop_started(io_); });
+  try {
+    io_.run();
+  } catch (const std::exception& e) {
+    fail_safe(std::string("internal error: ") + e.what());
+    return kExitFailure;
+  } catch (...) {
+    fail_safe("internal error (not a std::exception)");
+    return kExitFailure;
+  }
+  spdlog::info("stopped; tick {}", stats_.summary());
+  return 0;
+}
+
+void StationDaemon::arm_tick() {
+  timer_.expires_at(deadline_);
+  timer_.async_wait([this](boost::system::error_code ec) {
+    if (ec || stopping_) return;
+    const auto woke = SteadyClock::now();
+    stats_.add(std::chrono::duration<double>(woke - deadline_).count());
+    tick();
+    // Absolute deadlines: a late tick does not delay the next one. After a stall longer than
+    // a period (suspend, debugger) skip ahead instead of running a burst of ticks.
+    deadline_ += period_;
+    if (SteadyClock::now() > deadline_) {
+      stats_.overrun();
+      deadline_ = SteadyClock::now() + period_;
+    }
+    arm_tick();
+  });
+}
+
+void StationDaemon::tick() {
+  const double now = now_s();
+  modes_.update(now);
+  satellites_.poll_file(unix_now_s());
+  satellites_.refresh_passes(unix_now_s());
+  if (commands_.tracking_satellite()) {
+    control::AzEl rate;
+    const control::Demand demand = satellites_.demand(unix_now_s(), mount_az(), rate);
+    antenna_->tick(now, demand, rate);
+  } else {
+    std::optional<SkyFix> fix;
+    if (modes_.mode() == control::Mode::Track) {
+      fix = sky_.at(unix_now_s());
+    }
+    const control::Demand demand = modes_.demand(fix ? std::optional(fix->position) : std::nullopt);
+    antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
+  }
+  report_faults();
+  // Mode changes by PC programs and new faults reach open consoles at once.
+  std::string summary = std::string(control::to_string(modes_.mode())) + " " + modes_.who() + " " +
+                        std::to_string(last_faults_.size());
+  if (summary != last_summary_) {
+    last_summary_ = std::move(summary);
+    if (console_) console_->push_now();
+  }
+  notifier_.watchdog();
+}
+
+void StationDaemon::report_faults() {
+  const auto faults = antenna_->faults();
+  if (faults != last_faults_) {
+    for (const auto& f : faults) spdlog::warn("fault: {}", f);
+    if (faults.empty() && !last_faults_.empty()) spdlog::info("faults cleared");
+    last_faults_ = faults;
+  }
+}
+
+void StationDaemon::fail_safe(const std::string& why) {
+  stopping_ = true;
+  antenna_->stop_now(now_s());
+  sequencer_->release_now();
+  spdlog::critical("{}: motors stopped, transmitter released, exiting", why);
+  notifier_.stopping();
+}
+
+void StationDaemon::shutdown(const std::string& why) {
+  if (stopping_) return;
+  stopping_ = true;
+  notifier_.stopping();
+  // Motors first, then the servers: nothing may move after this line.
+  antenna_->stop_now(now_s());
+  sequencer_->release_now();
+  spdlog::info("{}: motors stopped, shutting down", why);
+  if (rotctld_) rotctld_->close();
+  for (auto& s : serial_) s->close();
+  if (pstrotator_) pstrotator_->close();
+  if (console_) console_->close();
+  boost::system::error_code ignored;
+  timer_.cancel();
+  signals_.cancel(ignored);
+  io_.stop();
+}
+
+int run_daemon(ConfigStore& store, const DaemonOptions& options) {
+  StationDaemon daemon(store, options);
+  return daemon.run();
+}
+
+}  // namespace azt::app

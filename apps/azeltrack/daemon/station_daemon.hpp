@@ -1,0 +1,116 @@
+#pragma once
+// The running daemon: every part `serve` wires (the antenna, the station's front door, the
+// protocol servers, the console) and the control loop that drives them on one Asio loop.
+// wiring.cpp builds and connects the parts; control_loop.cpp runs the tick, the signals and the
+// ways out. Private to the daemon room: the rest of the program sees daemon.hpp.
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "antenna/antenna_backend.hpp"
+#include "azt/linux/asio.hpp"
+#include "azt/linux/gpio.hpp"
+#include "azt/linux/serial_protocol_server.hpp"
+#include "azt/linux/systemd_notify.hpp"
+#include "azt/linux/tcp_protocol_server.hpp"
+#include "azt/linux/udp_datagram_server.hpp"
+#include "azt/linux/worker_thread.hpp"
+#include "common/off_loop.hpp"
+#include "config/config_store.hpp"
+#include "console/console_server.hpp"
+#include "daemon/daemon.hpp"
+#include "daemon/rate_limited_log.hpp"
+#include "daemon/tick_stats.hpp"
+#include "station/guarded_antenna.hpp"
+#include "station/recent_events.hpp"
+#include "station/satellite_tracker.hpp"
+#include "station/sequencer_runner.hpp"
+#include "station/sky_follower.hpp"
+#include "station/station_commands.hpp"
+#include "station/station_service.hpp"
+
+namespace azt::app {
+
+class StationDaemon {
+ public:
+  using SteadyClock = std::chrono::steady_clock;
+
+  /// Wires every part from the configuration; throws UsageError (nothing driven) when a server,
+  /// a device or the start target cannot be had.
+  StationDaemon(ConfigStore& store, const DaemonOptions& options);
+  /// Runs until a signal (or --run-for); the exit code (daemon.hpp).
+  int run();
+
+ private:
+  // wiring.cpp: the parts, from the configuration.
+  std::unique_ptr<AntennaBackend> make_backend();
+  std::unique_ptr<SequencerRunner> make_sequencer();
+  /// The backend behind the E-stop, the limit switches and the latch file.
+  std::unique_ptr<AntennaBackend> make_guarded(std::unique_ptr<AntennaBackend> inner);
+  SatelliteSettings satellite_settings() const;
+  /// Where the mount's azimuth is (for choosing a pass's wrap side), or the configured start.
+  double mount_az() const;
+  /// UTC seconds since 1970, from the system clock.
+  static double unix_now_s();
+  /// What may block goes to the worker; its result comes back to the loop (off_loop.hpp).
+  Offload off_loop();
+  double now_s() const;
+  void start_target();
+  void open_servers();
+  void open_console();
+  /// A refusal a client was given: in the journal (at most 10 lines a minute per client) and in
+  /// the console's recent events.
+  void control_event(const std::string& text);
+  /// An accepted motion command: in the journal (at most 10 lines a minute per source, the rest
+  /// counted) and in the console's recent commands, one line per source and kind of command.
+  void motion_event(const CommandSource& source, const std::string& what);
+  // control_loop.cpp: the tick, the signals, the ways out.
+  void arm_tick();
+  void tick();
+  void report_faults();
+  /// An exception escaped a handler: the loop's state is unknown, so the station goes safe and
+  /// the process exits (systemd restarts it, motionless until a client asks).
+  void fail_safe(const std::string& why);
+  void shutdown(const std::string& why);
+
+  DaemonConfig config_;  ///< the running configuration; the console changes parts of it
+  ConfigStore& store_;
+  DaemonOptions options_;
+  SteadyClock::time_point start_;
+  boost::asio::io_context io_;
+  /// Password checks, configuration saves, the E-stop latch file: what may block, off the loop.
+  /// Its jobs' work halves touch only what they captured, and their done halves run only on the
+  /// loop, so it may outlive the parts they report to (it is joined after them).
+  linux_os::WorkerThread worker_{io_};
+  std::unique_ptr<astro::Ephemeris> ephemeris_;
+  SkyFollower sky_;
+  control::ModeController modes_;
+  std::unique_ptr<linux_os::GpioProvider> gpio_;
+  std::unique_ptr<linux_os::GpioInput> ptt_;
+  std::unique_ptr<SequencerRunner> sequencer_;
+  GuardedAntenna* guard_ = nullptr;
+  std::unique_ptr<AntennaBackend> antenna_;
+  SatelliteTracker satellites_;
+  RateLimitedLog log_;
+  RecentEvents events_;
+  RecentEvents motions_;  ///< accepted motion commands, with their sources
+  StationCommands commands_;
+  StationService service_;
+  boost::asio::signal_set signals_;
+  boost::asio::steady_timer timer_;
+  SteadyClock::duration period_;
+  SteadyClock::time_point deadline_;
+  TickStats stats_;
+  linux_os::SystemdNotifier notifier_;
+  std::unique_ptr<linux_os::TcpProtocolServer> rotctld_;
+  std::vector<std::unique_ptr<linux_os::SerialProtocolServer>> serial_;
+  std::unique_ptr<linux_os::UdpDatagramServer> pstrotator_;
+  std::unique_ptr<ConsoleServer> console_;
+  std::vector<std::string> last_faults_;
+  std::string last_summary_;  ///< mode, owner and fault count at the last tick
+  bool stopping_ = false;
+};
+
+}  // namespace azt::app

@@ -1,0 +1,259 @@
+// The daemon's wiring: each part built from the configuration and connected to the others, the
+// station's front door shared by the console and every protocol server (docs/architecture.md).
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "antenna/axis_io.hpp"
+#include "azt/linux/libgpiod_lines.hpp"
+#include "azt/proto/pstrotator.hpp"
+#include "azt/proto/sessions.hpp"
+#include "azt/sim/pass_sim.hpp"
+#include "azt/util/valid_utf8.hpp"
+#include "common/horizon_mask_option.hpp"
+#include "common/sky_setup.hpp"
+#include "common/target_request.hpp"
+#include "common/usage_error.hpp"
+#include "daemon/station_daemon.hpp"
+
+namespace azt::app {
+namespace {
+
+/// A client's bytes may be in a log line: valid UTF-8, no control characters, a bounded length.
+std::string log_safe(const std::string& text) {
+  std::string line = valid_utf8(text.substr(0, 240));
+  std::replace_if(
+      line.begin(), line.end(), [](char c) { return c >= 0 && c < ' '; }, ' ');
+  return line;
+}
+
+std::unique_ptr<proto::ProtocolSession> serial_session(const SerialServerConfig& c,
+                                                       proto::RotatorService& service,
+                                                       const proto::TargetLimits& limits) {
+  const std::string client = c.protocol + " " + c.device;
+  if (c.protocol == "gs232a" || c.protocol == "gs232b") {
+    return proto::make_gs232_session(
+        service, client, c.protocol == "gs232a" ? proto::Gs232Variant::A : proto::Gs232Variant::B,
+        limits);
+  }
+  if (c.protocol == "easycomm1" || c.protocol == "easycomm2") {
+    return proto::make_easycomm_session(
+        service, client,
+        c.protocol == "easycomm1" ? proto::EasyCommVersion::One : proto::EasyCommVersion::Two,
+        limits);
+  }
+  proto::SpidConfig spid;
+  spid.dialect =
+      c.protocol == "rot1prog" ? proto::SpidDialect::Rot1Prog : proto::SpidDialect::Rot2Prog;
+  return proto::make_spid_session(service, client, spid);
+}
+
+}  // namespace
+
+double StationDaemon::unix_now_s() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
+    : config_(store.config()),
+      store_(store),
+      options_(options),
+      start_(SteadyClock::now()),
+      ephemeris_(open_ephemeris(config_.sim.station.sky.ephemeris)),
+      sky_(*ephemeris_, config_.sim.station),
+      modes_(config_.park, config_.out_of_range, config_.sim.setup.el_range.min_deg),
+      gpio_(config_.gpio.any_line() || config_.hardware.uses_gpio()
+                ? linux_os::make_libgpiod_provider(io_)
+                : nullptr),
+      sequencer_(make_sequencer()),
+      antenna_(make_guarded(make_backend())),
+      satellites_(satellite_settings(), [](const std::string& line) { spdlog::info("{}", line); }),
+      commands_(StationCommandParts{modes_, *antenna_, sky_, &satellites_, config_.target_limits(),
+                                    config_.sim.setup.el_range, [this] { return now_s(); },
+                                    [] { return unix_now_s(); },
+                                    config_.sim.setup.az_plant.start_deg,
+                                    [this](const CommandSource& source, const std::string& what) {
+                                      motion_event(source, what);
+                                    },
+                                    [this](const CommandSource& source, const Refusal& refusal) {
+                                      control_event(source.name + ": refused: " + refusal.reason);
+                                    }}),
+      service_(
+          commands_, modes_, *antenna_, [this] { return now_s(); },
+          "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
+              config_.sim.station.sky.grid,
+          [this](const std::string& line) { control_event(line); }),
+      // SIGHUP too: a closed terminal must stop the motors, not kill the process mid-move.
+      signals_(io_, SIGINT, SIGTERM, SIGHUP),
+      timer_(io_),
+      period_(std::chrono::duration_cast<SteadyClock::duration>(
+          std::chrono::duration<double>(config_.sim.setup.tick_s))) {}
+
+std::unique_ptr<AntennaBackend> StationDaemon::make_backend() {
+  if (config_.backend == "hamlib") return make_hamlib_backend(config_);
+  if (config_.backend == "pwm") return make_pwm_backend(io_, config_);
+  if (config_.backend == "hardware") {
+    return make_hardware_backend(io_, config_, HardwarePorts::linux_devices(gpio_.get()));
+  }
+  return make_sim_backend(config_);
+}
+
+std::unique_ptr<SequencerRunner> StationDaemon::make_sequencer() {
+  std::vector<std::unique_ptr<linux_os::GpioOutput>> outputs;
+  for (const auto& spec : config_.gpio.sequencer) {
+    // De-energized at once: whatever an earlier run left keyed is released first.
+    auto line = gpio_->output(spec, false);
+    if (!line) throw UsageError(line.error().message);
+    outputs.push_back(std::move(line).value());
+  }
+  auto runner = std::make_unique<SequencerRunner>(
+      io_, config_.sequencer, std::move(outputs), [this] { return now_s(); },
+      [](const std::string& line) { spdlog::info("{}", line); });
+  if (config_.gpio.ptt) {
+    auto ptt = gpio_->input(*config_.gpio.ptt, linux_os::GpioBias::PullUp,
+                            [r = runner.get()](bool on) { r->set_ptt(on); });
+    if (!ptt) throw UsageError(ptt.error().message);
+    ptt_ = std::move(ptt).value();
+    runner->set_ptt(ptt_->active());
+  }
+  return runner;
+}
+
+std::unique_ptr<AntennaBackend> StationDaemon::make_guarded(std::unique_ptr<AntennaBackend> inner) {
+  std::string latch = config_.gpio.estop_latch_file;
+  if (latch.empty()) {
+    latch = (std::filesystem::path(options_.config_path).parent_path() / "estop.latched").string();
+  }
+  auto guarded = std::make_unique<GuardedAntenna>(
+      std::move(inner), config_.gpio,
+      GuardParts{gpio_.get(), sequencer_.get(), latch, [this] { return now_s(); },
+                 [this] { modes_.stop(); },
+                 [](const std::string& line) { spdlog::warn("{}", line); }, off_loop()});
+  guard_ = guarded.get();
+  return guarded;
+}
+
+SatelliteSettings StationDaemon::satellite_settings() const {
+  SatelliteSettings s;
+  if (!config_.satellites.file.empty()) {
+    const std::filesystem::path file(config_.satellites.file);
+    s.file = file.is_absolute()
+                 ? file.string()
+                 : (std::filesystem::path(options_.config_path).parent_path() / file).string();
+  }
+  s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
+  s.dut1_s = config_.sim.station.sky.dut1_s;
+  s.site = config_.sim.station.sky.observer;
+  s.mount = sim::mount_geometry(config_.sim.setup);
+  return s;
+}
+
+double StationDaemon::mount_az() const {
+  const auto p = antenna_->position(now_s());
+  return p ? p->az_mount_deg : config_.sim.setup.az_plant.start_deg;
+}
+
+Offload StationDaemon::off_loop() {
+  return [this](std::function<void()> work, std::function<void()> done) {
+    worker_.post(std::move(work), std::move(done));
+  };
+}
+
+double StationDaemon::now_s() const {
+  return std::chrono::duration<double>(SteadyClock::now() - start_).count();
+}
+
+void StationDaemon::start_target() {
+  if (config_.start_target == "stop" || guard_->estop_latched()) return;
+  const auto outcome =
+      commands_.point(CommandSource{CommandSource::Kind::Configuration, "configuration"},
+                      target_from_name(config_.start_target));
+  // A name the station does not know is a mistake in the file; a latched fault is "not now".
+  if (!outcome.accepted() && outcome.refusal->status == proto::ServiceStatus::Invalid) {
+    throw UsageError("[target].name: " + outcome.refusal->reason);
+  }
+}
+
+void StationDaemon::open_servers() {
+  const auto limits = config_.target_limits();
+  if (config_.rotctld.port != 0) {
+    auto server = linux_os::TcpProtocolServer::open(
+        io_, "rotctld", config_.rotctld.bind, config_.rotctld.port,
+        [this, limits](const std::string& client) {
+          return proto::make_rotctld_session(service_, client, limits);
+        },
+        [this](const std::string& client, const std::string& event) {
+          log_.info("rotctld", client + " " + event, now_s());
+        },
+        linux_os::TcpServerLimits{.idle_timeout_s = config_.rotctld_idle_timeout_s});
+    if (!server) throw UsageError("[rotctld]: " + server.error().message);
+    spdlog::info("rotctld protocol on {}:{} (rotctl -m 2 -r {}:{})", config_.rotctld.bind,
+                 server.value()->port(), config_.rotctld.bind, server.value()->port());
+    rotctld_ = std::move(server).value();
+  }
+  for (std::size_t i = 0; i < config_.serial.size(); ++i) {
+    const SerialServerConfig& c = config_.serial[i];
+    auto server = linux_os::SerialProtocolServer::open(
+        io_, c.device, c.baud, [this, c, limits] { return serial_session(c, service_, limits); },
+        [this, c](const std::string& event) {
+          log_.info(c.device, c.protocol + " " + c.device + ": " + event, now_s());
+        });
+    if (!server) {
+      throw UsageError("[[serial]] #" + std::to_string(i + 1) + " (" + c.protocol +
+                       "): " + server.error().message);
+    }
+    spdlog::info("{} on {}", c.protocol, server.value()->path());
+    serial_.push_back(std::move(server).value());
+  }
+  if (config_.pstrotator.port != 0) {
+    auto server = linux_os::UdpDatagramServer::open(
+        io_, "pstrotator", config_.pstrotator.bind, config_.pstrotator.port,
+        config_.pstrotator_reply_port,
+        [this, limits](std::string_view datagram, const std::string& client) {
+          return proto::handle_pstrotator_datagram(datagram, service_, client, limits);
+        });
+    if (!server) throw UsageError("[pstrotator]: " + server.error().message);
+    spdlog::info("PstRotator UDP on {}:{} (replies to port {})", config_.pstrotator.bind,
+                 server.value()->port(), config_.pstrotator_reply_port);
+    pstrotator_ = std::move(server).value();
+  }
+  if (config_.web.port != 0) open_console();
+}
+
+void StationDaemon::open_console() {
+  nlohmann::json servers = nlohmann::json::object();
+  if (rotctld_) {
+    servers["rotctld"] = config_.rotctld.bind + ":" + std::to_string(rotctld_->port());
+  }
+  console_ = std::make_unique<ConsoleServer>(
+      io_,
+      ConsoleParts{config_, store_, *ephemeris_, sky_, modes_, commands_, *antenna_, &satellites_,
+                   [this] { return now_s(); }, [] { return unix_now_s(); }, servers,
+                   [this] {
+                     nlohmann::json io = guard_->state();
+                     io["sequencer"] = sequencer_->state();
+                     return io;
+                   },
+                   off_loop(), &events_, &motions_,
+                   [](const std::string& line) { spdlog::warn("{}", line); }},
+      [](const std::string& line) { spdlog::warn("{}", line); });
+  spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
+}
+
+void StationDaemon::control_event(const std::string& text) {
+  const std::string line = log_safe(text);
+  log_.info("control " + line.substr(0, line.find(": ")), line, now_s());
+  events_.add(unix_now_s(), line);
+}
+
+void StationDaemon::motion_event(const CommandSource& source, const std::string& what) {
+  const std::string line = log_safe(source.name + ": " + what);
+  log_.info("motion " + source.name, line, now_s());
+  // A program's stream of positions is one entry; a new target or a STOP is a new one.
+  const bool stream = what.rfind("position ", 0) == 0 || what.rfind("continuous ", 0) == 0;
+  motions_.add(unix_now_s(), line,
+               source.name + "|" + (stream ? what.substr(0, what.find(' ')) : what));
+}
+
+}  // namespace azt::app
