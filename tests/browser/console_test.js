@@ -80,7 +80,7 @@ function tleWithEpochNow() {
 
 function writeConfig() {
   // 16-bit encoders and no movement window, so 0.01° steps are visible; a fast plant.
-  fs.writeFileSync(config, `schema_version = 1
+  fs.writeFileSync(config, `schema_version = 2
 [station]
 grid = "FN06HE"
 alt_m = 300.0
@@ -88,13 +88,15 @@ alt_m = 300.0
 window_deg = 0.0
 [target]
 name = "stop"
-[sim.az]
+[mount.az]
 max_rate_deg_s = 10.0
 encoder_bits = 16
+[mount.el]
+max_rate_deg_s = 10.0
+encoder_bits = 16
+[sim.az]
 start_deg = 180.0
 [sim.el]
-max_rate_deg_s = 10.0
-encoder_bits = 16
 start_deg = 20.0
 [rotctld]
 port = 0

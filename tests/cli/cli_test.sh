@@ -95,7 +95,7 @@ json_check "simulate moon" \
 expect_usage_error "simulate bad scenario" "${sim[@]}" --scenario mars
 expect_usage_error "simulate slew without target" "${sim[@]}" --scenario slew
 expect_usage_error "simulate slew below the horizon" "${sim[@]}" --scenario slew --to-az 10 --to-el -20
-printf '[station]\ngrid = "FN06"\n[sim.az]\nencoder_bits = 20\n' >"$tmp/bits.toml"
+printf '[station]\ngrid = "FN06"\n[mount.az]\nencoder_bits = 20\n' >"$tmp/bits.toml"
 expect_usage_error "simulate bad encoder bits" simulate --config "$tmp/bits.toml" --scenario slew --to-az 1 --to-el 1
 printf '[station]\ngrid = "FN06"\n[control]\nwindow_deg = 3\n' >"$tmp/window.toml"
 expect_usage_error "simulate window too large" simulate --config "$tmp/window.toml" --scenario slew --to-az 1 --to-el 1

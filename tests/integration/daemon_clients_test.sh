@@ -23,7 +23,7 @@ free_port() {
 # A fast simulated antenna (20°/s) so that moves take seconds; ptys in the scratch directory.
 write_config() {  # write_config FILE RPORT UPORT [extra toml]
   cat >"$1" <<TOML
-schema_version = 1
+schema_version = 2
 [station]
 grid = "FN06HE"
 [control]
@@ -33,11 +33,13 @@ az_min_deg = 0.0
 az_max_deg = 450.0
 el_min_deg = 0.0
 el_max_deg = 90.0
-[sim.az]
+[mount.az]
 max_rate_deg_s = 20.0
+[mount.el]
+max_rate_deg_s = 20.0
+[sim.az]
 start_deg = 180.0
 [sim.el]
-max_rate_deg_s = 20.0
 start_deg = 10.0
 [target]
 name = "stop"

@@ -21,7 +21,7 @@ check = Checks()
 def config(path, web_port, rot_port, fault):
     with open(path, "w") as f:
         # A 0–450° mount; the jammed station's azimuth shaft never turns (the stall latches).
-        f.write(f"""schema_version = 1
+        f.write(f"""schema_version = 2
 [web]
 port = {web_port}
 [rotctld]
@@ -35,11 +35,12 @@ az_max_deg = 450.0
 grid = "FN06HE"
 [target]
 name = "stop"
+[mount.az]
+max_rate_deg_s = 10.0
+[mount.el]
+max_rate_deg_s = 10.0
 [sim.az]
 {'fault = "frozen_shaft"' if fault else ''}
-max_rate_deg_s = 10.0
-[sim.el]
-max_rate_deg_s = 10.0
 """)
 
 

@@ -936,7 +936,7 @@ try:
     def pty_config(name, directory):
         path = os.path.join(TMP, f"{name}.toml")
         with open(path, "w") as f:
-            f.write('schema_version = 1\n[station]\ngrid = "FN06HE"\n[target]\nname = "stop"\n'
+            f.write('schema_version = 2\n[station]\ngrid = "FN06HE"\n[target]\nname = "stop"\n'
                     '[rotctld]\nport = 0\n[pstrotator]\nport = 0\n[web]\nport = 0\n'
                     f'[[serial]]\nprotocol = "gs232b"\ndevice = "pty:{directory}/gs232b"\n')
         return path

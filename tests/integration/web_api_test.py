@@ -67,15 +67,15 @@ with open(os.path.join(TMP, "sats.tle"), "w") as f:
     f.write(tle_with_epoch_now())
 
 with open(CONFIG, "w") as f:
-    f.write(f"""schema_version = 1
+    f.write(f"""schema_version = 2
 # a comment that every save must keep
 [station]
 grid = "FN06HE"
 [target]
 name = "stop"
-[sim.az]
+[mount.az]
 max_rate_deg_s = 10.0
-[sim.el]
+[mount.el]
 max_rate_deg_s = 10.0
 [rotctld]
 port = 0

@@ -1,7 +1,8 @@
 // The `hardware` backend (and `pwm`, its both-axes-on-IBT-2-and-EncoderHub form): each axis has
 // its own drive and sensor (axis_io.hpp), read and driven by the same StationController as the
-// simulation. The mount's rates and encoder resolutions are those of [sim.az] / [sim.el] (the
-// simulated antenna is the model of this one), the travel is [geometry].
+// simulation. The mount's rates and encoder resolutions are [mount.az] / [mount.el], the travel
+// is [geometry]. The EncoderHub reports its jumpers' bits in every frame: a frame whose bits are
+// not the mount's is never used, and latches a fault naming both.
 #include <algorithm>
 #include <chrono>
 
@@ -68,6 +69,10 @@ class HardwareBackend final : public AntennaBackend {
   }
 
   void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) override {
+    if (!bits_fault_[0].empty() || !bits_fault_[1].empty()) {
+      stop_now(now_s);  // never drive on angles read at the wrong resolution
+      return;
+    }
     read_sensors(now_s);
     // Both axes' readings go in together, stamped with the older: if either sensor falls silent
     // the station sees a stale position and stops the drives.
@@ -104,6 +109,9 @@ class HardwareBackend final : public AntennaBackend {
     for (const auto& f : sensor_fault_) {
       if (!f.empty()) out.push_back(f);
     }
+    for (const auto& f : bits_fault_) {
+      if (!f.empty()) out.push_back(f);
+    }
     if (hub_ && !hub_->connected()) out.push_back("hub: " + hub_event_);
     return out;
   }
@@ -111,6 +119,7 @@ class HardwareBackend final : public AntennaBackend {
   void clear_faults() override {
     station_.clear_faults();
     drive_fault_.clear();
+    bits_fault_ = {};  // the next disagreeing frame latches it again
   }
 
   bool set_corrections(const control::PositionCorrections& corrections) override {
@@ -135,20 +144,35 @@ class HardwareBackend final : public AntennaBackend {
   void open_hub(boost::asio::io_context& io, const DaemonConfig& config) {
     const bool az = config.hardware.az.sensor == "hub";
     const bool el = config.hardware.el.sensor == "hub";
+    mount_bits_ = {config.sim.mount.az.encoder_bits, config.sim.mount.el.encoder_bits};
     auto hub = linux_os::HubSerialLink::open(
         io, config.hub,
         [this, az, el](const proto::HubFrame& f) {
           // Stamped with when the frame arrived, not with the next tick: staleness counts from
           // the frame.
           const double at = hub_clock_s();
-          if (az)
+          if (az && bits_agree(0, f.reading.az_bits))
             fresh_[0] = Sample{proto::hub_raw_to_deg(f.reading.az_raw, f.reading.az_bits), at};
-          if (el)
+          if (el && bits_agree(1, f.reading.el_bits))
             fresh_[1] = Sample{proto::hub_raw_to_deg(f.reading.el_raw, f.reading.el_bits), at};
         },
         [this](const std::string& event) { hub_event_ = event; });
     if (!hub) throw UsageError("[hub] device: " + hub.error().message);
     hub_ = std::move(hub).value();
+  }
+
+  /// Whether a frame's resolution for axis `i` is the mount's. A disagreement is latched (the
+  /// readings stop, so the supervisor stops the motors) until the operator clears it: a hub
+  /// re-jumpered, or the wrong [mount] encoder_bits, would put every angle and the 1-LSB
+  /// window off by a power of two.
+  bool bits_agree(std::size_t i, std::uint8_t frame_bits) {
+    if (frame_bits == mount_bits_.at(i)) return true;
+    const char* axis = i == 0 ? "az" : "el";
+    bits_fault_.at(i) = std::string(axis) + ": the EncoderHub reports " +
+                        std::to_string(frame_bits) + "-bit frames but [mount." + axis +
+                        "] encoder_bits = " + std::to_string(mount_bits_.at(i)) +
+                        ": set the jumpers or the configuration to agree";
+    return false;
   }
 
   /// The hub's frames arrive between ticks: their time on the tick's clock is the last tick's
@@ -192,6 +216,8 @@ class HardwareBackend final : public AntennaBackend {
   std::array<std::unique_ptr<AxisSensor>, 2> sensors_;
   std::array<std::optional<Sample>, 2> fresh_;
   std::array<std::string, 2> sensor_fault_;
+  std::array<std::uint8_t, 2> mount_bits_{};  ///< [mount.az|el] encoder_bits
+  std::array<std::string, 2> bits_fault_;     ///< a hub frame's bits were not the mount's
   std::unique_ptr<linux_os::HubSerialLink> hub_;
   double last_tick_s_ = 0.0;
   std::chrono::steady_clock::time_point last_tick_wall_ = std::chrono::steady_clock::now();

@@ -9,7 +9,7 @@ namespace azt::app {
 
 /// The configuration layout this build writes and reads. A file without `schema_version` is
 /// version 0 (the layout of the first releases); newer versions than this are refused, not guessed.
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 
 /// What migrate_config() did, one sentence per change ("[station].height_m renamed to alt_m").
 struct MigrationReport {

@@ -11,46 +11,46 @@
 namespace azt::app {
 namespace {
 
-sim::AxisParams read_plant(const ConfigSection& s, const sim::AxisParams& defaults) {
+/// The simulated plant of one axis: the mount's rate and encoders ([mount.az]), with its own
+/// imperfections (by default the ones the controller is told of) and start angle and stops.
+sim::AxisParams read_plant(const ConfigSection& s, const AxisMount& mount,
+                           const sim::AxisParams& defaults) {
   sim::AxisParams p = defaults;
-  p.max_rate_deg_s = s.number("max_rate_deg_s").value_or(p.max_rate_deg_s);
-  p.time_constant_s = s.number("time_constant_s").value_or(p.time_constant_s);
-  p.backlash_deg = s.number("backlash_deg").value_or(p.backlash_deg);
-  p.stiction_duty = s.number("stiction_duty").value_or(p.stiction_duty);
-  if (auto bits = s.integer("encoder_bits")) {
-    if (*bits < 9 || *bits > 16) s.fail("encoder_bits", "must be 9 to 16");
-    p.encoder_bits = static_cast<std::uint8_t>(*bits);
-  }
+  p.max_rate_deg_s = mount.max_rate_deg_s;
+  p.encoder_bits = mount.encoder_bits;
+  p.time_constant_s = s.number("time_constant_s").value_or(mount.time_constant_s);
+  p.backlash_deg = s.number("backlash_deg").value_or(mount.backlash_deg);
+  p.stiction_duty = s.number("stiction_duty").value_or(mount.min_duty);
   p.start_deg = s.number("start_deg").value_or(p.start_deg);
   p.min_deg = s.number("min_deg").value_or(p.min_deg);
   p.max_deg = s.number("max_deg").value_or(p.max_deg);
-  if (auto ok = p.validate(); !ok) s.fail("max_rate_deg_s", ok.error().message);
+  if (auto ok = p.validate(); !ok) s.fail("time_constant_s", ok.error().message);
   return p;
 }
 
-/// The controller's view of an axis: the [control] settings, and the motor's rate, time constant
-/// and stiction as the configuration states them for this plant.
-control::AxisControlConfig control_for(const ConfigSection& c, const sim::AxisParams& plant) {
+/// The controller's view of an axis: the [control] settings, and the mount's rate, time constant,
+/// stiction, play and encoder step ([mount.az]) - never the simulated plant's.
+control::AxisControlConfig control_for(const ConfigSection& c, const AxisMount& mount) {
   control::AxisControlConfig a;
   a.window_deg = c.number("window_deg").value_or(0.0);
   a.ramp_s = c.number("ramp_s").value_or(1.0);
   a.tracking_speed = c.number("tracking_speed").value_or(0.5);
   a.fast_zone_deg = c.number("fast_zone_deg").value_or(3.0);
   a.lead = c.boolean("lead").value_or(true);
-  a.max_rate_deg_s = plant.max_rate_deg_s;
-  a.time_constant_s = plant.time_constant_s;
-  a.min_duty = plant.stiction_duty;
-  a.backlash_deg = plant.backlash_deg;
-  a.lsb_deg = proto::hub_resolution_deg(plant.encoder_bits);
+  a.max_rate_deg_s = mount.max_rate_deg_s;
+  a.time_constant_s = mount.time_constant_s;
+  a.min_duty = mount.min_duty;
+  a.backlash_deg = mount.backlash_deg;
+  a.lsb_deg = proto::hub_resolution_deg(mount.encoder_bits);
   auto ok = control::AxisControlConfig::make(a);
   if (!ok) c.fail("window_deg", ok.error().message);
   return a;
 }
 
-control::SupervisorConfig supervisor_for(const sim::AxisParams& plant) {
+control::SupervisorConfig supervisor_for(const AxisMount& mount) {
   control::SupervisorConfig s;
-  s.max_rate_deg_s = plant.max_rate_deg_s;
-  s.lsb_deg = proto::hub_resolution_deg(plant.encoder_bits);
+  s.max_rate_deg_s = mount.max_rate_deg_s;
+  s.lsb_deg = proto::hub_resolution_deg(mount.encoder_bits);
   return s;
 }
 
@@ -153,15 +153,13 @@ SimConfig sim_config_from(const ConfigFile& file) {
   const ConfigSection sim_section =
       file.section("sim", {"az", "el", "frame_version", "frame_loss", "byte_corruption", "seed"});
   const std::initializer_list<std::string_view> plant_keys = {
-      "max_rate_deg_s", "time_constant_s", "backlash_deg", "stiction_duty",
-      "encoder_bits",   "start_deg",       "min_deg",      "max_deg",
-      "fault",          "fault_at_s",      "fault_counts"};
+      "time_constant_s", "backlash_deg", "stiction_duty", "start_deg",   "min_deg",
+      "max_deg",         "fault",        "fault_at_s",    "fault_counts"};
+  config.mount = mount_config_from(file);
   sim::AxisParams az_defaults;
-  az_defaults.max_rate_deg_s = 1.5;
   az_defaults.min_deg = 0.0;
   az_defaults.max_deg = 360.0;
   sim::AxisParams el_defaults;
-  el_defaults.max_rate_deg_s = 1.0;
   el_defaults.min_deg = 0.0;
   el_defaults.max_deg = 90.0;
   read_geometry(file.section("geometry", {"az_min_deg", "az_max_deg", "el_min_deg", "el_max_deg"}),
@@ -170,8 +168,8 @@ SimConfig sim_config_from(const ConfigFile& file) {
   az_defaults.max_deg = setup.az_range.max_deg;
   el_defaults.min_deg = setup.el_range.min_deg;
   el_defaults.max_deg = setup.el_range.max_deg;
-  setup.az_plant = read_plant(sim_section.child("az", plant_keys), az_defaults);
-  setup.el_plant = read_plant(sim_section.child("el", plant_keys), el_defaults);
+  setup.az_plant = read_plant(sim_section.child("az", plant_keys), config.mount.az, az_defaults);
+  setup.el_plant = read_plant(sim_section.child("el", plant_keys), config.mount.el, el_defaults);
   read_plant_fault(sim_section.child("az", plant_keys), true, setup);
   read_plant_fault(sim_section.child("el", plant_keys), false, setup);
   read_link(sim_section, setup);
@@ -179,10 +177,10 @@ SimConfig sim_config_from(const ConfigFile& file) {
       file.section("control", {"window_deg", "ramp_s", "tracking_speed", "fast_zone_deg", "lead",
                                "tick_hz", "out_of_range", "park_az_deg", "park_el_deg"});
   read_out_of_range(control, setup);
-  setup.az_control = control_for(control, setup.az_plant);
-  setup.el_control = control_for(control, setup.el_plant);
-  setup.az_supervisor = supervisor_for(setup.az_plant);
-  setup.el_supervisor = supervisor_for(setup.el_plant);
+  setup.az_control = control_for(control, config.mount.az);
+  setup.el_control = control_for(control, config.mount.el);
+  setup.az_supervisor = supervisor_for(config.mount.az);
+  setup.el_supervisor = supervisor_for(config.mount.el);
   const double tick_hz = control.number("tick_hz").value_or(20.0);
   if (tick_hz < 1.0 || tick_hz > 200.0) control.fail("tick_hz", "must be 1 to 200");
   setup.tick_s = 1.0 / tick_hz;

@@ -73,12 +73,14 @@ grid = "FN06HE"
 name = "stop"
 [antenna]
 backend = "hardware"
+[mount.az]
+max_rate_deg_s = 3.0
+[mount.el]
+max_rate_deg_s = 2.0
 [sim.az]
 start_deg = 100.0
-max_rate_deg_s = 3.0
 [sim.el]
 start_deg = 10.0
-max_rate_deg_s = 2.0
 [hardware.az]
 drive = "relay"
 relay_forward = 5

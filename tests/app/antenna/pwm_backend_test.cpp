@@ -33,11 +33,13 @@ class PwmBackendTest : public ::testing::Test {
   void SetUp() override { station_.make("azt_pwm_backend"); }
   void TearDown() override { station_.remove(); }
 
-  DaemonConfig config() const {
+  /// The fake hub sends 12-bit frames; `az_bits` is what [mount.az] says.
+  DaemonConfig config(int az_bits = 12) const {
     const std::string text = "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"pwm\"\n" +
                              station_.config_tables() +
-                             "[sim.az]\nencoder_bits = 12\nstart_deg = 180.0\n"
-                             "[sim.el]\nencoder_bits = 12\nstart_deg = 10.0\n";
+                             "[mount.az]\nencoder_bits = " + std::to_string(az_bits) +
+                             "\n[mount.el]\nencoder_bits = 12\n" +
+                             "[sim.az]\nstart_deg = 180.0\n[sim.el]\nstart_deg = 10.0\n";
     return daemon_config_from(ConfigFile::parse(text, "pwm.toml"));
   }
   void send_frame(double az_deg, double el_deg) const { station_.send_frame(az_deg, el_deg); }
@@ -99,6 +101,39 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
   ASSERT_FALSE(backend->faults().empty());
   EXPECT_NE(backend->faults().back().find("hub: lost"), std::string::npos)
       << backend->faults().back();
+}
+
+// Issue 13 §2: the hub's frames carry its jumpers' bits. Frames whose bits are not [mount.az]'s
+// are never read as angles: a fault names both values and the bridge is never driven.
+TEST_F(PwmBackendTest, AHubFrameWhoseBitsAreNotTheMountsIsAFaultNamingBoth) {
+  boost::asio::io_context io;
+  auto backend = make_pwm_backend(io, config(14));
+  const auto start = Clock::now();
+  const auto seconds = [&start] {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  control::Demand go;
+  go.position = control::AzEl{200.0, 10.0};
+  ::write(station_.master(), "\0", 1);
+  const auto run = [&](double until_s) {
+    while (seconds() < until_s) {
+      send_frame(180.0, 10.0);
+      io.run_for(std::chrono::milliseconds(25));
+      io.restart();
+      backend->tick(seconds(), go, control::AzEl{});
+      EXPECT_EQ(duty(0), 0U) << "driven on angles read at the wrong resolution";
+      EXPECT_EQ(duty(1), 0U);
+    }
+  };
+  run(0.5);
+  const auto faults = backend->faults();
+  ASSERT_FALSE(faults.empty());
+  EXPECT_NE(faults.back().find("12-bit frames but [mount.az] encoder_bits = 14"), std::string::npos)
+      << faults.back();
+  EXPECT_FALSE(backend->position(seconds()).has_value());
+  backend->clear_faults();  // the jumpers were not changed: the next frame latches it again
+  run(seconds() + 0.3);
+  EXPECT_FALSE(backend->faults().empty());
 }
 
 // Issue 6 §6: a limit switch edge turns the drive towards it off within 20 ms, between ticks.

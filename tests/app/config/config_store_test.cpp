@@ -13,6 +13,7 @@
 #include <string>
 
 #include "azt/linux/file_lock.hpp"
+#include "azt/sim/station_sim.hpp"
 #include "common/usage_error.hpp"
 
 namespace azt::app {
@@ -21,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kValid =
-    "schema_version = 1\n"
+    "schema_version = 2\n"
     "[station]\n"
     "grid = \"FN06HE\"\n"
     "alt_m = 300.0\n"
@@ -178,7 +179,7 @@ TEST_F(ConfigStoreTest, SchemaZeroIsMigratedAndSavedIdempotently) {
   EXPECT_EQ(read(path_), v0);  // nothing written until a change is saved
   ASSERT_TRUE(store.update([](toml::table&) {}).ok());
   const std::string once = read(path_);
-  EXPECT_NE(once.find("schema_version = 1"), std::string::npos) << once;
+  EXPECT_NE(once.find("schema_version = 2"), std::string::npos) << once;
   EXPECT_NE(once.find("alt_m = 250.0"), std::string::npos) << once;
   EXPECT_EQ(once.find("height_m"), std::string::npos) << once;
   EXPECT_EQ(read(path_ + ".bak"), v0);  // the backup made before the migration is the original
@@ -193,8 +194,8 @@ TEST_F(ConfigStoreTest, SchemaZeroWithBothHeightsIsRefused) {
 }
 
 TEST_F(ConfigStoreTest, FutureSchemaIsRefused) {
-  write(path_, "schema_version = 2\n");
-  EXPECT_NE(open_error().find("schema_version 2 is not supported"), std::string::npos);
+  write(path_, "schema_version = 3\n");
+  EXPECT_NE(open_error().find("schema_version 3 is not supported"), std::string::npos);
   write(path_, "schema_version = \"1\"\n");
   EXPECT_NE(open_error().find("schema_version must be"), std::string::npos);
 }
@@ -233,7 +234,7 @@ TEST_F(ConfigStoreTest, CorrectionsAndTheTiltTableAreSettings) {
 
 const std::string kCommented =
     "# my station, do not lose these notes\n"
-    "schema_version = 1\n"
+    "schema_version = 2\n"
     "\n"
     "[station]\n"
     "grid = \"FN06HE\"   # the home QTH\n"
@@ -396,6 +397,64 @@ TEST_F(ConfigStoreTest, TempFilesOfDeadWritersGoAtStartAndNewFilesArePrivate) {
   ASSERT_TRUE(store.set("control.window_deg", "0.2").ok());
   const auto mode = fs::status(path_ + ".lock").permissions();
   EXPECT_EQ(mode & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+}
+
+// Issue 13 §2: a schema-1 file set the real mount's speed and encoders under [sim.az]. It loads
+// into the same controller setup as the same mount written in schema 2's [mount.az], and the
+// simulated plant keeps its imperfections.
+TEST_F(ConfigStoreTest, SchemaOneSimRatesBecomeTheMountsWithTheSameControllerSetup) {
+  const std::string v1 =
+      "schema_version = 1\n[station]\ngrid = \"FN06HE\"\n[target]\nname = \"stop\"\n"
+      "[sim.az]\nmax_rate_deg_s = 3.0\nencoder_bits = 14\ntime_constant_s = 0.5\n"
+      "stiction_duty = 0.2\nbacklash_deg = 0.1\nstart_deg = 90.0\n"
+      "[sim.el]\nmax_rate_deg_s = 0.8\nencoder_bits = 10\n";
+  const std::string v2 =
+      "schema_version = 2\n[station]\ngrid = \"FN06HE\"\n[target]\nname = \"stop\"\n"
+      "[mount.az]\nmax_rate_deg_s = 3.0\nencoder_bits = 14\ntime_constant_s = 0.5\n"
+      "min_duty = 0.2\nbacklash_deg = 0.1\n[mount.el]\nmax_rate_deg_s = 0.8\n"
+      "encoder_bits = 10\n[sim.az]\nstart_deg = 90.0\n";
+  write(path_, v1);
+  ConfigStore old = ConfigStore::open(path_);
+  const std::string v2_path = (dir_ / "v2.toml").string();
+  write(v2_path, v2);
+  ConfigStore now = ConfigStore::open(v2_path);
+  const auto a = sim::station_control_config(old.config().sim.setup);
+  const auto b = sim::station_control_config(now.config().sim.setup);
+  EXPECT_DOUBLE_EQ(a.az_control.max_rate_deg_s, 3.0);
+  EXPECT_DOUBLE_EQ(a.az_control.lsb_deg, 360.0 / 16384.0);
+  EXPECT_DOUBLE_EQ(a.el_control.lsb_deg, 360.0 / 1024.0);
+  EXPECT_DOUBLE_EQ(a.az_control.time_constant_s, 0.5);
+  EXPECT_DOUBLE_EQ(a.az_control.min_duty, 0.2);
+  EXPECT_DOUBLE_EQ(a.az_control.backlash_deg, 0.1);
+  for (const auto& [x, y] :
+       {std::pair{&a.az_control, &b.az_control}, std::pair{&a.el_control, &b.el_control}}) {
+    EXPECT_DOUBLE_EQ(x->max_rate_deg_s, y->max_rate_deg_s);
+    EXPECT_DOUBLE_EQ(x->lsb_deg, y->lsb_deg);
+    EXPECT_DOUBLE_EQ(x->time_constant_s, y->time_constant_s);
+    EXPECT_DOUBLE_EQ(x->min_duty, y->min_duty);
+    EXPECT_DOUBLE_EQ(x->backlash_deg, y->backlash_deg);
+  }
+  EXPECT_DOUBLE_EQ(a.az_supervisor.max_rate_deg_s, b.az_supervisor.max_rate_deg_s);
+  EXPECT_DOUBLE_EQ(a.el_supervisor.lsb_deg, b.el_supervisor.lsb_deg);
+  // The simulated plant is the same too: the mount's rate and bits, its own imperfections.
+  const auto& plant = old.config().sim.setup.az_plant;
+  EXPECT_DOUBLE_EQ(plant.max_rate_deg_s, 3.0);
+  EXPECT_EQ(plant.encoder_bits, 14);
+  EXPECT_DOUBLE_EQ(plant.stiction_duty, 0.2);
+  EXPECT_DOUBLE_EQ(plant.start_deg, 90.0);
+  // Saved once: [mount.*] in the file, the original in .bak, and a second load changes nothing.
+  ASSERT_TRUE(old.update([](toml::table&) {}).ok());
+  EXPECT_EQ(read(path_ + ".bak"), v1);
+  const std::string saved = read(path_);
+  EXPECT_NE(saved.find("[mount.az]"), std::string::npos) << saved;
+  EXPECT_EQ(saved.find("encoder_bits", saved.find("[sim.az]")), std::string::npos) << saved;
+  EXPECT_TRUE(ConfigStore::open(path_).notices().empty());
+}
+
+TEST_F(ConfigStoreTest, AMountRateInTheSimulatorsTableIsRefusedInSchemaTwo) {
+  write(path_,
+        "schema_version = 2\n[station]\ngrid = \"FN06HE\"\n[sim.az]\nmax_rate_deg_s = 3.0\n");
+  EXPECT_NE(open_error().find("max_rate_deg_s"), std::string::npos) << open_error();
 }
 
 }  // namespace
