@@ -334,7 +334,7 @@ HardwarePorts HardwarePorts::linux_devices(linux_os::GpioProvider* gpio) {
 
 std::unique_ptr<AxisActuator> make_actuator(const HardwareAxisConfig& a, const PwmConfig& pwm,
                                             HardwarePorts& ports) {
-  if (a.drive == "relay") {
+  if (a.drive == AxisDriveKind::Relay) {
     const bool pp = a.relay_power.has_value();
     auto first = output_line(ports, pp ? *a.relay_power : *a.relay_forward);
     auto second = output_line(ports, pp ? *a.relay_polarity : *a.relay_reverse);
@@ -343,7 +343,7 @@ std::unique_ptr<AxisActuator> make_actuator(const HardwareAxisConfig& a, const P
         control::PowerPolarityConfig{a.relay.reversal_dead_s, a.polarity_settle_s},
         pp ? "relays (power + polarity)" : "relays (forward/reverse)");
   }
-  if (a.drive == "pot") {
+  if (a.drive == AxisDriveKind::Pot) {
     auto bus = ports.open_spi(a.spi_device, a.spi_hz);
     if (!bus) throw UsageError(a.key("spi_device") + ": " + bus.error().message);
     return std::make_unique<PotActuator>(std::move(bus).value(), a.wiper,
@@ -375,9 +375,9 @@ std::unique_ptr<AxisActuator> make_actuator(const HardwareAxisConfig& a, const P
 }
 
 std::unique_ptr<AxisSensor> make_adc_sensor(const HardwareAxisConfig& a, HardwarePorts& ports) {
-  const std::string what = a.name + " pot (" + a.sensor + " " + a.adc_device + " channel " +
-                           std::to_string(a.adc_channel) + ")";
-  if (a.sensor == "mcp3008") {
+  const std::string what = a.name + " pot (" + std::string(name_of(kAxisSensorKinds, a.sensor)) +
+                           " " + a.adc_device + " channel " + std::to_string(a.adc_channel) + ")";
+  if (a.sensor == AxisSensorKind::Mcp3008) {
     auto bus = ports.open_spi(a.adc_device, 1'000'000);
     if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
     return std::make_unique<Mcp3008Sensor>(std::move(bus).value(), a.adc_channel, a.pot, what);

@@ -19,10 +19,10 @@ namespace {
 
 control::AxisDriveConfig drive_config(const HardwareAxisConfig& a) {
   control::AxisDriveConfig d;
-  if (a.drive == "relay") {
+  if (a.drive == AxisDriveKind::Relay) {
     d.kind = control::DriveKind::Relay;
     d.relay = a.relay;
-  } else if (a.drive == "pot") {
+  } else if (a.drive == AxisDriveKind::Pot) {
     d.kind = control::DriveKind::Setpoint;
     d.setpoint_band_deg = a.setpoint_band_deg;
   }
@@ -33,7 +33,7 @@ control::StationControlConfig control_config(const DaemonConfig& config) {
   control::StationControlConfig c = sim::station_control_config(config.sim.setup);
   c.az_drive = drive_config(config.hardware.az);
   c.el_drive = drive_config(config.hardware.el);
-  c.az_absolute = config.hardware.az.sensor != "hub";
+  c.az_absolute = config.hardware.az.sensor != AxisSensorKind::Hub;
   return c;
 }
 
@@ -53,7 +53,7 @@ class HardwareBackend final : public AntennaBackend {
     station_.set_corrections(config.sim.setup.corrections);
     // Sensors first, then drives: a drive is only ever opened once everything it needs exists.
     for (const HardwareAxisConfig* a : {&config.hardware.az, &config.hardware.el}) {
-      if (a->sensor != "hub") sensors_.at(index(*a)) = make_adc_sensor(*a, ports_);
+      if (a->sensor != AxisSensorKind::Hub) sensors_.at(index(*a)) = make_adc_sensor(*a, ports_);
     }
     if (config.hardware.uses_hub()) open_hub(io, config);
     for (const HardwareAxisConfig* a : {&config.hardware.az, &config.hardware.el}) {
@@ -137,13 +137,13 @@ class HardwareBackend final : public AntennaBackend {
   static std::size_t index(const HardwareAxisConfig& a) { return a.name == "az" ? 0 : 1; }
 
   std::string sensor_name(const HardwareAxisConfig& a) const {
-    if (a.sensor == "hub") return "EncoderHub on " + hub_device_;
+    if (a.sensor == AxisSensorKind::Hub) return "EncoderHub on " + hub_device_;
     return sensors_.at(index(a))->describe();
   }
 
   void open_hub(boost::asio::io_context& io, const DaemonConfig& config) {
-    const bool az = config.hardware.az.sensor == "hub";
-    const bool el = config.hardware.el.sensor == "hub";
+    const bool az = config.hardware.az.sensor == AxisSensorKind::Hub;
+    const bool el = config.hardware.el.sensor == AxisSensorKind::Hub;
     mount_bits_ = {config.sim.mount.az.encoder_bits, config.sim.mount.el.encoder_bits};
     auto hub = linux_os::HubSerialLink::open(
         io, config.hub,

@@ -30,12 +30,10 @@ std::vector<SerialServerConfig> read_serial(const ConfigFile& file) {
   std::vector<SerialServerConfig> out;
   for (const ConfigSection& s : file.section_array("serial", {"protocol", "device", "baud"})) {
     SerialServerConfig c;
-    c.protocol = s.text("protocol").value_or("");
-    constexpr std::array<std::string_view, 6> kKnown = {"gs232a",    "gs232b", "easycomm1",
-                                                        "easycomm2", "spid",   "rot1prog"};
-    if (std::find(kKnown.begin(), kKnown.end(), c.protocol) == kKnown.end()) {
+    const auto protocol = choose(kSerialProtocols, s.text("protocol").value_or(""));
+    if (!protocol)
       s.fail("protocol", "must be gs232a, gs232b, easycomm1, easycomm2, spid or rot1prog");
-    }
+    c.protocol = *protocol;
     c.device = s.text("device").value_or("");
     if (c.device.empty()) s.fail("device", "is required: \"pty:/path\" or a serial device path");
     const auto baud = s.integer("baud").value_or(9600);
@@ -283,22 +281,20 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
                             "sat:NAME, or \"stop\"");
   }
   const ConfigSection antenna = file.section("antenna", {"backend"});
-  c.backend = antenna.text("backend").value_or("sim");
-  if (c.backend != "sim" && c.backend != "hamlib" && c.backend != "pwm" &&
-      c.backend != "hardware") {
-    antenna.fail("backend", "must be \"sim\", \"hamlib\", \"pwm\" or \"hardware\"");
-  }
+  const auto backend = choose(kBackendKinds, antenna.text("backend").value_or("sim"));
+  if (!backend) antenna.fail("backend", "must be " + choice_list(kBackendKinds));
+  c.backend = *backend;
   const ConfigSection hub = file.section("hub", {"device", "baud", "accept"});
   c.hub = read_hub(hub);
   c.pwm = read_pwm(file.section(
       "pwm", {"chip", "az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm", "frequency_hz", "dead_time_s"}));
-  if (c.backend == "pwm" && c.hub.device.empty()) {
+  if (c.backend == BackendKind::Pwm && c.hub.device.empty()) {
     antenna.fail("backend", "is \"pwm\" but [hub] device is not set");
   }
   const ConfigSection hamlib =
       file.section("hamlib", {"model", "device", "baud", "poll_s", "min_move_deg"});
   c.hamlib = read_hamlib(hamlib);
-  if (c.backend == "hamlib" && !hamlib.present()) {
+  if (c.backend == BackendKind::Hamlib && !hamlib.present()) {
     antenna.fail("backend", "is \"hamlib\" but there is no [hamlib] table");
   }
   const ConfigSection rotctld = file.section("rotctld", {"bind", "port", "idle_timeout_s"});
@@ -325,7 +321,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
                                       "sequencer_active_low", "estop_latch_file"}),
                 c.sequencer.outputs.size());
   c.hardware = read_hardware(file, c.gpio.chip);
-  if (c.backend == "hardware") {
+  if (c.backend == BackendKind::Hardware) {
     if (c.hardware.uses_hub() && c.hub.device.empty()) {
       antenna.fail("backend", "is \"hardware\" with a hub sensor but [hub] device is not set");
     }

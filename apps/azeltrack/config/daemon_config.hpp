@@ -11,14 +11,36 @@
 #include "azt/linux/hub_serial_link.hpp"
 #include "azt/proto/target_limits.hpp"
 #include "azt/sequencer/tr_sequencer.hpp"
+#include "config/config_choice.hpp"
 #include "config/hardware_config.hpp"
 #include "config/sim_config.hpp"
 
 namespace azt::app {
 
+/// The serial protocols PC programs speak to the station ([[serial]] protocol).
+enum class SerialProtocol { Gs232a, Gs232b, EasyComm1, EasyComm2, Spid, Rot1Prog };
+inline constexpr ConfigChoices<SerialProtocol, 6> kSerialProtocols{
+    {{"gs232a", SerialProtocol::Gs232a},
+     {"gs232b", SerialProtocol::Gs232b},
+     {"easycomm1", SerialProtocol::EasyComm1},
+     {"easycomm2", SerialProtocol::EasyComm2},
+     {"spid", SerialProtocol::Spid},
+     {"rot1prog", SerialProtocol::Rot1Prog}}};
+
+/// The antenna behind the station ([antenna] backend).
+enum class BackendKind { Sim, Hamlib, Pwm, Hardware };
+inline constexpr ConfigChoices<BackendKind, 4> kBackendKinds{{{"sim", BackendKind::Sim},
+                                                              {"hamlib", BackendKind::Hamlib},
+                                                              {"pwm", BackendKind::Pwm},
+                                                              {"hardware", BackendKind::Hardware}}};
+
 struct SerialServerConfig {
-  std::string protocol;  ///< gs232a | gs232b | easycomm1 | easycomm2 | spid | rot1prog
-  std::string device;    ///< "pty:/path" or a device path
+  SerialProtocol protocol = SerialProtocol::Gs232b;
+  /// "gs232b" as the configuration spells it, for logs and the console.
+  [[nodiscard]] std::string_view protocol_name() const {
+    return name_of(kSerialProtocols, protocol);
+  }
+  std::string device;  ///< "pty:/path" or a device path
   unsigned baud = 9600;
 };
 
@@ -74,7 +96,7 @@ struct WebConfig {
 struct DaemonConfig {
   SimConfig sim;                      ///< station, sky, control, geometry, and the simulated plant
   std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
-  std::string backend = "sim";        ///< [antenna] backend: sim | hamlib | pwm | hardware
+  BackendKind backend = BackendKind::Sim;  ///< [antenna] backend
   linux_os::HamlibConfig hamlib;
   linux_os::HubSerialConfig hub;  ///< [hub]: the EncoderHub's serial device (`pwm` backend)
   PwmConfig pwm;

@@ -72,11 +72,11 @@ void read_pot_drive(const ConfigSection& s, HardwareAxisConfig& a) {
 void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   a.adc_device = s.text("adc_device").value_or("");
   if (a.adc_device.empty()) {
-    s.fail("adc_device", a.sensor == "mcp3008"
+    s.fail("adc_device", a.sensor == AxisSensorKind::Mcp3008
                              ? "is needed for sensor = \"mcp3008\" (/dev/spidevB.C)"
                              : "is needed for sensor = \"ads1115\" (/dev/i2c-N)");
   }
-  const unsigned channels = a.sensor == "mcp3008" ? 8 : 4;
+  const unsigned channels = a.sensor == AxisSensorKind::Mcp3008 ? 8 : 4;
   const auto ch = s.integer("adc_channel").value_or(0);
   if (ch < 0 || ch >= channels)
     s.fail("adc_channel", "must be 0 to " + std::to_string(channels - 1));
@@ -85,7 +85,8 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   if (addr < 0x48 || addr > 0x4B) s.fail("adc_address", "must be 72 to 75 (0x48–0x4B)");
   a.adc_address = static_cast<std::uint8_t>(addr);
   // The ADS1115 at ±4.096 V reads a 3.3 V pot in 15 bits; the MCP3008 is 10 bits of its VREF.
-  a.pot.adc = a.sensor == "mcp3008" ? control::AdcSpec{10, 3.3} : control::AdcSpec{15, 4.096};
+  a.pot.adc =
+      a.sensor == AxisSensorKind::Mcp3008 ? control::AdcSpec{10, 3.3} : control::AdcSpec{15, 4.096};
   const auto p = two_points(s, "pot_calibration");
   if (!p) {
     s.fail("pot_calibration",
@@ -117,23 +118,20 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
                              const std::string& chip) {
   HardwareAxisConfig a;
   a.name = name;
-  a.drive = s.text("drive").value_or(a.drive);
-  a.sensor = s.text("sensor").value_or(a.sensor);
-  a.enable = read_gpio_line(s, "enable", chip, false);
-  if (a.enable && a.drive != "pwm")
-    s.fail("enable", "is for drive = \"pwm\" (the IBT-2's enables)");
-  if (a.drive == "relay") {
-    read_relay(s, a, chip);
-  } else if (a.drive == "pot") {
-    read_pot_drive(s, a);
-  } else if (a.drive != "pwm") {
+  const auto drive = choose(kAxisDriveKinds, s.text("drive").value_or("pwm"));
+  if (!drive)
     s.fail("drive", "must be \"pwm\" (IBT-2 on [pwm]), \"relay\" (GPIO) or \"pot\" (MCP41010)");
-  }
-  if (a.sensor == "mcp3008" || a.sensor == "ads1115") {
-    read_adc(s, a);
-  } else if (a.sensor != "hub") {
+  a.drive = *drive;
+  const auto sensor = choose(kAxisSensorKinds, s.text("sensor").value_or("hub"));
+  if (!sensor)
     s.fail("sensor", "must be \"hub\" (EncoderHub on [hub]), \"mcp3008\" or \"ads1115\"");
-  }
+  a.sensor = *sensor;
+  a.enable = read_gpio_line(s, "enable", chip, false);
+  if (a.enable && a.drive != AxisDriveKind::Pwm)
+    s.fail("enable", "is for drive = \"pwm\" (the IBT-2's enables)");
+  if (a.drive == AxisDriveKind::Relay) read_relay(s, a, chip);
+  if (a.drive == AxisDriveKind::Pot) read_pot_drive(s, a);
+  if (a.sensor != AxisSensorKind::Hub) read_adc(s, a);
   return a;
 }
 

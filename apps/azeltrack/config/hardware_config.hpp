@@ -11,16 +11,30 @@
 #include "azt/control/relay_drive.hpp"
 #include "azt/control/setpoint_drive.hpp"
 #include "azt/linux/gpio.hpp"
+#include "config/config_choice.hpp"
 
 namespace azt::app {
 
 class ConfigFile;
 class ConfigSection;
 
+/// How an axis is turned: an IBT-2 H-bridge on [pwm], relays on GPIO, or an MCP41010 digital pot
+/// in place of the rotator box's control pot.
+enum class AxisDriveKind { Pwm, Relay, Pot };
+/// How an axis is read: the EncoderHub on [hub], or a potentiometer on an MCP3008 or ADS1115.
+enum class AxisSensorKind { Hub, Mcp3008, Ads1115 };
+
+inline constexpr ConfigChoices<AxisDriveKind, 3> kAxisDriveKinds{
+    {{"pwm", AxisDriveKind::Pwm}, {"relay", AxisDriveKind::Relay}, {"pot", AxisDriveKind::Pot}}};
+inline constexpr ConfigChoices<AxisSensorKind, 3> kAxisSensorKinds{
+    {{"hub", AxisSensorKind::Hub},
+     {"mcp3008", AxisSensorKind::Mcp3008},
+     {"ads1115", AxisSensorKind::Ads1115}}};
+
 struct HardwareAxisConfig {
-  std::string name;            ///< "az" or "el"
-  std::string drive = "pwm";   ///< pwm | relay | pot
-  std::string sensor = "hub";  ///< hub | mcp3008 | ads1115
+  std::string name;  ///< "az" or "el"
+  AxisDriveKind drive = AxisDriveKind::Pwm;
+  AxisSensorKind sensor = AxisSensorKind::Hub;
 
   // drive = "pwm": the IBT-2's R_EN + L_EN on a GPIO line (absent: tied to 3.3 V).
   std::optional<linux_os::GpioLineSpec> enable;
@@ -65,7 +79,9 @@ HardwareAxisConfig default_axis(const std::string& name);
 struct HardwareConfig {
   HardwareAxisConfig az = default_axis("az");
   HardwareAxisConfig el = default_axis("el");
-  [[nodiscard]] bool uses_hub() const { return az.sensor == "hub" || el.sensor == "hub"; }
+  [[nodiscard]] bool uses_hub() const {
+    return az.sensor == AxisSensorKind::Hub || el.sensor == AxisSensorKind::Hub;
+  }
   [[nodiscard]] bool uses_gpio() const {
     return !az.gpio_lines().empty() || !el.gpio_lines().empty();
   }

@@ -230,7 +230,7 @@ json DaemonConsole::config() {
   }
   json serial = json::array();
   for (const auto& s : c.serial) {
-    serial.push_back({{"protocol", s.protocol}, {"device", s.device}, {"baud", s.baud}});
+    serial.push_back({{"protocol", s.protocol_name()}, {"device", s.device}, {"baud", s.baud}});
   }
   return {
       {"station",

@@ -31,21 +31,24 @@ std::string log_safe(const std::string& text) {
 std::unique_ptr<proto::ProtocolSession> serial_session(const SerialServerConfig& c,
                                                        proto::RotatorService& service,
                                                        const proto::TargetLimits& limits) {
-  const std::string client = c.protocol + " " + c.device;
-  if (c.protocol == "gs232a" || c.protocol == "gs232b") {
-    return proto::make_gs232_session(
-        service, client, c.protocol == "gs232a" ? proto::Gs232Variant::A : proto::Gs232Variant::B,
-        limits);
-  }
-  if (c.protocol == "easycomm1" || c.protocol == "easycomm2") {
-    return proto::make_easycomm_session(
-        service, client,
-        c.protocol == "easycomm1" ? proto::EasyCommVersion::One : proto::EasyCommVersion::Two,
-        limits);
-  }
+  const std::string client = std::string(c.protocol_name()) + " " + c.device;
   proto::SpidConfig spid;
-  spid.dialect =
-      c.protocol == "rot1prog" ? proto::SpidDialect::Rot1Prog : proto::SpidDialect::Rot2Prog;
+  switch (c.protocol) {
+    case SerialProtocol::Gs232a:
+      return proto::make_gs232_session(service, client, proto::Gs232Variant::A, limits);
+    case SerialProtocol::Gs232b:
+      return proto::make_gs232_session(service, client, proto::Gs232Variant::B, limits);
+    case SerialProtocol::EasyComm1:
+      return proto::make_easycomm_session(service, client, proto::EasyCommVersion::One, limits);
+    case SerialProtocol::EasyComm2:
+      return proto::make_easycomm_session(service, client, proto::EasyCommVersion::Two, limits);
+    case SerialProtocol::Rot1Prog:
+      spid.dialect = proto::SpidDialect::Rot1Prog;
+      break;
+    case SerialProtocol::Spid:
+      spid.dialect = proto::SpidDialect::Rot2Prog;
+      break;
+  }
   return proto::make_spid_session(service, client, spid);
 }
 
@@ -91,9 +94,9 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
           std::chrono::duration<double>(config_.sim.setup.tick_s))) {}
 
 std::unique_ptr<AntennaBackend> StationDaemon::make_backend() {
-  if (config_.backend == "hamlib") return make_hamlib_backend(config_);
-  if (config_.backend == "pwm") return make_pwm_backend(io_, config_);
-  if (config_.backend == "hardware") {
+  if (config_.backend == BackendKind::Hamlib) return make_hamlib_backend(config_);
+  if (config_.backend == BackendKind::Pwm) return make_pwm_backend(io_, config_);
+  if (config_.backend == BackendKind::Hardware) {
     return make_hardware_backend(io_, config_, HardwarePorts::linux_devices(gpio_.get()));
   }
   return make_sim_backend(config_);
@@ -197,13 +200,14 @@ void StationDaemon::open_servers() {
     auto server = linux_os::SerialProtocolServer::open(
         io_, c.device, c.baud, [this, c, limits] { return serial_session(c, service_, limits); },
         [this, c](const std::string& event) {
-          log_.info(c.device, c.protocol + " " + c.device + ": " + event, now_s());
+          log_.info(c.device, std::string(c.protocol_name()) + " " + c.device + ": " + event,
+                    now_s());
         });
     if (!server) {
-      throw UsageError("[[serial]] #" + std::to_string(i + 1) + " (" + c.protocol +
-                       "): " + server.error().message);
+      throw UsageError("[[serial]] #" + std::to_string(i + 1) + " (" +
+                       std::string(c.protocol_name()) + "): " + server.error().message);
     }
-    spdlog::info("{} on {}", c.protocol, server.value()->path());
+    spdlog::info("{} on {}", c.protocol_name(), server.value()->path());
     serial_.push_back(std::move(server).value());
   }
   if (config_.pstrotator.port != 0) {

@@ -182,7 +182,7 @@ TEST_F(PwmBackendTest, ALimitSwitchEdgeTurnsTheDriveTowardsItOffAtOnce) {
 TEST_F(PwmBackendTest, TheEnableLineFollowsTheDriveAndDropsOnAStop) {
   boost::asio::io_context io;
   DaemonConfig c = config();
-  c.backend = "hardware";
+  c.backend = BackendKind::Hardware;
   c.hardware.az.enable = linux_os::GpioLineSpec{"gpiochip0", 22, false, "[hardware.az] enable"};
   testing::FakeGpio gpio(io);
   HardwarePorts ports;
