@@ -1,10 +1,11 @@
 // libFuzzer target for the web console's request handling (issue 12 §8, reliability notes R14,
 // R24): the bytes a client sends on one connection, parsed by Boost.Beast's request parser with
-// the server's limits, turned into a WebRequest by the server's own to_web_request
-// (web_request.hpp), then dispatched as WebServer's HttpSession does: has_session, then a
-// WebSocket upgrade to WebApi::check_upgrade, anything else to WebApi::handle. Behind the API: a
-// fake station (ConsoleModel), a real WebAuth and run_inline for what the daemon runs off the
-// loop (password checks, saves), so every answer comes before handle returns.
+// the server's limits, turned into an azt::linux_os::HttpRequest by the server's own
+// azt::linux_os::to_http_request (azt/linux/http_request.hpp), then dispatched as
+// azt::linux_os::HttpServer's HttpSession does: has_session, then a WebSocket upgrade to
+// WebApi::check_upgrade, anything else to WebApi::handle. Behind the API: a fake station
+// (ConsoleModel), a real WebAuth and run_inline for what the daemon runs off the loop (password
+// checks, saves), so every answer comes before handle returns.
 //
 // Input: byte 0 picks the variant, byte 1 where to cut the payload in two feeds (the parser sees
 // the bytes as two reads), the rest is what the client sends: up to kMaxRequests requests one
@@ -15,7 +16,7 @@
 //   4 the model refuses every action at once (ApiError thrown), 5 later (through done);
 //   6-7 the method: as sent, GET, POST, PUT.
 // Invariants (a violation aborts, and libFuzzer keeps the input):
-// - to_web_request gives valid UTF-8 in every text field but the body;
+// - azt::linux_os::to_http_request gives valid UTF-8 in every text field but the body;
 // - nothing throws out of handle, check_upgrade or has_session;
 // - handle calls respond exactly once;
 // - every reply's status is 200..599, its body valid UTF-8 that parses as JSON when its type is
@@ -47,12 +48,12 @@
 #include <string_view>
 #include <utility>
 
+#include "azt/linux/http_request.hpp"
+#include "azt/linux/http_server.hpp"
 #include "azt/util/valid_utf8.hpp"
 #include "common/off_loop.hpp"
 #include "console/web_api.hpp"
 #include "console/web_auth.hpp"
-#include "console/web_request.hpp"
-#include "console/web_server.hpp"
 #include "fuzz_support.hpp"
 
 namespace {
@@ -156,14 +157,14 @@ bool has_line_break(std::string_view text) {
 
 const bool kTrace = std::getenv("AZT_FUZZ_TRACE") != nullptr;
 
-void trace(const app::WebRequest& request, const app::WebReply* reply) {
+void trace(const azt::linux_os::HttpRequest& request, const azt::linux_os::HttpReply* reply) {
   if (!kTrace) return;
   std::fprintf(stderr, "%s %s -> %u %s\n", request.method.c_str(), request.path.c_str(),
                reply != nullptr ? reply->status : 0U,
                reply != nullptr ? reply->body.substr(0, 200).c_str() : "(accepted)");
 }
 
-void check_reply(const app::WebReply& reply) {
+void check_reply(const azt::linux_os::HttpReply& reply) {
   AZT_FUZZ_REQUIRE(reply.status >= 200 && reply.status <= 599);
   AZT_FUZZ_REQUIRE(azt::is_valid_utf8(reply.body));
   AZT_FUZZ_REQUIRE(!has_line_break(reply.content_type));
@@ -176,7 +177,7 @@ void check_reply(const app::WebReply& reply) {
   }
 }
 
-void check_request(const app::WebRequest& r) {
+void check_request(const azt::linux_os::HttpRequest& r) {
   for (const std::string* text : {&r.method, &r.path, &r.query, &r.origin, &r.host, &r.cookie,
                                   &r.csrf, &r.authorization, &r.client}) {
     AZT_FUZZ_REQUIRE(azt::is_valid_utf8(*text));
@@ -299,7 +300,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     auto req = connection.next();
     if (!req) break;
     apply_variant(variant, login, *req);
-    const app::WebRequest request = app::to_web_request(*req, kPeer);
+    const azt::linux_os::HttpRequest request = azt::linux_os::to_http_request(*req, kPeer);
     check_request(request);
 
     bool session = false;
@@ -309,7 +310,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       threw("has_session");
     }
     if (request.websocket && request.path == "/ws") {
-      std::optional<app::WebReply> refusal;
+      std::optional<azt::linux_os::HttpReply> refusal;
       try {
         refusal = api.check_upgrade(request);
       } catch (...) {
@@ -323,7 +324,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     model.acted = false;
     int answers = 0;
     try {
-      api.handle(request, [&answers, &request](const app::WebReply& reply) {
+      api.handle(request, [&answers, &request](const azt::linux_os::HttpReply& reply) {
         ++answers;
         AZT_FUZZ_REQUIRE(answers == 1);
         trace(request, &reply);

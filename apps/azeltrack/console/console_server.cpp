@@ -46,22 +46,25 @@ ConsoleServer::ConsoleServer(boost::asio::io_context& io, ConsoleParts parts,
   console_ = std::make_unique<DaemonConsole>(std::move(parts));
   api_ = std::make_unique<WebApi>(*console_, *auth_, WebApiConfig{web.allowed_hosts}, now,
                                   std::move(offload));
-  WebServer::Callbacks callbacks;
-  callbacks.handler = [this](const WebRequest& r, const WebServer::Respond& respond) {
+  linux_os::HttpServer::Callbacks callbacks;
+  callbacks.handler = [this](const linux_os::HttpRequest& r,
+                             const linux_os::HttpServer::Respond& respond) {
     const bool change = r.method != "GET" && r.method != "HEAD";
-    api_->handle(r, [this, change, respond](WebReply reply) {
+    api_->handle(r, [this, change, respond](linux_os::HttpReply reply) {
       // A change made here reaches every open console now, not at the next periodic push.
       if (change && reply.status == 200 && server_) server_->push_now();
       respond(std::move(reply));
     });
   };
-  callbacks.upgrade_check = [this](const WebRequest& r) { return api_->check_upgrade(r); };
-  callbacks.has_session = [this](const WebRequest& r) { return api_->has_session(r); };
+  callbacks.upgrade_check = [this](const linux_os::HttpRequest& r) {
+    return api_->check_upgrade(r);
+  };
+  callbacks.has_session = [this](const linux_os::HttpRequest& r) { return api_->has_session(r); };
   callbacks.state = [this] {
     return console_->state().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   };
   callbacks.log = log;
-  auto server = WebServer::open(io, web.bind, web.port, std::move(callbacks), 0.2);
+  auto server = linux_os::HttpServer::open(io, web.bind, web.port, std::move(callbacks), 0.2);
   if (!server) throw UsageError("[web]: " + server.error().message);
   server_ = std::move(server).value();
 }

@@ -6,10 +6,10 @@
 #include <memory>
 #include <string>
 
+#include "azt/linux/http_server.hpp"
 #include "console/daemon_console.hpp"
 #include "console/web_api.hpp"
 #include "console/web_auth.hpp"
-#include "console/web_server.hpp"
 
 namespace azt::app {
 
@@ -31,7 +31,7 @@ class ConsoleServer {
   std::unique_ptr<WebAuth> auth_;
   std::unique_ptr<DaemonConsole> console_;
   std::unique_ptr<WebApi> api_;
-  std::unique_ptr<WebServer> server_;
+  std::unique_ptr<linux_os::HttpServer> server_;
 };
 
 }  // namespace azt::app

@@ -13,14 +13,15 @@ namespace {
 
 using json = nlohmann::json;
 
-WebReply json_reply(unsigned status, const json& body) {
+linux_os::HttpReply json_reply(unsigned status, const json& body) {
   // Replace, never throw: whatever text reached the body (a header echoed in a message, a name
   // from a file), the answer is sent (issue 12 rows 1, 2 and 12).
-  return WebReply{
+  return linux_os::HttpReply{
       status, "application/json", body.dump(-1, ' ', false, json::error_handler_t::replace), {}};
 }
 
-WebReply error_reply(unsigned status, const std::string& message, const std::string& field = "") {
+linux_os::HttpReply error_reply(unsigned status, const std::string& message,
+                                const std::string& field = "") {
   json body{{"error", message}};
   if (!field.empty()) body["field"] = field;
   return json_reply(status, body);
@@ -89,20 +90,21 @@ bool WebApi::host_allowed(const std::string& host) const {
                      [&name](const std::string& h) { return lower(h) == name; });
 }
 
-bool WebApi::origin_matches(const WebRequest& request) {
+bool WebApi::origin_matches(const linux_os::HttpRequest& request) {
   // Non-browser clients send no Origin; browsers always do on POST and WebSocket upgrades, so a
   // page from elsewhere is always caught here.
   if (request.origin.empty()) return true;
   return request.origin == "http://" + request.host || request.origin == "https://" + request.host;
 }
 
-std::optional<WebReply> WebApi::check_upgrade(const WebRequest& request) const {
+std::optional<linux_os::HttpReply> WebApi::check_upgrade(
+    const linux_os::HttpRequest& request) const {
   if (!host_allowed(request.host)) return error_reply(403, "Host not allowed");
   if (!origin_matches(request)) return error_reply(403, "cross-origin WebSocket refused");
   return std::nullopt;
 }
 
-void WebApi::handle(const WebRequest& request, const Respond& respond) {
+void WebApi::handle(const linux_os::HttpRequest& request, const Respond& respond) {
   if (!host_allowed(request.host)) {
     respond(error_reply(
         403, "Host '" + request.host + "' is not allowed: add it to [web] allowed_hosts"));
@@ -124,7 +126,7 @@ void WebApi::handle(const WebRequest& request, const Respond& respond) {
   }
 }
 
-WebReply WebApi::handle_get(const WebRequest& request) {
+linux_os::HttpReply WebApi::handle_get(const linux_os::HttpRequest& request) {
   const std::string& p = request.path;
   if (p == "/api/state") return json_reply(200, model_.state());
   if (p == "/api/config") return json_reply(200, model_.config());
@@ -140,12 +142,12 @@ WebReply WebApi::handle_get(const WebRequest& request) {
     return json_reply(200, body);
   }
   if (const WebAsset* asset = find_web_asset(p == "/" ? "/index.html" : p)) {
-    return WebReply{200, std::string(asset->content_type), std::string(asset->body), {}};
+    return linux_os::HttpReply{200, std::string(asset->content_type), std::string(asset->body), {}};
   }
   return error_reply(404, "no such page: " + p);
 }
 
-std::optional<WebReply> WebApi::authorize(const WebRequest& request) const {
+std::optional<linux_os::HttpReply> WebApi::authorize(const linux_os::HttpRequest& request) const {
   if (!origin_matches(request)) return error_reply(403, "cross-origin request refused");
   if (request.authorization.rfind("Bearer ", 0) == 0) {
     if (auth_.bearer_ok(std::string_view(request.authorization).substr(7))) return std::nullopt;
@@ -159,14 +161,14 @@ std::optional<WebReply> WebApi::authorize(const WebRequest& request) const {
   return std::nullopt;
 }
 
-bool WebApi::has_session(const WebRequest& request) const {
+bool WebApi::has_session(const linux_os::HttpRequest& request) const {
   if (request.authorization.rfind("Bearer ", 0) == 0) {
     return auth_.bearer_ok(std::string_view(request.authorization).substr(7));
   }
   return auth_.csrf_of(cookie_value(request.cookie, "azt_session"), now_()).has_value();
 }
 
-void WebApi::login(const WebRequest& request, const Respond& respond) {
+void WebApi::login(const linux_os::HttpRequest& request, const Respond& respond) {
   if (!origin_matches(request)) {
     respond(error_reply(403, "cross-origin request refused"));
     return;
@@ -180,8 +182,9 @@ void WebApi::login(const WebRequest& request, const Respond& respond) {
   const auto ticket = auth_.begin_login(request.client, now_());
   if (ticket.outcome != WebAuth::LoginOutcome::Checking) {
     const bool busy = ticket.outcome == WebAuth::LoginOutcome::Busy;
-    WebReply r = error_reply(busy ? 503 : 429, busy ? "busy checking other logins: try again"
-                                                    : "too many failed logins: try again later");
+    linux_os::HttpReply r =
+        error_reply(busy ? 503 : 429, busy ? "busy checking other logins: try again"
+                                           : "too many failed logins: try again later");
     r.headers.emplace_back("Retry-After",
                            std::to_string(static_cast<long>(std::ceil(ticket.retry_after_s))));
     respond(r);
@@ -199,14 +202,14 @@ void WebApi::login(const WebRequest& request, const Respond& respond) {
           respond(error_reply(401, "wrong password", "password"));
           return;
         }
-        WebReply r = json_reply(200, json{{"ok", true}, {"csrf", result.csrf}});
+        linux_os::HttpReply r = json_reply(200, json{{"ok", true}, {"csrf", result.csrf}});
         r.headers.emplace_back(
             "Set-Cookie", "azt_session=" + result.session + "; HttpOnly; SameSite=Strict; Path=/");
         respond(r);
       });
 }
 
-void WebApi::handle_action(const WebRequest& request, const Respond& respond) {
+void WebApi::handle_action(const linux_os::HttpRequest& request, const Respond& respond) {
   if (request.path == "/api/login" && request.method == "POST") {
     login(request, respond);
     return;
@@ -217,7 +220,7 @@ void WebApi::handle_action(const WebRequest& request, const Respond& respond) {
   }
   if (request.path == "/api/logout" && request.method == "POST") {
     auth_.logout(cookie_value(request.cookie, "azt_session"));
-    WebReply r = json_reply(200, json{{"ok", true}});
+    linux_os::HttpReply r = json_reply(200, json{{"ok", true}});
     r.headers.emplace_back("Set-Cookie",
                            "azt_session=; HttpOnly; SameSite=Strict; Path=/; Max-Age=0");
     respond(r);

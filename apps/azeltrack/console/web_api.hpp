@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "azt/linux/http_server.hpp"
 #include "common/off_loop.hpp"
 #include "console/console_model.hpp"
 #include "console/web_auth.hpp"
-#include "console/web_server.hpp"
 
 namespace azt::app {
 
@@ -25,7 +25,7 @@ struct WebApiConfig {
 class WebApi {
  public:
   using Clock = std::function<double()>;  ///< monotonic seconds
-  using Respond = WebServer::Respond;
+  using Respond = linux_os::HttpServer::Respond;
 
   WebApi(ConsoleModel& model, WebAuth& auth, WebApiConfig config, Clock now,
          Offload offload = run_inline)
@@ -37,21 +37,21 @@ class WebApi {
 
   /// Answers `request` through `respond`, exactly once: at once, or later for what runs off the
   /// loop (a login's password check, a save). Never throws.
-  void handle(const WebRequest& request, const Respond& respond);
+  void handle(const linux_os::HttpRequest& request, const Respond& respond);
   /// The WebSocket upgrade: nullopt accepts it.
-  std::optional<WebReply> check_upgrade(const WebRequest& request) const;
+  std::optional<linux_os::HttpReply> check_upgrade(const linux_os::HttpRequest& request) const;
   /// Whether the request carries a valid session cookie or bearer token (no CSRF check): a
   /// logged-in console's connections are admitted where anonymous ones are capped.
-  [[nodiscard]] bool has_session(const WebRequest& request) const;
+  [[nodiscard]] bool has_session(const linux_os::HttpRequest& request) const;
 
  private:
-  WebReply handle_get(const WebRequest& request);
-  void handle_action(const WebRequest& request, const Respond& respond);
-  void login(const WebRequest& request, const Respond& respond);
+  linux_os::HttpReply handle_get(const linux_os::HttpRequest& request);
+  void handle_action(const linux_os::HttpRequest& request, const Respond& respond);
+  void login(const linux_os::HttpRequest& request, const Respond& respond);
   /// nullopt when the request may act; otherwise the 401/403 to send.
-  std::optional<WebReply> authorize(const WebRequest& request) const;
+  std::optional<linux_os::HttpReply> authorize(const linux_os::HttpRequest& request) const;
   [[nodiscard]] bool host_allowed(const std::string& host) const;
-  [[nodiscard]] static bool origin_matches(const WebRequest& request);
+  [[nodiscard]] static bool origin_matches(const linux_os::HttpRequest& request);
 
   ConsoleModel& model_;
   WebAuth& auth_;

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <deque>
 
+#include "tcp_listen.hpp"
+
 namespace azt::linux_os {
 
 namespace asio = boost::asio;
@@ -158,28 +160,12 @@ Result<std::unique_ptr<TcpProtocolServer>> TcpProtocolServer::open(
     unsigned short port, SessionFactory factory, ConnectionLog log, TcpServerLimits limits) {
   std::unique_ptr<TcpProtocolServer> server(
       new TcpProtocolServer(io, name, std::move(factory), std::move(log), limits));
-  boost::system::error_code ec;
-  const auto address = asio::ip::make_address(bind_address, ec);
-  if (ec) return fail(name + ": bind address '" + bind_address + "' is not an IP address");
-  const tcp::endpoint endpoint(address, port);
-  const auto where = name + " on " + bind_address + ":" + std::to_string(port);
-  if (server->acceptor_.open(endpoint.protocol(), ec); ec) {
-    return fail(where + ": " + ec.message());
-  }
-  server->acceptor_.set_option(tcp::acceptor::reuse_address(true), ec);
-  if (server->acceptor_.bind(endpoint, ec); ec) return fail(where + ": " + ec.message());
-  if (server->acceptor_.listen(asio::socket_base::max_listen_connections, ec); ec) {
-    return fail(where + ": " + ec.message());
-  }
+  if (auto ok = listen_on(server->acceptor_, name, bind_address, port); !ok) return ok.error();
   server->accept_next();
   return server;
 }
 
-unsigned short TcpProtocolServer::port() const {
-  boost::system::error_code ec;
-  const auto endpoint = acceptor_.local_endpoint(ec);
-  return ec ? 0 : endpoint.port();
-}
+unsigned short TcpProtocolServer::port() const { return bound_port(acceptor_); }
 
 std::size_t TcpProtocolServer::clients() const { return *live_; }
 

@@ -1,5 +1,7 @@
 #include "azt/linux/udp_datagram_server.hpp"
 
+#include "tcp_listen.hpp"
+
 namespace azt::linux_os {
 
 namespace asio = boost::asio;
@@ -27,11 +29,7 @@ Result<std::unique_ptr<UdpDatagramServer>> UdpDatagramServer::open(
   return server;
 }
 
-unsigned short UdpDatagramServer::port() const {
-  boost::system::error_code ec;
-  const auto endpoint = socket_.local_endpoint(ec);
-  return ec ? 0 : endpoint.port();
-}
+unsigned short UdpDatagramServer::port() const { return bound_port(socket_); }
 
 void UdpDatagramServer::close() {
   *alive_ = false;

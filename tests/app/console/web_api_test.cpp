@@ -56,21 +56,21 @@ struct Rig {
              }};
 
   /// The answer to `r`; status 0 while it has not come (a job still waiting).
-  WebReply handle(const WebRequest& r) {
-    auto reply = std::make_shared<WebReply>();
+  linux_os::HttpReply handle(const linux_os::HttpRequest& r) {
+    auto reply = std::make_shared<linux_os::HttpReply>();
     reply->status = 0;
-    api.handle(r, [reply](WebReply answer) { *reply = std::move(answer); });
+    api.handle(r, [reply](linux_os::HttpReply answer) { *reply = std::move(answer); });
     replies.push_back(reply);
     return *reply;
   }
   void run_jobs() {
     for (auto& [work, done] : std::exchange(jobs, {})) run_inline(work, done);
   }
-  std::vector<std::shared_ptr<WebReply>> replies;
+  std::vector<std::shared_ptr<linux_os::HttpReply>> replies;
 
-  static WebRequest request(const std::string& method, const std::string& path,
-                            const std::string& body = "") {
-    WebRequest r;
+  static linux_os::HttpRequest request(const std::string& method, const std::string& path,
+                                       const std::string& body = "") {
+    linux_os::HttpRequest r;
     r.method = method;
     r.path = path;
     r.body = body;
@@ -80,7 +80,8 @@ struct Rig {
   }
   /// Logs in; returns the cookie header and the CSRF token.
   std::pair<std::string, std::string> login() {
-    const WebReply r = handle(request("POST", "/api/login", json{{"password", kPassword}}.dump()));
+    const linux_os::HttpReply r =
+        handle(request("POST", "/api/login", json{{"password", kPassword}}.dump()));
     EXPECT_EQ(r.status, 200U) << r.body;
     std::string cookie;
     for (const auto& [name, value] : r.headers) {
@@ -95,8 +96,8 @@ TEST(WebApi, ReadingIsOpenToEveryone) {
   Rig rig;
   EXPECT_EQ(rig.handle(Rig::request("GET", "/api/state")).status, 200U);
   EXPECT_EQ(rig.handle(Rig::request("GET", "/api/config")).status, 200U);
-  const WebReply sky = rig.handle([] {
-    WebRequest r = Rig::request("GET", "/api/sky");
+  const linux_os::HttpReply sky = rig.handle([] {
+    linux_os::HttpRequest r = Rig::request("GET", "/api/sky");
     r.query = "hours=99";
     return r;
   }());
@@ -122,7 +123,7 @@ TEST(WebApi, ActionsWithoutLoginAre401AndDoNothing) {
 TEST(WebApi, SessionNeedsTheCsrfTokenAndTheSameOrigin) {
   Rig rig;
   const auto [cookie, csrf] = rig.login();
-  WebRequest r = Rig::request("POST", "/api/stop");
+  linux_os::HttpRequest r = Rig::request("POST", "/api/stop");
   r.cookie = "theme=dark; " + cookie;
   EXPECT_EQ(rig.handle(r).status, 403U);  // no token
   r.csrf = csrf.substr(0, 10);
@@ -142,7 +143,7 @@ TEST(WebApi, SessionNeedsTheCsrfTokenAndTheSameOrigin) {
 
 TEST(WebApi, BearerTokensMustMatchExactly) {
   Rig rig;
-  WebRequest r = Rig::request("POST", "/api/target", "{\"name\":\"moon\"}");
+  linux_os::HttpRequest r = Rig::request("POST", "/api/target", "{\"name\":\"moon\"}");
   for (const std::string& wrong : {std::string(), rig.token.substr(0, 8), rig.token + "x",
                                    std::string(rig.token.size(), '0'), "Bearer " + rig.token}) {
     r.authorization = "Bearer " + wrong;
@@ -177,16 +178,17 @@ TEST(WebApi, BruteForceIsSlowedThenBlocked) {
   rig.now_s += 3600.0;
   EXPECT_EQ(attempt(kPassword), 200U);
   // Another address is not affected by this one's failures.
-  WebRequest other = Rig::request("POST", "/api/login", json{{"password", kPassword}}.dump());
+  linux_os::HttpRequest other =
+      Rig::request("POST", "/api/login", json{{"password", kPassword}}.dump());
   other.client = "192.0.2.8";
   EXPECT_EQ(rig.handle(other).status, 200U);
 }
 
 TEST(WebApi, BadValuesAndBodiesAre400NamingTheField) {
   Rig rig;
-  WebRequest r = Rig::request("PUT", "/api/config/station", "{\"grid\":\"ZZ99\"}");
+  linux_os::HttpRequest r = Rig::request("PUT", "/api/config/station", "{\"grid\":\"ZZ99\"}");
   r.authorization = "Bearer " + rig.token;
-  const WebReply bad = rig.handle(r);
+  const linux_os::HttpReply bad = rig.handle(r);
   EXPECT_EQ(bad.status, 400U);
   EXPECT_EQ(json::parse(bad.body)["field"], "grid");
   r.body = "{not json";
@@ -200,7 +202,7 @@ TEST(WebApi, BadValuesAndBodiesAre400NamingTheField) {
 
 TEST(WebApi, ForeignHostNamesAreRefusedAgainstDnsRebinding) {
   Rig rig;
-  WebRequest r = Rig::request("GET", "/api/state");
+  linux_os::HttpRequest r = Rig::request("GET", "/api/state");
   r.host = "attacker.example:8080";
   EXPECT_EQ(rig.handle(r).status, 403U);
   r.host = "shack.local:8080";  // configured in allowed_hosts
@@ -213,7 +215,7 @@ TEST(WebApi, ForeignHostNamesAreRefusedAgainstDnsRebinding) {
 
 TEST(WebApi, WebSocketUpgradeChecksOriginAndHost) {
   Rig rig;
-  WebRequest r = Rig::request("GET", "/ws");
+  linux_os::HttpRequest r = Rig::request("GET", "/ws");
   r.websocket = true;
   r.origin = "http://127.0.0.1:8080";
   EXPECT_FALSE(rig.api.check_upgrade(r).has_value());
@@ -225,11 +227,11 @@ TEST(WebApi, WebSocketUpgradeChecksOriginAndHost) {
 TEST(WebApi, LogoutEndsTheSessionAndSessionsExpire) {
   Rig rig;
   auto [cookie, csrf] = rig.login();
-  WebRequest r = Rig::request("POST", "/api/stop");
+  linux_os::HttpRequest r = Rig::request("POST", "/api/stop");
   r.cookie = cookie;
   r.csrf = csrf;
   EXPECT_EQ(rig.handle(r).status, 200U);
-  WebRequest out = r;
+  linux_os::HttpRequest out = r;
   out.path = "/api/logout";
   EXPECT_EQ(rig.handle(out).status, 200U);
   EXPECT_EQ(rig.handle(r).status, 401U);
@@ -260,7 +262,8 @@ TEST(WebApi, PasswordChecksAreBoundedWhateverTheAddresses) {
   Rig rig;
   rig.defer = true;
   for (int i = 0; i < 3; ++i) {
-    WebRequest r = Rig::request("POST", "/api/login", json{{"password", "guess"}}.dump());
+    linux_os::HttpRequest r =
+        Rig::request("POST", "/api/login", json{{"password", "guess"}}.dump());
     r.client = "198.51.100." + std::to_string(i);
     rig.handle(r);
   }
@@ -281,7 +284,8 @@ TEST(WebApi, PasswordChecksAreBoundedWhateverTheAddresses) {
 TEST(WebApi, TheFailedLoginTableForgetsAddressesAfterAnHour) {
   Rig rig;
   for (int i = 0; i < 20; ++i) {  // each a real Argon2id check (~0.1 s)
-    WebRequest r = Rig::request("POST", "/api/login", json{{"password", "guess"}}.dump());
+    linux_os::HttpRequest r =
+        Rig::request("POST", "/api/login", json{{"password", "guess"}}.dump());
     r.client = "203.0.113." + std::to_string(i);
     EXPECT_EQ(rig.handle(r).status, 401U);
   }
@@ -295,9 +299,9 @@ TEST(WebApi, TextThatIsNotUtf8IsAnsweredNeverThrown) {
   // Issue 12 rows 1 and 12: a Latin-1 Host and a path with a stray byte. The transport makes
   // text valid before it gets here; the API must not throw even if it did not.
   Rig rig;
-  WebRequest r = Rig::request("GET", "/api/state");
+  linux_os::HttpRequest r = Rig::request("GET", "/api/state");
   r.host = "caf\xe9";
-  WebReply reply = rig.handle(r);
+  linux_os::HttpReply reply = rig.handle(r);
   EXPECT_EQ(reply.status, 403U);
   EXPECT_FALSE(json::parse(reply.body, nullptr, false).is_discarded()) << reply.body;
   reply = rig.handle(Rig::request("GET", "/\xff"));
@@ -308,10 +312,10 @@ TEST(WebApi, TextThatIsNotUtf8IsAnsweredNeverThrown) {
 TEST(WebApi, ARefusalFoundAfterTheAnswerWasDeferredIsSent) {
   Rig rig;
   const auto [cookie, csrf] = rig.login();
-  WebRequest r = Rig::request("PUT", "/api/config/park", "{\"slot\":1}");
+  linux_os::HttpRequest r = Rig::request("PUT", "/api/config/park", "{\"slot\":1}");
   r.cookie = cookie;
   r.csrf = csrf;
-  const WebReply reply = rig.handle(r);
+  const linux_os::HttpReply reply = rig.handle(r);
   EXPECT_EQ(reply.status, 503U);
   EXPECT_EQ(json::parse(reply.body)["field"], "slot");
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The console's HTTP and WebSocket transport (Boost.Beast on the daemon's io_context). It knows
-// nothing of the API: every request goes to a handler as a WebRequest (its text made valid UTF-8
+// nothing of the API: every request goes to a handler as a HttpRequest (its text made valid UTF-8
 // first), and WebSocket clients get the same state text pushed at a fixed period. Bounded: 64 KiB
 // bodies (413), 8 KiB headers (431), 30 s idle HTTP connections, one pending frame per slow
 // WebSocket client (older frames are dropped, never queued).
@@ -23,9 +23,9 @@
 #include "azt/linux/asio.hpp"
 #include "azt/util/result.hpp"
 
-namespace azt::app {
+namespace azt::linux_os {
 
-struct WebRequest {
+struct HttpRequest {
   std::string method;  ///< "GET", "POST", …
   std::string path;    ///< without the query
   std::string query;   ///< after '?', undecoded
@@ -39,22 +39,22 @@ struct WebRequest {
   bool websocket = false;     ///< an upgrade request for /ws
 };
 
-struct WebReply {
+struct HttpReply {
   unsigned status = 200;
   std::string content_type = "application/json";
   std::string body;
   std::vector<std::pair<std::string, std::string>> headers;
 };
 
-class WebServer {
+class HttpServer {
  public:
-  using Respond = std::function<void(WebReply)>;
+  using Respond = std::function<void(HttpReply)>;
   /// Answers through `respond` exactly once, at once or later (on the same thread).
-  using Handler = std::function<void(const WebRequest&, const Respond&)>;
+  using Handler = std::function<void(const HttpRequest&, const Respond&)>;
   /// For an upgrade request: nullopt to accept the WebSocket, or the refusal to send.
-  using UpgradeCheck = std::function<std::optional<WebReply>(const WebRequest&)>;
+  using UpgradeCheck = std::function<std::optional<HttpReply>(const HttpRequest&)>;
   /// Whether a request shows a valid session (cookie or bearer token).
-  using SessionCheck = std::function<bool(const WebRequest&)>;
+  using SessionCheck = std::function<bool(const HttpRequest&)>;
   using StateText = std::function<std::string()>;
   using Log = std::function<void(const std::string&)>;
 
@@ -72,13 +72,13 @@ class WebServer {
   /// Live views of any kind: the other half of kMaxConnections stays for requests.
   static constexpr std::size_t kMaxWebSockets = 64;
 
-  static Result<std::unique_ptr<WebServer>> open(boost::asio::io_context& io,
-                                                 const std::string& bind_address,
-                                                 unsigned short port, Callbacks callbacks,
-                                                 double push_period_s);
-  ~WebServer();
-  WebServer(const WebServer&) = delete;
-  WebServer& operator=(const WebServer&) = delete;
+  static Result<std::unique_ptr<HttpServer>> open(boost::asio::io_context& io,
+                                                  const std::string& bind_address,
+                                                  unsigned short port, Callbacks callbacks,
+                                                  double push_period_s);
+  ~HttpServer();
+  HttpServer(const HttpServer&) = delete;
+  HttpServer& operator=(const HttpServer&) = delete;
 
   /// Pushes the state to every WebSocket client now (after a change), besides the periodic push.
   void push_now();
@@ -91,7 +91,7 @@ class WebServer {
   struct Shared;  ///< what sessions share with the server (outlives it while they run)
 
  private:
-  WebServer(boost::asio::io_context& io, std::shared_ptr<Shared> shared, double push_period_s);
+  HttpServer(boost::asio::io_context& io, std::shared_ptr<Shared> shared, double push_period_s);
   void accept_next();
   /// Caps and eviction (the class comment), then an HttpSession for `socket`.
   void admit(boost::asio::ip::tcp::socket socket);
@@ -104,4 +104,4 @@ class WebServer {
   std::shared_ptr<Shared> shared_;
 };
 
-}  // namespace azt::app
+}  // namespace azt::linux_os

@@ -1,4 +1,4 @@
-#include "console/web_server.hpp"
+#include "azt/linux/http_server.hpp"
 
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
@@ -8,11 +8,12 @@
 #include <chrono>
 #include <optional>
 
+#include "azt/linux/http_request.hpp"
 #include "azt/util/quote.hpp"
 #include "azt/util/valid_utf8.hpp"
-#include "console/web_request.hpp"
+#include "tcp_listen.hpp"
 
-namespace azt::app {
+namespace azt::linux_os {
 
 namespace asio = boost::asio;
 namespace beast = boost::beast;
@@ -49,7 +50,7 @@ class WebConnection {
   bool websocket = false;
 };
 
-struct WebServer::Shared {
+struct HttpServer::Shared {
   Callbacks callbacks;
   std::vector<std::weak_ptr<WebConnection>> connections;  ///< oldest first
   std::vector<std::weak_ptr<WsSession>> ws;
@@ -71,7 +72,7 @@ struct WebServer::Shared {
 
 namespace {
 
-http::response<http::string_body> to_response(const WebReply& reply, unsigned version,
+http::response<http::string_body> to_response(const HttpReply& reply, unsigned version,
                                               bool keep_alive) {
   http::response<http::string_body> res{static_cast<http::status>(reply.status), version};
   res.set(http::field::server, "azeltrack");
@@ -92,15 +93,15 @@ http::response<http::string_body> to_response(const WebReply& reply, unsigned ve
 }
 
 /// For the transport's own refusals: `message` is a constant of this file (no quoting needed).
-WebReply plain_error(unsigned status, const std::string& message) {
-  return WebReply{status, "application/json", "{\"error\":\"" + message + "\"}", {}};
+HttpReply plain_error(unsigned status, const std::string& message) {
+  return HttpReply{status, "application/json", "{\"error\":\"" + message + "\"}", {}};
 }
 
 /// One WebSocket client: receives the pushed state; what it sends is read and ignored (a read
 /// must be pending to notice a close). A slow client keeps only the newest frame pending.
 class WsSession : public WebConnection, public std::enable_shared_from_this<WsSession> {
  public:
-  WsSession(tcp::socket socket, std::shared_ptr<WebServer::Shared> shared)
+  WsSession(tcp::socket socket, std::shared_ptr<HttpServer::Shared> shared)
       : ws_(std::move(socket)), shared_(std::move(shared)) {
     websocket = true;
   }
@@ -162,7 +163,7 @@ class WsSession : public WebConnection, public std::enable_shared_from_this<WsSe
   }
 
   websocket::stream<beast::tcp_stream> ws_;
-  std::shared_ptr<WebServer::Shared> shared_;
+  std::shared_ptr<HttpServer::Shared> shared_;
   beast::flat_buffer in_;
   std::shared_ptr<const std::string> current_;
   std::shared_ptr<const std::string> next_;
@@ -173,7 +174,7 @@ class WsSession : public WebConnection, public std::enable_shared_from_this<WsSe
 /// One HTTP connection: requests in order, keep-alive, an upgrade hands the socket to WsSession.
 class HttpSession : public WebConnection, public std::enable_shared_from_this<HttpSession> {
  public:
-  HttpSession(tcp::socket socket, std::shared_ptr<WebServer::Shared> shared, std::string address)
+  HttpSession(tcp::socket socket, std::shared_ptr<HttpServer::Shared> shared, std::string address)
       : stream_(std::move(socket)), shared_(std::move(shared)) {
     peer = std::move(address);
   }
@@ -214,7 +215,7 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
       return;
     }
     http::request<http::string_body> req = parser_->release();
-    const WebRequest request = to_web_request(req, peer);
+    const HttpRequest request = to_http_request(req, peer);
     try {
       dispatch(req, request);
     } catch (const std::exception& e) {
@@ -225,7 +226,7 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
     }
   }
 
-  void dispatch(const http::request<http::string_body>& req, const WebRequest& request) {
+  void dispatch(const http::request<http::string_body>& req, const HttpRequest& request) {
     if (!has_session && shared_->callbacks.has_session(request)) has_session = true;
     if (request.websocket && request.path == "/ws") {
       upgrade(req, request);
@@ -233,24 +234,24 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
     }
     const unsigned version = req.version();
     const bool keep_alive = req.keep_alive();
-    shared_->callbacks.handler(request,
-                               [self = shared_from_this(), version, keep_alive](const WebReply& r) {
-                                 self->reply(r, version, keep_alive);
-                               });
+    shared_->callbacks.handler(
+        request, [self = shared_from_this(), version, keep_alive](const HttpReply& r) {
+          self->reply(r, version, keep_alive);
+        });
   }
 
-  void upgrade(const http::request<http::string_body>& req, const WebRequest& request) {
+  void upgrade(const http::request<http::string_body>& req, const HttpRequest& request) {
     if (auto refusal = shared_->callbacks.upgrade_check(request)) {
       reply(*refusal, req.version(), false);
       return;
     }
-    if (!has_session && shared_->anonymous_websockets() >= WebServer::kMaxAnonymousWebSockets) {
+    if (!has_session && shared_->anonymous_websockets() >= HttpServer::kMaxAnonymousWebSockets) {
       reply(plain_error(503, "too many live views without a login: log in to get one"),
             req.version(), false);
       return;
     }
     // Live views never take the slots that requests need: a STOP always finds a connection.
-    if (shared_->websockets() >= WebServer::kMaxWebSockets) {
+    if (shared_->websockets() >= HttpServer::kMaxWebSockets) {
       reply(plain_error(503, "too many live views open"), req.version(), false);
       return;
     }
@@ -262,7 +263,7 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
     ws->start(req);
   }
 
-  void reply(const WebReply& reply, unsigned version, bool keep_alive) {
+  void reply(const HttpReply& reply, unsigned version, bool keep_alive) {
     auto res = std::make_shared<http::response<http::string_body>>(
         to_response(reply, version, keep_alive));
     http::async_write(
@@ -277,14 +278,14 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
   }
 
   beast::tcp_stream stream_;
-  std::shared_ptr<WebServer::Shared> shared_;
+  std::shared_ptr<HttpServer::Shared> shared_;
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
 };
 
 }  // namespace
 
-void WebServer::Shared::prune() {
+void HttpServer::Shared::prune() {
   std::erase_if(connections, [](const auto& w) {
     const auto c = w.lock();
     return !c || !c->open();
@@ -292,30 +293,30 @@ void WebServer::Shared::prune() {
   std::erase_if(ws, [](const auto& w) { return w.expired(); });
 }
 
-std::size_t WebServer::Shared::live() {
+std::size_t HttpServer::Shared::live() {
   prune();
   return connections.size();
 }
 
-std::size_t WebServer::Shared::count(const std::function<bool(const WebConnection&)>& which) {
+std::size_t HttpServer::Shared::count(const std::function<bool(const WebConnection&)>& which) {
   prune();
   return static_cast<std::size_t>(std::count_if(connections.begin(), connections.end(),
                                                 [&](const auto& w) { return which(*w.lock()); }));
 }
 
-std::size_t WebServer::Shared::from(const std::string& peer) {
+std::size_t HttpServer::Shared::from(const std::string& peer) {
   return count([&](const WebConnection& c) { return c.peer == peer; });
 }
 
-std::size_t WebServer::Shared::websockets() {
+std::size_t HttpServer::Shared::websockets() {
   return count([](const WebConnection& c) { return c.websocket; });
 }
 
-std::size_t WebServer::Shared::anonymous_websockets() {
+std::size_t HttpServer::Shared::anonymous_websockets() {
   return count([](const WebConnection& c) { return c.websocket && !c.has_session; });
 }
 
-bool WebServer::Shared::evict_one_anonymous() {
+bool HttpServer::Shared::evict_one_anonymous() {
   prune();
   for (const auto& w : connections) {
     if (const auto c = w.lock(); !c->has_session) {
@@ -329,45 +330,31 @@ bool WebServer::Shared::evict_one_anonymous() {
   return false;
 }
 
-WebServer::WebServer(asio::io_context& io, std::shared_ptr<Shared> shared, double push_period_s)
+HttpServer::HttpServer(asio::io_context& io, std::shared_ptr<Shared> shared, double push_period_s)
     : acceptor_(io),
       push_timer_(io),
       push_period_(std::chrono::duration_cast<asio::steady_timer::duration>(
           std::chrono::duration<double>(push_period_s))),
       shared_(std::move(shared)) {}
 
-WebServer::~WebServer() { close(); }
+HttpServer::~HttpServer() { close(); }
 
-Result<std::unique_ptr<WebServer>> WebServer::open(asio::io_context& io,
-                                                   const std::string& bind_address,
-                                                   unsigned short port, Callbacks callbacks,
-                                                   double push_period_s) {
+Result<std::unique_ptr<HttpServer>> HttpServer::open(asio::io_context& io,
+                                                     const std::string& bind_address,
+                                                     unsigned short port, Callbacks callbacks,
+                                                     double push_period_s) {
   auto shared = std::make_shared<Shared>();
   shared->callbacks = std::move(callbacks);
-  std::unique_ptr<WebServer> server(new WebServer(io, shared, push_period_s));
-  boost::system::error_code ec;
-  const auto address = asio::ip::make_address(bind_address, ec);
-  if (ec) return fail("web: bind address '" + bind_address + "' is not an IP address");
-  const tcp::endpoint endpoint(address, port);
-  const auto where = "web on " + bind_address + ":" + std::to_string(port);
-  if (server->acceptor_.open(endpoint.protocol(), ec); ec) return fail(where + ": " + ec.message());
-  server->acceptor_.set_option(tcp::acceptor::reuse_address(true), ec);
-  if (server->acceptor_.bind(endpoint, ec); ec) return fail(where + ": " + ec.message());
-  if (server->acceptor_.listen(asio::socket_base::max_listen_connections, ec); ec) {
-    return fail(where + ": " + ec.message());
-  }
+  std::unique_ptr<HttpServer> server(new HttpServer(io, shared, push_period_s));
+  if (auto ok = listen_on(server->acceptor_, "web", bind_address, port); !ok) return ok.error();
   server->accept_next();
   server->arm_push();
   return server;
 }
 
-unsigned short WebServer::port() const {
-  boost::system::error_code ec;
-  const auto endpoint = acceptor_.local_endpoint(ec);
-  return ec ? 0 : endpoint.port();
-}
+unsigned short HttpServer::port() const { return bound_port(acceptor_); }
 
-std::size_t WebServer::websockets() const {
+std::size_t HttpServer::websockets() const {
   std::size_t n = 0;
   for (const auto& w : shared_->ws) {
     const auto s = w.lock();
@@ -376,9 +363,9 @@ std::size_t WebServer::websockets() const {
   return n;
 }
 
-std::size_t WebServer::connections() const { return shared_->live(); }
+std::size_t HttpServer::connections() const { return shared_->live(); }
 
-void WebServer::close() {
+void HttpServer::close() {
   if (shared_->closed) return;
   shared_->closed = true;
   boost::system::error_code ignored;
@@ -389,7 +376,7 @@ void WebServer::close() {
   }
 }
 
-void WebServer::accept_next() {
+void HttpServer::accept_next() {
   acceptor_.async_accept([this](boost::system::error_code ec, tcp::socket socket) {
     if (ec == asio::error::operation_aborted || shared_->closed) return;
     if (!ec) admit(std::move(socket));
@@ -397,7 +384,7 @@ void WebServer::accept_next() {
   });
 }
 
-void WebServer::admit(tcp::socket socket) {
+void HttpServer::admit(tcp::socket socket) {
   boost::system::error_code peer_ec;
   const auto peer = socket.remote_endpoint(peer_ec);
   const std::string address = peer_ec ? std::string("?") : peer.address().to_string();
@@ -419,7 +406,7 @@ void WebServer::admit(tcp::socket socket) {
   session->start();
 }
 
-void WebServer::arm_push() {
+void HttpServer::arm_push() {
   push_timer_.expires_after(push_period_);
   push_timer_.async_wait([this](boost::system::error_code ec) {
     if (ec || shared_->closed) return;
@@ -428,11 +415,11 @@ void WebServer::arm_push() {
   });
 }
 
-void WebServer::push_now() {
+void HttpServer::push_now() {
   if (!shared_->closed) broadcast();
 }
 
-void WebServer::broadcast() {
+void HttpServer::broadcast() {
   std::erase_if(shared_->ws, [](const auto& w) { return w.expired(); });
   if (shared_->ws.empty()) return;
   // One serialisation per push, shared by every client.
@@ -442,4 +429,4 @@ void WebServer::broadcast() {
   }
 }
 
-}  // namespace azt::app
+}  // namespace azt::linux_os

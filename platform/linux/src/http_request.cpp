@@ -1,4 +1,4 @@
-#include "console/web_request.hpp"
+#include "azt/linux/http_request.hpp"
 
 #include <boost/beast/http/field.hpp>
 #include <boost/beast/websocket/rfc6455.hpp>
@@ -7,7 +7,7 @@
 
 #include "azt/util/valid_utf8.hpp"
 
-namespace azt::app {
+namespace azt::linux_os {
 
 namespace http = boost::beast::http;
 
@@ -27,8 +27,8 @@ std::string header(const http::request<http::string_body>& req, http::field f) {
 
 }  // namespace
 
-WebRequest to_web_request(const http::request<http::string_body>& req, const std::string& peer) {
-  WebRequest r;
+HttpRequest to_http_request(const http::request<http::string_body>& req, const std::string& peer) {
+  HttpRequest r;
   r.method = clean(req.method_string());
   const std::string target = clean(req.target());  // "/\xff" is a 404, not a crash
   const auto q = target.find('?');
@@ -45,4 +45,4 @@ WebRequest to_web_request(const http::request<http::string_body>& req, const std
   return r;
 }
 
-}  // namespace azt::app
+}  // namespace azt::linux_os
