@@ -16,8 +16,8 @@ class HamlibBackend final : public AntennaBackend {
   HamlibBackend(std::unique_ptr<linux_os::HamlibRotator> rotator, const DaemonConfig& config)
       : rotator_(std::move(rotator)),
         config_(config.hamlib),
-        az_range_(config.sim.setup.az_range),
-        el_range_(config.sim.setup.el_range),
+        az_range_(config.sim.setup.station.az_range),
+        el_range_(config.sim.setup.station.el_range),
         stale_s_(std::max(1.0, 5.0 * config.hamlib.poll_s)) {}
 
   void tick(double /*now_s*/, const control::Demand& demand,

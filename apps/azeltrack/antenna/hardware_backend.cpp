@@ -10,8 +10,8 @@
 #include "antenna/axis_io.hpp"
 #include "antenna/controller_reports.hpp"
 #include "azt/control/station_controller.hpp"
+#include "azt/control/station_setup.hpp"
 #include "azt/linux/hub_serial_link.hpp"
-#include "azt/sim/station_sim.hpp"
 #include "common/usage_error.hpp"
 
 namespace azt::app {
@@ -30,7 +30,7 @@ control::AxisDriveConfig drive_config(const HardwareAxisConfig& a) {
 }
 
 control::StationControlConfig control_config(const DaemonConfig& config) {
-  control::StationControlConfig c = sim::station_control_config(config.sim.setup);
+  control::StationControlConfig c = config.sim.setup.station.control_config();
   c.az_drive = drive_config(config.hardware.az);
   c.el_drive = drive_config(config.hardware.el);
   c.az_absolute = config.hardware.az.sensor != AxisSensorKind::Hub;
@@ -50,7 +50,7 @@ class HardwareBackend final : public AntennaBackend {
         station_(control_config(config), control::AzEl{config.sim.setup.az_plant.start_deg,
                                                        config.sim.setup.el_plant.start_deg}),
         hub_device_(config.hub.device) {
-    station_.set_corrections(config.sim.setup.corrections);
+    station_.set_corrections(config.sim.setup.station.corrections);
     // Sensors first, then drives: a drive is only ever opened once everything it needs exists.
     for (const HardwareAxisConfig* a : {&config.hardware.az, &config.hardware.el}) {
       if (a->sensor != AxisSensorKind::Hub) sensors_.at(index(*a)) = make_adc_sensor(*a, ports_);

@@ -20,7 +20,7 @@ class SimBackend final : public AntennaBackend {
         antenna_(s.az_plant, s.el_plant, s.frame_version, s.link, s.seed),
         station_(sim::station_control_config(s),
                  control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg}) {
-    station_.set_corrections(s.corrections);
+    station_.set_corrections(s.station.corrections);
   }
 
   void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) override {

@@ -148,7 +148,7 @@ int run_simulate(const SimulateOptions& o) {
     const control::AzEl to{parse_number_option("--to-az", o.to_az),
                            parse_number_option("--to-el", o.to_el)};
     if (to.az_deg < 0.0 || to.az_deg >= 360.0 ||
-        !control::plan_elevation(to.el_deg, config.setup.el_range)) {
+        !control::plan_elevation(to.el_deg, config.setup.station.el_range)) {
       throw UsageError("--to-az must be 0..360 and --to-el inside the elevation range");
     }
     result = sim::simulate_slew(config.setup, to, 3600.0);

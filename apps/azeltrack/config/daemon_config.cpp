@@ -216,9 +216,10 @@ PwmConfig read_pwm(const ConfigSection& s) {
 /// Four slots: the configured [[park]] entries in order, the rest from defaults inside the travel.
 std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
     const ConfigFile& file, const sim::StationSimSetup& setup) {
-  const double el_low = setup.el_range.min_deg;
-  const double el_high = std::min(90.0, setup.el_range.max_deg);
-  const control::AzEl first = setup.park_when_out_of_range.value_or(control::AzEl{180.0, el_low});
+  const double el_low = setup.station.el_range.min_deg;
+  const double el_high = std::min(90.0, setup.station.el_range.max_deg);
+  const control::AzEl first =
+      setup.station.park_when_out_of_range.value_or(control::AzEl{180.0, el_low});
   std::array<control::ParkSlot, control::ModeController::kParkSlots> slots = {{
       {"park", first},
       {"stow", {180.0, el_high}},
@@ -235,7 +236,7 @@ std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
     if (slot.position.az_deg < 0.0 || slot.position.az_deg >= 360.0) {
       s.fail("az_deg", "must be 0 to 360");
     }
-    if (!control::plan_elevation(slot.position.el_deg, setup.el_range)) {
+    if (!control::plan_elevation(slot.position.el_deg, setup.station.el_range)) {
       s.fail("el_deg", "must be inside [geometry] el_min_deg..el_max_deg");
     }
     slots[i] = slot;
@@ -260,10 +261,10 @@ void check_relay_lines(const DaemonConfig& c, const ConfigSection& antenna) {
 
 proto::TargetLimits DaemonConfig::target_limits() const {
   proto::TargetLimits l;
-  l.az_min_deg = std::min(-180.0, sim.setup.az_range.min_deg);
-  l.az_max_deg = std::max(450.0, sim.setup.az_range.max_deg);
-  l.el_min_deg = sim.setup.el_range.min_deg;
-  l.el_max_deg = sim.setup.el_range.max_deg;
+  l.az_min_deg = std::min(-180.0, sim.setup.station.az_range.min_deg);
+  l.az_max_deg = std::max(450.0, sim.setup.station.az_range.max_deg);
+  l.el_min_deg = sim.setup.station.el_range.min_deg;
+  l.el_max_deg = sim.setup.station.el_range.max_deg;
   return l;
 }
 
@@ -338,7 +339,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.web = read_web(
       file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));
   c.park = read_park(file, c.sim.setup);
-  if (c.sim.setup.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
+  if (c.sim.setup.station.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
   const ConfigSection log = file.section("log", {"level"});
   c.log_level = log.text("level").value_or("info");
   if (c.log_level != "debug" && c.log_level != "info" && c.log_level != "warn") {

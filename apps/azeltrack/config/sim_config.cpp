@@ -61,8 +61,8 @@ void read_geometry(const ConfigSection& g, sim::StationSimSetup& setup) {
   auto el = control::ElevationRange::make(g.number("el_min_deg").value_or(0.0),
                                           g.number("el_max_deg").value_or(90.0));
   if (!el) g.fail("el_min_deg", el.error().message);
-  setup.az_range = *az;
-  setup.el_range = *el;
+  setup.station.az_range = *az;
+  setup.station.el_range = *el;
 }
 
 /// `[control] out_of_range = "hold" | "park"`, with the park position `park_az_deg`,
@@ -72,12 +72,12 @@ void read_out_of_range(const ConfigSection& c, sim::StationSimSetup& setup) {
   if (policy == "hold") return;
   if (policy != "park") c.fail("out_of_range", "must be \"hold\" or \"park\"");
   const control::AzEl park{c.number("park_az_deg").value_or(180.0),
-                           c.number("park_el_deg").value_or(setup.el_range.min_deg)};
+                           c.number("park_el_deg").value_or(setup.station.el_range.min_deg)};
   if (park.az_deg < 0.0 || park.az_deg >= 360.0 ||
-      !control::plan_elevation(park.el_deg, setup.el_range)) {
+      !control::plan_elevation(park.el_deg, setup.station.el_range)) {
     c.fail("park_az_deg", "park position must be az 0..360 and inside the elevation range");
   }
-  setup.park_when_out_of_range = park;
+  setup.station.park_when_out_of_range = park;
 }
 
 /// `fault = "frozen_shaft" | "reversed_motor" | "encoder_offset"` starting `fault_at_s` seconds
@@ -164,10 +164,10 @@ SimConfig sim_config_from(const ConfigFile& file) {
   el_defaults.max_deg = 90.0;
   read_geometry(file.section("geometry", {"az_min_deg", "az_max_deg", "el_min_deg", "el_max_deg"}),
                 setup);
-  az_defaults.min_deg = setup.az_range.min_deg;
-  az_defaults.max_deg = setup.az_range.max_deg;
-  el_defaults.min_deg = setup.el_range.min_deg;
-  el_defaults.max_deg = setup.el_range.max_deg;
+  az_defaults.min_deg = setup.station.az_range.min_deg;
+  az_defaults.max_deg = setup.station.az_range.max_deg;
+  el_defaults.min_deg = setup.station.el_range.min_deg;
+  el_defaults.max_deg = setup.station.el_range.max_deg;
   setup.az_plant = read_plant(sim_section.child("az", plant_keys), config.mount.az, az_defaults);
   setup.el_plant = read_plant(sim_section.child("el", plant_keys), config.mount.el, el_defaults);
   read_plant_fault(sim_section.child("az", plant_keys), true, setup);
@@ -177,18 +177,18 @@ SimConfig sim_config_from(const ConfigFile& file) {
       file.section("control", {"window_deg", "ramp_s", "tracking_speed", "fast_zone_deg", "lead",
                                "tick_hz", "out_of_range", "park_az_deg", "park_el_deg"});
   read_out_of_range(control, setup);
-  setup.az_control = control_for(control, config.mount.az);
-  setup.el_control = control_for(control, config.mount.el);
-  setup.az_supervisor = supervisor_for(config.mount.az);
-  setup.el_supervisor = supervisor_for(config.mount.el);
+  setup.station.az_control = control_for(control, config.mount.az);
+  setup.station.el_control = control_for(control, config.mount.el);
+  setup.station.az_supervisor = supervisor_for(config.mount.az);
+  setup.station.el_supervisor = supervisor_for(config.mount.el);
   const double tick_hz = control.number("tick_hz").value_or(20.0);
   if (tick_hz < 1.0 || tick_hz > 200.0) control.fail("tick_hz", "must be 1 to 200");
-  setup.tick_s = 1.0 / tick_hz;
+  setup.station.tick_s = 1.0 / tick_hz;
   // R01: motors off within 200 ms of the last valid reading. A silence is noticed at a tick, up
   // to one tick after it passes the threshold, so the threshold leaves room for one tick.
-  setup.az_supervisor.stale_s = std::max(0.1, 0.2 - setup.tick_s);
-  setup.el_supervisor.stale_s = setup.az_supervisor.stale_s;
-  setup.corrections =
+  setup.station.az_supervisor.stale_s = std::max(0.1, 0.2 - setup.station.tick_s);
+  setup.station.el_supervisor.stale_s = setup.station.az_supervisor.stale_s;
+  setup.station.corrections =
       read_corrections(file.section("corrections", {"az_offset_deg", "el_offset_deg", "az_user_deg",
                                                     "el_user_deg", "tilt_el_deg"}));
   return config;

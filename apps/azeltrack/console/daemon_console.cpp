@@ -187,7 +187,7 @@ json DaemonConsole::state() {
              {"el", target["el_deg"].get<double>() - here->el_deg}};
   }
   const Snapshot& sky = snapshot();
-  const auto& c = p_.config.sim.setup.corrections;
+  const auto& c = p_.config.sim.setup.station.corrections;
   const auto& obs = p_.config.sim.station.sky.observer;
   return {{"utc", utc_text(p_.unix_s())},
           {"mode", std::string(control::to_string(p_.modes.mode()))},
@@ -218,7 +218,7 @@ json DaemonConsole::state() {
 
 json DaemonConsole::config() {
   const DaemonConfig& c = p_.config;
-  const auto& corr = c.sim.setup.corrections;
+  const auto& corr = c.sim.setup.station.corrections;
   const auto& obs = c.sim.station.sky.observer;
   json park = json::array();
   for (std::size_t i = 0; i < p_.modes.park_slots().size(); ++i) {
@@ -241,14 +241,14 @@ json DaemonConsole::config() {
       {"band", c.sim.station.band_name},
       {"dx_grid", c.sim.station.sky.dx_grid},
       {"control",
-       {{"window_deg", c.sim.setup.az_control.window_deg},
-        {"ramp_s", c.sim.setup.az_control.ramp_s},
-        {"tracking_speed", c.sim.setup.az_control.tracking_speed}}},
+       {{"window_deg", c.sim.setup.station.az_control.window_deg},
+        {"ramp_s", c.sim.setup.station.az_control.ramp_s},
+        {"tracking_speed", c.sim.setup.station.az_control.tracking_speed}}},
       {"geometry",
-       {{"az_min_deg", c.sim.setup.az_range.min_deg},
-        {"az_max_deg", c.sim.setup.az_range.max_deg},
-        {"el_min_deg", c.sim.setup.el_range.min_deg},
-        {"el_max_deg", c.sim.setup.el_range.max_deg}}},
+       {{"az_min_deg", c.sim.setup.station.az_range.min_deg},
+        {"az_max_deg", c.sim.setup.station.az_range.max_deg},
+        {"el_min_deg", c.sim.setup.station.el_range.min_deg},
+        {"el_max_deg", c.sim.setup.station.el_range.max_deg}}},
       {"corrections",
        {{"az_offset_deg", corr.offsets.az_deg},
         {"el_offset_deg", corr.offsets.el_deg},
@@ -335,7 +335,7 @@ ApiError DaemonConsole::save_refusal(const std::string& field, std::string messa
 }
 
 void DaemonConsole::apply_corrections(const control::PositionCorrections& corrections) {
-  p_.config.sim.setup.corrections = corrections;
+  p_.config.sim.setup.station.corrections = corrections;
   (void)p_.antenna.set_corrections(corrections);
 }
 
@@ -429,7 +429,7 @@ void DaemonConsole::act_correction(const json& body, ActDone done) {
         t.insert_or_assign(axis + "_user_deg", axis == "az" ? user.az_deg() : user.el_deg());
       },
       [this] {
-        const auto& c = p_.store.config().sim.setup.corrections;
+        const auto& c = p_.store.config().sim.setup.station.corrections;
         apply_corrections(c);
         return json{{"az_user_deg", c.user.az_deg()}, {"el_user_deg", c.user.el_deg()}};
       },
@@ -518,7 +518,7 @@ void DaemonConsole::act_offsets(const json& body, ActDone done) {
         if (el) t.insert_or_assign("el_offset_deg", *el);
       },
       [this] {
-        apply_corrections(p_.store.config().sim.setup.corrections);
+        apply_corrections(p_.store.config().sim.setup.station.corrections);
         return json::object();
       },
       std::move(done));
@@ -564,7 +564,7 @@ void DaemonConsole::act_tilt(const json& body, ActDone done) {
         t.insert_or_assign("tilt_el_deg", a);
       },
       [this] {
-        apply_corrections(p_.store.config().sim.setup.corrections);
+        apply_corrections(p_.store.config().sim.setup.station.corrections);
         return json::object();
       },
       std::move(done));

@@ -65,7 +65,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       start_(SteadyClock::now()),
       ephemeris_(open_ephemeris(config_.sim.station.sky.ephemeris)),
       sky_(*ephemeris_, config_.sim.station),
-      modes_(config_.park, config_.out_of_range, config_.sim.setup.el_range.min_deg),
+      modes_(config_.park, config_.out_of_range, config_.sim.setup.station.el_range.min_deg),
       gpio_(config_.gpio.any_line() || config_.hardware.uses_gpio()
                 ? linux_os::make_libgpiod_provider(io_)
                 : nullptr),
@@ -73,7 +73,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       antenna_(make_guarded(make_backend())),
       satellites_(satellite_settings(), [](const std::string& line) { spdlog::info("{}", line); }),
       commands_(StationCommandParts{modes_, *antenna_, sky_, &satellites_, config_.target_limits(),
-                                    config_.sim.setup.el_range, [this] { return now_s(); },
+                                    config_.sim.setup.station.el_range, [this] { return now_s(); },
                                     [] { return unix_now_s(); },
                                     config_.sim.setup.az_plant.start_deg,
                                     [this](const CommandSource& source, const std::string& what) {
@@ -91,7 +91,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       signals_(io_, SIGINT, SIGTERM, SIGHUP),
       timer_(io_),
       period_(std::chrono::duration_cast<SteadyClock::duration>(
-          std::chrono::duration<double>(config_.sim.setup.tick_s))) {}
+          std::chrono::duration<double>(config_.sim.setup.station.tick_s))) {}
 
 std::unique_ptr<AntennaBackend> StationDaemon::make_backend() {
   if (config_.backend == BackendKind::Hamlib) return make_hamlib_backend(config_);

@@ -66,8 +66,8 @@ std::vector<track::SkyPoint> synthetic_pass(const SyntheticPass& p) {
 
 track::MountGeometry mount_geometry(const StationSimSetup& setup) {
   track::MountGeometry m;
-  m.az = setup.az_range;
-  m.el = setup.el_range;
+  m.az = setup.station.az_range;
+  m.el = setup.station.el_range;
   m.max_az_rate_deg_s = setup.az_plant.max_rate_deg_s;
   m.max_el_rate_deg_s = setup.el_plant.max_rate_deg_s;
   return m;
@@ -79,8 +79,8 @@ Result<PassSimResult> simulate_pass(const std::vector<track::SkyPoint>& sky,
   auto plan = track::plan_pass(sky, mount, start.az_deg);
   if (!plan) return plan.error();
   StationSimSetup s = setup;
-  s.az_range = mount.az;
-  s.el_range = mount.el;
+  s.station.az_range = mount.az;
+  s.station.el_range = mount.el;
   s.az_plant.start_deg = start.az_deg;
   s.el_plant.start_deg = start.el_deg;
   s.az_plant.min_deg = mount.az.min_deg - 5.0;
@@ -99,7 +99,7 @@ Result<PassSimResult> simulate_pass(const std::vector<track::SkyPoint>& sky,
   }
   const double aos = sky.front().t_s;
   const double los = sky.back().t_s;
-  const double dt = s.tick_s;
+  const double dt = s.station.tick_s;
   double sum_sq = 0.0;
   std::size_t n = 0;
   std::size_t k = 0;  // the sky sample at or before t

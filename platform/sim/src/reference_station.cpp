@@ -22,8 +22,8 @@ StationSimSetup reference_station(int bits, double window_deg) {
     p->stiction_duty = 0.1;
     p->encoder_bits = static_cast<std::uint8_t>(bits);
   }
-  for (auto [c, p] :
-       {std::pair{&s.az_control, &s.az_plant}, std::pair{&s.el_control, &s.el_plant}}) {
+  for (auto [c, p] : {std::pair{&s.station.az_control, &s.az_plant},
+                      std::pair{&s.station.el_control, &s.el_plant}}) {
     c->window_deg = window_deg;
     c->lsb_deg = proto::hub_resolution_deg(p->encoder_bits);
     c->max_rate_deg_s = p->max_rate_deg_s;
@@ -31,10 +31,10 @@ StationSimSetup reference_station(int bits, double window_deg) {
     c->min_duty = p->stiction_duty;
     c->backlash_deg = p->backlash_deg;
   }
-  s.az_supervisor.max_rate_deg_s = s.az_plant.max_rate_deg_s;
-  s.el_supervisor.max_rate_deg_s = s.el_plant.max_rate_deg_s;
-  s.az_supervisor.lsb_deg = s.az_control.lsb_deg;
-  s.el_supervisor.lsb_deg = s.el_control.lsb_deg;
+  s.station.az_supervisor.max_rate_deg_s = s.az_plant.max_rate_deg_s;
+  s.station.el_supervisor.max_rate_deg_s = s.el_plant.max_rate_deg_s;
+  s.station.az_supervisor.lsb_deg = s.station.az_control.lsb_deg;
+  s.station.el_supervisor.lsb_deg = s.station.el_control.lsb_deg;
   return s;
 }
 

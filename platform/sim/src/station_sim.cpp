@@ -42,7 +42,7 @@ class StationLoop {
         antenna_(setup.az_plant, setup.el_plant, setup.frame_version, setup.link, setup.seed),
         station_(station_control_config(setup),
                  AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}) {
-    station_.set_corrections(setup.corrections);
+    station_.set_corrections(setup.station.corrections);
   }
 
   /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
@@ -59,7 +59,7 @@ class StationLoop {
         max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(axis.duty));
       }
     }
-    antenna_.step(duties.az, duties.el, setup_.tick_s, setup_.plant_substeps);
+    antenna_.step(duties.az, duties.el, setup_.station.tick_s, setup_.plant_substeps);
   }
 
   [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
@@ -111,16 +111,11 @@ AxisMetrics finish_axis(const Accumulator& acc, std::uint64_t starts, double hou
 }  // namespace
 
 control::StationControlConfig station_control_config(const StationSimSetup& setup) {
-  control::StationControlConfig c;
-  c.az_control = setup.az_control;
-  c.el_control = setup.el_control;
+  control::StationControlConfig c = setup.station.control_config();
+  // The simulated station reads the plants' encoders (the same as the mount's when the setup
+  // comes from a configuration file; tests may give the plants other resolutions).
   c.az_control.lsb_deg = proto::hub_resolution_deg(setup.az_plant.encoder_bits);
   c.el_control.lsb_deg = proto::hub_resolution_deg(setup.el_plant.encoder_bits);
-  c.az_supervisor = setup.az_supervisor;
-  c.el_supervisor = setup.el_supervisor;
-  c.az_range = setup.az_range;
-  c.el_range = setup.el_range;
-  c.tick_s = setup.tick_s;
   return c;
 }
 
@@ -131,11 +126,12 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
   double tracked_s = 0.0, az_travel = 0.0, el_travel = 0.0;
   std::optional<AzEl> previous;
   const double l2_slack = 2.0;  // acquisition: both axes within window + 2 LSB
-  const std::uint64_t ticks = static_cast<std::uint64_t>(std::llround(duration_s / setup.tick_s));
+  const std::uint64_t ticks =
+      static_cast<std::uint64_t>(std::llround(duration_s / setup.station.tick_s));
   for (std::uint64_t k = 0; k < ticks; ++k) {
-    const double t = static_cast<double>(k) * setup.tick_s;
+    const double t = static_cast<double>(k) * setup.station.tick_s;
     std::optional<AzEl> target = sky(t);
-    if (target && !control::plan_elevation(target->el_deg, setup.el_range)) target.reset();
+    if (target && !control::plan_elevation(target->el_deg, setup.station.el_range)) target.reset();
     AzEl rate{};
     if (target) {
       if (const auto ahead = sky(t + 1.0)) {
@@ -144,7 +140,7 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
       }
     }
     // Out of range: hold where the antenna is, or drive to the park position.
-    loop.tick(t, target ? target : setup.park_when_out_of_range, rate);
+    loop.tick(t, target ? target : setup.station.park_when_out_of_range, rate);
     loop.collect_faults(result.faults, t);
     if (!target) {
       previous.reset();
@@ -153,14 +149,14 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
     const double e_az = wrapped_difference(target->az_deg, loop.az_plant().shaft_deg());
     const double e_el = target->el_deg - loop.el_plant().shaft_deg();
     if (!result.acquired_s) {
-      const double az_ok = setup.az_control.window_deg + l2_slack * lsb_deg(setup.az_plant);
-      const double el_ok = setup.el_control.window_deg + l2_slack * lsb_deg(setup.el_plant);
+      const double az_ok = setup.station.az_control.window_deg + l2_slack * lsb_deg(setup.az_plant);
+      const double el_ok = setup.station.el_control.window_deg + l2_slack * lsb_deg(setup.el_plant);
       if (std::fabs(e_az) <= az_ok && std::fabs(e_el) <= el_ok) result.acquired_s = t;
     }
     if (result.acquired_s) {
       az_err.add(e_az);
       el_err.add(e_el);
-      tracked_s += setup.tick_s;
+      tracked_s += setup.station.tick_s;
       if (previous) {
         az_travel += std::fabs(wrapped_difference(target->az_deg, previous->az_deg));
         el_travel += std::fabs(target->el_deg - previous->el_deg);
@@ -175,7 +171,7 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
                      az_err.n + el_err.n};
   result.rms_error_deg = pooled.rms();
   result.max_error_deg = pooled.max_abs;
-  result.simulated_s = static_cast<double>(ticks) * setup.tick_s;
+  result.simulated_s = static_cast<double>(ticks) * setup.station.tick_s;
   result.hub = loop.decoder().counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
   result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),
@@ -187,7 +183,7 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
   StationLoop loop(setup);
   SimResult result;
   const double az_target =
-      control::plan_azimuth(setup.az_plant.start_deg, to.az_deg, setup.az_range);
+      control::plan_azimuth(setup.az_plant.start_deg, to.az_deg, setup.station.az_range);
   const double az_dir = az_target >= setup.az_plant.start_deg ? 1.0 : -1.0;
   const double el_dir = to.el_deg >= setup.el_plant.start_deg ? 1.0 : -1.0;
   result.slew_min_time_s =
@@ -195,14 +191,14 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
                std::fabs(to.el_deg - setup.el_plant.start_deg) / setup.el_plant.max_rate_deg_s);
   double rest_since = -1.0;
   const std::uint64_t ticks =
-      static_cast<std::uint64_t>(std::llround(max_duration_s / setup.tick_s));
+      static_cast<std::uint64_t>(std::llround(max_duration_s / setup.station.tick_s));
   std::uint64_t k = 0;
   for (; k < ticks; ++k) {
-    const double t = static_cast<double>(k) * setup.tick_s;
+    const double t = static_cast<double>(k) * setup.station.tick_s;
     loop.tick(t, to, AzEl{});
     loop.collect_faults(result.faults, t);
     const double az_shaft =
-        control::plan_azimuth(az_target, loop.az_plant().shaft_deg(), setup.az_range);
+        control::plan_azimuth(az_target, loop.az_plant().shaft_deg(), setup.station.az_range);
     result.az.overshoot_deg = std::max(result.az.overshoot_deg, (az_shaft - az_target) * az_dir);
     result.el.overshoot_deg =
         std::max(result.el.overshoot_deg, (loop.el_plant().shaft_deg() - to.el_deg) * el_dir);
@@ -219,7 +215,7 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
   result.max_error_deg = std::max(result.az.max_error_deg, result.el.max_error_deg);
   result.az.starts = loop.station().starts_az();
   result.el.starts = loop.station().starts_el();
-  result.simulated_s = static_cast<double>(k) * setup.tick_s;
+  result.simulated_s = static_cast<double>(k) * setup.station.tick_s;
   result.hub = loop.decoder().counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
   result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),

@@ -73,7 +73,7 @@ class ConfigStoreTest : public ::testing::Test {
 TEST_F(ConfigStoreTest, OpensAValidFile) {
   write(path_, kValid);
   const ConfigStore store = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(store.config().sim.setup.az_control.window_deg, 0.1);
+  EXPECT_DOUBLE_EQ(store.config().sim.setup.station.az_control.window_deg, 0.1);
   EXPECT_EQ(store.config().start_target, "stop");
   EXPECT_EQ(store.config().park[0].name, "south");
   EXPECT_TRUE(store.notices().empty());
@@ -87,10 +87,10 @@ TEST_F(ConfigStoreTest, SetSavesValidatedAndKeepsTheOldFileAsBackup) {
   write(path_, kValid);
   ConfigStore store = ConfigStore::open(path_);
   ASSERT_TRUE(store.set("control.window_deg", "0.25").ok());
-  EXPECT_DOUBLE_EQ(store.config().sim.setup.az_control.window_deg, 0.25);
+  EXPECT_DOUBLE_EQ(store.config().sim.setup.station.az_control.window_deg, 0.25);
   EXPECT_EQ(read(path_ + ".bak"), kValid);
   const ConfigStore again = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(again.config().sim.setup.az_control.window_deg, 0.25);
+  EXPECT_DOUBLE_EQ(again.config().sim.setup.station.az_control.window_deg, 0.25);
   EXPECT_EQ(again.config().start_target, "stop");  // everything else kept
   ASSERT_TRUE(store.set("park.1.az_deg", "200.5").ok());
   EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().park[0].position.az_deg, 200.5);
@@ -122,7 +122,7 @@ TEST_F(ConfigStoreTest, BadChangesAreRefusedAndChangeNothing) {
   }
   EXPECT_EQ(read(path_), kValid);
   EXPECT_FALSE(fs::exists(path_ + ".bak"));
-  EXPECT_DOUBLE_EQ(store.config().sim.setup.az_control.window_deg, 0.1);
+  EXPECT_DOUBLE_EQ(store.config().sim.setup.station.az_control.window_deg, 0.1);
 }
 
 TEST_F(ConfigStoreTest, ValidationErrorsNameTheKeyAndLineAndDoNotFallBack) {
@@ -148,7 +148,8 @@ TEST_F(ConfigStoreTest, CorruptPrimaryFallsBackToTheBackupLoudly) {
     ASSERT_TRUE(store.set("control.window_deg", "0.3").ok());
     EXPECT_EQ(read(path_ + ".corrupt"), corrupt);
     EXPECT_EQ(read(path_ + ".bak"), kValid);
-    EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().sim.setup.az_control.window_deg, 0.3);
+    EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().sim.setup.station.az_control.window_deg,
+                     0.3);
     fs::remove(path_ + ".corrupt");
   }
 }
@@ -207,7 +208,7 @@ TEST_F(ConfigStoreTest, CorrectionsAndTheTiltTableAreSettings) {
   write(path_, kValid + "[corrections]\naz_offset_deg = -3.4\nel_user_deg = 0.25\ntilt_el_deg = " +
                    tilt + "\n");
   ConfigStore store = ConfigStore::open(path_);
-  const auto& c = store.config().sim.setup.corrections;
+  const auto& c = store.config().sim.setup.station.corrections;
   EXPECT_DOUBLE_EQ(c.offsets.az_deg, -3.4);
   EXPECT_EQ(c.user.el_steps(), 25);
   EXPECT_DOUBLE_EQ(c.tilt.entries_deg()[7], 0.2);
@@ -220,8 +221,8 @@ TEST_F(ConfigStoreTest, CorrectionsAndTheTiltTableAreSettings) {
                         .replace(root["corrections"]["tilt_el_deg"].as_array()->begin() + 3, 1.25);
                   })
                   .ok());
-  EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().sim.setup.corrections.tilt.entries_deg()[3],
-                   1.25);
+  EXPECT_DOUBLE_EQ(
+      ConfigStore::open(path_).config().sim.setup.station.corrections.tilt.entries_deg()[3], 1.25);
   for (const char* bad : {"[1.0, 2.0]", "6.0"}) {
     const auto r = store.set("corrections.tilt_el_deg", bad);
     ASSERT_FALSE(r.ok()) << bad;
@@ -311,7 +312,7 @@ TEST_F(ConfigStoreTest, TwoWritersNeverLoseEachOthersChanges) {
   ASSERT_TRUE(a.set("control.window_deg", "0.4").ok());
   ASSERT_TRUE(b.set("target.name", "\"sun\"").ok());  // b loaded before a saved
   const ConfigStore now = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(now.config().sim.setup.az_control.window_deg, 0.4);
+  EXPECT_DOUBLE_EQ(now.config().sim.setup.station.az_control.window_deg, 0.4);
   EXPECT_EQ(now.config().start_target, "sun");
 }
 
@@ -339,7 +340,7 @@ TEST_F(ConfigStoreTest, ACorruptFileIsRebuiltFromTheLastSaveNotFromTheOlderBacku
   write(path_, "\xff\xfe garbage [[[");
   ASSERT_TRUE(store.set("target.name", "\"sun\"").ok());
   const ConfigStore again = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(again.config().sim.setup.az_control.window_deg, 0.3);
+  EXPECT_DOUBLE_EQ(again.config().sim.setup.station.az_control.window_deg, 0.3);
   EXPECT_EQ(again.config().start_target, "sun");
   EXPECT_EQ(read(path_ + ".corrupt"), "\xff\xfe garbage [[[");
   ASSERT_FALSE(store.notices().empty());

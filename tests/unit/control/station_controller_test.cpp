@@ -16,15 +16,15 @@ struct Rig {
   sim::StationSimSetup setup = sim::reference_station(16, 0.1);
   StationControlConfig config() const {
     StationControlConfig c;
-    c.az_control = setup.az_control;
-    c.el_control = setup.el_control;
+    c.az_control = setup.station.az_control;
+    c.el_control = setup.station.el_control;
     c.az_control.lsb_deg = 360.0 / 65536;
     c.el_control.lsb_deg = 360.0 / 65536;
-    c.az_supervisor = setup.az_supervisor;
-    c.el_supervisor = setup.el_supervisor;
-    c.az_range = setup.az_range;
-    c.el_range = setup.el_range;
-    c.tick_s = setup.tick_s;
+    c.az_supervisor = setup.station.az_supervisor;
+    c.el_supervisor = setup.station.el_supervisor;
+    c.az_range = setup.station.az_range;
+    c.el_range = setup.station.el_range;
+    c.tick_s = setup.station.tick_s;
     return c;
   }
   sim::AxisPlant az{setup.az_plant};
@@ -33,11 +33,11 @@ struct Rig {
   double t = 0.0;
 
   void run(const Demand& demand, double seconds) {
-    for (double end = t + seconds; t < end; t += setup.tick_s) {
+    for (double end = t + seconds; t < end; t += setup.station.tick_s) {
       station.on_encoder_reading(t, wrap_360(az.shaft_deg()), el.shaft_deg());
       const Duties d = station.tick(t, demand, AzEl{});
-      az.step(d.az, setup.tick_s);
-      el.step(d.el, setup.tick_s);
+      az.step(d.az, setup.station.tick_s);
+      el.step(d.el, setup.station.tick_s);
     }
   }
 };
@@ -195,7 +195,7 @@ struct MixedRig {
   int direct_reversals = 0;  ///< Forward straight to Reverse (or back) between two ticks
 
   void run(const Demand& demand, double seconds) {
-    for (double end = t + seconds; t < end; t += setup.tick_s) {
+    for (double end = t + seconds; t < end; t += setup.station.tick_s) {
       station.on_encoder_reading(t, wrap_360(az.shaft_deg()), el.shaft_deg());
       const Duties d = station.tick(t, demand, AzEl{});
       if (d.az * last_az_duty < 0.0) ++direct_reversals;
@@ -205,8 +205,8 @@ struct MixedRig {
       const double box_error = box_setpoint ? *box_setpoint - el.shaft_deg() : 0.0;
       const double box_duty =
           std::fabs(box_error) > kBoxBandDeg ? std::copysign(1.0, box_error) : 0.0;
-      az.step(d.az, setup.tick_s);
-      el.step(box_duty, setup.tick_s);
+      az.step(d.az, setup.station.tick_s);
+      el.step(box_duty, setup.station.tick_s);
     }
   }
 };

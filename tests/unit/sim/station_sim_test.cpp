@@ -49,7 +49,8 @@ TEST_P(Tracking, StaysWithinTheWindowPlusTwoLsbAndStartsRarely) {
     EXPECT_LE(static_cast<double>(r.az.starts), 1.1 * r.az.travel_deg / swing + 2.0);
     EXPECT_LE(static_cast<double>(r.el.starts), 1.1 * r.el.travel_deg / swing + 2.0);
   }
-  EXPECT_EQ(r.hub.frames_ok(), static_cast<std::uint32_t>(std::llround(3600.0 / setup.tick_s)));
+  EXPECT_EQ(r.hub.frames_ok(),
+            static_cast<std::uint32_t>(std::llround(3600.0 / setup.station.tick_s)));
 }
 
 INSTANTIATE_TEST_SUITE_P(BitsAndWindows, Tracking,
@@ -63,7 +64,7 @@ TEST(Slew, HalfTurnInAzimuthNearTheMinimumTimeWithoutOvershoot) {
     const double lsb = 360.0 / std::ldexp(1.0, bits);
     ASSERT_TRUE(r.slew_time_s.has_value());
     EXPECT_NEAR(r.slew_min_time_s, 180.0 / 1.5, 1e-9);
-    EXPECT_LE(*r.slew_time_s, 1.10 * r.slew_min_time_s + setup.az_control.ramp_s) << bits;
+    EXPECT_LE(*r.slew_time_s, 1.10 * r.slew_min_time_s + setup.station.az_control.ramp_s) << bits;
     EXPECT_LE(r.az.overshoot_deg, lsb) << bits;
     EXPECT_LE(r.max_error_deg, 2.0 * lsb) << bits;
     EXPECT_TRUE(r.faults.empty());
@@ -72,7 +73,7 @@ TEST(Slew, HalfTurnInAzimuthNearTheMinimumTimeWithoutOvershoot) {
 
 TEST(Slew, OverlapRotatorGoesThroughNorthTheShortWay) {
   StationSimSetup setup = reference(12, 0.0);
-  setup.az_range = control::AzimuthRange{0.0, 450.0};
+  setup.station.az_range = control::AzimuthRange{0.0, 450.0};
   setup.az_plant.max_deg = 450.0;
   setup.az_plant.start_deg = 350.0;
   const SimResult r = simulate_slew(setup, control::AzEl{20.0, 20.0}, 600.0);
@@ -172,7 +173,7 @@ TEST(OutOfRange, ParksWhenConfigured) {
   StationSimSetup setup = reference(12, 0.1);
   setup.az_plant.start_deg = 250.0;
   setup.el_plant.start_deg = 5.0;
-  setup.park_when_out_of_range = control::AzEl{180.0, 0.0};
+  setup.station.park_when_out_of_range = control::AzEl{180.0, 0.0};
   const SimResult r = simulate_tracking(setup, setting(), 1200.0);
   EXPECT_TRUE(r.faults.empty());
   // 70° of azimuth at 1.5°/s after the set at 600 s: parked well before 1200 s. The slew to park

@@ -130,10 +130,10 @@ TEST(PassSimulation, TwoHundredPassesWithoutAnUnwind) {
   sim::StationSimSetup setup = sim::reference_station(14, 0.1);
   setup.az_plant.max_rate_deg_s = 6.0;
   setup.el_plant.max_rate_deg_s = 3.0;
-  setup.az_control.max_rate_deg_s = 6.0;
-  setup.el_control.max_rate_deg_s = 3.0;
-  setup.az_supervisor.max_rate_deg_s = 6.0;
-  setup.el_supervisor.max_rate_deg_s = 3.0;
+  setup.station.az_control.max_rate_deg_s = 6.0;
+  setup.station.el_control.max_rate_deg_s = 3.0;
+  setup.station.az_supervisor.max_rate_deg_s = 6.0;
+  setup.station.el_supervisor.max_rate_deg_s = 3.0;
   int flips = 0;
   double worst_excess = 0.0;
   double worst_travel_over = -1e9;

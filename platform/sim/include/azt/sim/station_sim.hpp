@@ -10,6 +10,7 @@
 #include "azt/control/axis_geometry.hpp"
 #include "azt/control/modes.hpp"
 #include "azt/control/station_controller.hpp"
+#include "azt/control/station_setup.hpp"
 #include "azt/control/supervisor.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "azt/sim/axis_plant.hpp"
@@ -27,30 +28,21 @@ struct ScheduledFault {
 /// One simulated station: two plants behind a simulated EncoderHub, the real controllers and
 /// supervisors, in virtual time.
 struct StationSimSetup {
-  AxisParams az_plant;
+  /// The station as its controller knows it (the mount's rates and encoder steps, the travel,
+  /// the tick, the corrections): what a real station of this mount would run with.
+  control::StationSetup station;
+  AxisParams az_plant;  ///< the simulated axes: the mount's rate and encoders, their own faults
   AxisParams el_plant;
-  control::AxisControlConfig az_control;  ///< lsb_deg is set from the plant's encoder bits
-  control::AxisControlConfig el_control;
-  control::SupervisorConfig az_supervisor;
-  control::SupervisorConfig el_supervisor;
-  control::AzimuthRange az_range;
-  control::ElevationRange el_range;
-  double tick_s = 0.05;    ///< control tick (20 Hz, the daemon's default)
   int plant_substeps = 5;  ///< plant integration steps per tick
   proto::HubFrameVersion frame_version = proto::HubFrameVersion::Crc8;
   LinkFaults link;
   std::vector<ScheduledFault> plant_faults;  ///< sorted by at_s
-  /// Where to go while the tracked target is outside the travel (below the horizon limit);
-  /// nullopt holds the antenna where it is (ModeController's OutOfRangePolicy).
-  std::optional<control::AzEl> park_when_out_of_range;
-  /// The Offset / ± / UP / DWN / tilt settings, applied to every reading ([corrections]).
-  control::PositionCorrections corrections;
-  std::uint64_t seed = 1;  ///< for the link faults
+  std::uint64_t seed = 1;                    ///< for the link faults
 };
 
 /// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
-/// The station controller's configuration for this setup (encoder steps from the plants' bits).
-/// The daemon's backends use it too, so the simulation and the station share one definition.
+/// The simulated station controller's configuration: the station setup's, with the encoder steps
+/// of the plants it reads. Real stations use control::StationSetup::control_config().
 control::StationControlConfig station_control_config(const StationSimSetup& setup);
 
 using SkyTrack = std::function<std::optional<control::AzEl>(double t_s)>;
