@@ -9,7 +9,7 @@
 #include "azt/linux/libgpiod_lines.hpp"
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
-#include "azt/sim/pass_sim.hpp"
+#include "azt/track/pass_plan.hpp"
 #include "azt/util/valid_utf8.hpp"
 #include "common/horizon_mask_option.hpp"
 #include "common/sky_setup.hpp"
@@ -148,7 +148,7 @@ SatelliteSettings StationDaemon::satellite_settings() const {
   s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
   s.dut1_s = config_.sim.station.sky.dut1_s;
   s.site = config_.sim.station.sky.observer;
-  s.mount = sim::mount_geometry(config_.sim.setup);
+  s.mount = track::mount_geometry(config_.sim.setup.station);  // the mount's, not the plant's
   return s;
 }
 

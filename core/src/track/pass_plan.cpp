@@ -157,4 +157,13 @@ Result<PassPlan> plan_pass(const std::vector<SkyPoint>& sky, const MountGeometry
   return std::move(best->plan);
 }
 
+MountGeometry mount_geometry(const control::StationSetup& station) {
+  MountGeometry m;
+  m.az = station.az_range;
+  m.el = station.el_range;
+  m.max_az_rate_deg_s = station.az_control.max_rate_deg_s;
+  m.max_el_rate_deg_s = station.el_control.max_rate_deg_s;
+  return m;
+}
+
 }  // namespace azt::track

@@ -176,5 +176,18 @@ TEST(PassSimulation, TwoHundredPassesWithoutAnUnwind) {
   EXPECT_GT(flips, 10);
 }
 
+TEST(MountGeometryOfAStation, TakesTheTravelAndTheMountsRates) {
+  control::StationSetup station;
+  station.az_range = *control::AzimuthRange::make(0.0, 450.0);
+  station.el_range = *control::ElevationRange::make(0.0, 180.0);
+  station.az_control.max_rate_deg_s = 4.0;
+  station.el_control.max_rate_deg_s = 2.5;
+  const MountGeometry m = mount_geometry(station);
+  EXPECT_DOUBLE_EQ(m.az.max_deg, 450.0);
+  EXPECT_TRUE(m.can_flip());
+  EXPECT_DOUBLE_EQ(m.max_az_rate_deg_s, 4.0);
+  EXPECT_DOUBLE_EQ(m.max_el_rate_deg_s, 2.5);
+}
+
 }  // namespace
 }  // namespace azt::track

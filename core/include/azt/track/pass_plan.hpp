@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "azt/control/axis_geometry.hpp"
+#include "azt/control/station_setup.hpp"
 #include "azt/util/result.hpp"
 
 namespace azt::track {
@@ -45,6 +46,9 @@ struct MountGeometry {
   /// Elevation travel to 180°: the mount can look past the zenith.
   [[nodiscard]] bool can_flip() const { return el.max_deg >= 179.999; }
 };
+
+/// The geometry a pass is planned for: a station's travel and its axes' rates.
+MountGeometry mount_geometry(const control::StationSetup& station);
 
 struct PassPlan {
   bool flip = false;
