@@ -3,6 +3,8 @@
 // on the same element sets, in one run. Prints a Markdown table.
 //
 // Usage: azt_sat_bench [path/to/sat_bench.py]
+#include <sys/wait.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -107,13 +109,14 @@ int main(int argc, char** argv) {
       if (key == "propagations_per_s") in >> py_rate;
       if (key == "pass_search_s") in >> py_search >> py_passes;
     }
-    py_status = ::pclose(p);
+    const int status = ::pclose(p);
+    py_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
   // A benchmark that cannot compare says so and fails, instead of printing a ratio of 0.
   if (py_status != 0 || py_rate <= 0.0 || py_search <= 0.0) {
     std::fprintf(stderr,
                  "azt_sat_bench: the python3-sgp4/skyfield side did not run (`%s` exited with "
-                 "status %d); install python3-sgp4 and python3-skyfield (scripts/install-deps)\n",
+                 "code %d); install python3-sgp4 and python3-skyfield (scripts/install-deps)\n",
                  cmd.c_str(), py_status);
     return 1;
   }
