@@ -11,7 +11,7 @@
 
 #include "azt/orbit/tle.hpp"
 #include "azt/util/valid_utf8.hpp"
-#include "satellites/omm_record.hpp"
+#include "satellites/omm_library_readers.hpp"
 
 namespace azt::app {
 
@@ -48,13 +48,13 @@ std::string_view format_name(Format format) {
 bool has_kvn_header_line(std::string_view text) {
   constexpr std::string_view kVersionKey = "CCSDS_OMM_VERS";
   for (const std::string_view raw : split_lines(text)) {
-    if (trim(raw).substr(0, kVersionKey.size()) == kVersionKey) return true;
+    if (orbit::trim(raw).substr(0, kVersionKey.size()) == kVersionKey) return true;
   }
   return false;
 }
 
 Format detect(std::string_view text) {
-  const std::string_view body = trim(text);
+  const std::string_view body = orbit::trim(text);
   if (body.empty()) return Format::Empty;
   if (body.front() == '<') return Format::Xml;
   if (body.front() == '[' || body.front() == '{') return Format::Json;
@@ -67,16 +67,16 @@ Format detect(std::string_view text) {
   return Format::Tle;
 }
 
-OmmRecords read_records(Format format, std::string_view text) {
+orbit::OmmRecords read_records(Format format, std::string_view text) {
   switch (format) {
     case Format::Xml:
       return read_omm_xml(text);
     case Format::Json:
       return read_omm_json(text);
     case Format::Kvn:
-      return read_omm_kvn(text);
+      return orbit::read_omm_kvn(text);
     case Format::Csv:
-      return read_omm_csv(text);
+      return orbit::read_omm_csv(text);
     case Format::Empty:
     case Format::Tle:
       break;
@@ -85,17 +85,17 @@ OmmRecords read_records(Format format, std::string_view text) {
 }
 
 /// Converts each record; a bad one becomes "SOURCE: object N (LABEL): why".
-void convert(const OmmRecords& records, const std::string& source, ElementSetFile& file) {
+void convert(const orbit::OmmRecords& records, const std::string& source, ElementSetFile& file) {
   for (const std::string& error : records.errors) file.errors.push_back(from_source(source, error));
   for (std::size_t i = 0; i < records.records.size(); ++i) {
-    const OmmRecord& record = records.records[i];
-    Result<orbit::Elements> elements = elements_from_record(record);
+    const orbit::OmmRecord& record = records.records[i];
+    Result<orbit::Elements> elements = orbit::elements_from_record(record);
     if (elements) {
       file.sets.push_back(std::move(elements).value());
       continue;
     }
     std::string entry = "object " + std::to_string(i + 1);
-    if (const std::string label = record_label(record); !label.empty()) {
+    if (const std::string label = orbit::record_label(record); !label.empty()) {
       entry += " (" + label + ")";
     }
     entry += ": ";

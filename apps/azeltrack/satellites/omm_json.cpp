@@ -12,7 +12,7 @@
 #include <system_error>
 #include <utility>
 
-#include "satellites/omm_record.hpp"
+#include "satellites/omm_library_readers.hpp"
 
 namespace azt::app {
 
@@ -26,17 +26,17 @@ std::string number_text(double value) {
   return ec == std::errc{} ? std::string(buffer.data(), end) : std::string("?");
 }
 
-OmmRecord read_object(const nlohmann::json& object) {
-  OmmRecord record;
+orbit::OmmRecord read_object(const nlohmann::json& object) {
+  orbit::OmmRecord record;
   for (const auto& [key, value] : object.items()) {
     if (value.is_string()) {
-      add_field(record, key, value.get_ref<const std::string&>(), 0);
+      orbit::add_field(record, key, value.get_ref<const std::string&>(), 0);
     } else if (value.is_number_unsigned()) {
-      add_field(record, key, std::to_string(value.get<std::uint64_t>()), 0);
+      orbit::add_field(record, key, std::to_string(value.get<std::uint64_t>()), 0);
     } else if (value.is_number_integer()) {
-      add_field(record, key, std::to_string(value.get<std::int64_t>()), 0);
+      orbit::add_field(record, key, std::to_string(value.get<std::int64_t>()), 0);
     } else if (value.is_number_float()) {
-      add_field(record, key, number_text(value.get<double>()), 0);
+      orbit::add_field(record, key, number_text(value.get<double>()), 0);
     } else if (!value.is_null() && record.problem.empty()) {
       // null is "not given"; an array, object or boolean cannot be an OMM value.
       record.problem = key + ": a JSON " + value.type_name() + " where a value is expected";
@@ -47,8 +47,8 @@ OmmRecord read_object(const nlohmann::json& object) {
 
 }  // namespace
 
-OmmRecords read_omm_json(std::string_view text) {
-  OmmRecords out;
+orbit::OmmRecords read_omm_json(std::string_view text) {
+  orbit::OmmRecords out;
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(text.begin(), text.end());
@@ -68,7 +68,7 @@ OmmRecords read_omm_json(std::string_view text) {
       if (entry.is_object()) {
         out.records.push_back(read_object(entry));
       } else {
-        OmmRecord record;
+        orbit::OmmRecord record;
         record.problem =
             std::string("a JSON ") + entry.type_name() + " where an object is expected";
         out.records.push_back(std::move(record));

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "satellites/omm_record.hpp"
+#include "satellites/omm_library_readers.hpp"
 
 namespace azt::app {
 
@@ -29,21 +29,21 @@ pugi::xml_node child_named(const pugi::xml_node& parent, std::string_view name) 
   return {};
 }
 
-int line_of(const pugi::xml_node& node, const LineIndex& lines) {
+int line_of(const pugi::xml_node& node, const orbit::LineIndex& lines) {
   const std::ptrdiff_t offset = node.offset_debug();
   return offset < 0 ? 0 : lines.line_at(static_cast<std::size_t>(offset));
 }
 
 /// Every leaf element of `group` as a keyword (COMMENT elements are remarks, not values).
-void collect(const pugi::xml_node& group, const LineIndex& lines, OmmRecord& record) {
+void collect(const pugi::xml_node& group, const orbit::LineIndex& lines, orbit::OmmRecord& record) {
   for (const pugi::xml_node& leaf : group.children()) {
     if (leaf.type() != pugi::node_element || local_name(leaf) == "COMMENT") continue;
-    add_field(record, local_name(leaf), leaf.text().get(), line_of(leaf, lines));
+    orbit::add_field(record, local_name(leaf), leaf.text().get(), line_of(leaf, lines));
   }
 }
 
-OmmRecord read_omm(const pugi::xml_node& omm, const LineIndex& lines) {
-  OmmRecord record;
+orbit::OmmRecord read_omm(const pugi::xml_node& omm, const orbit::LineIndex& lines) {
+  orbit::OmmRecord record;
   record.line = line_of(omm, lines);
   record.theory_required = true;
   const pugi::xml_node segment = child_named(child_named(omm, "body"), "segment");
@@ -60,9 +60,9 @@ OmmRecord read_omm(const pugi::xml_node& omm, const LineIndex& lines) {
 
 }  // namespace
 
-OmmRecords read_omm_xml(std::string_view text) {
-  OmmRecords out;
-  const LineIndex lines(text);
+orbit::OmmRecords read_omm_xml(std::string_view text) {
+  orbit::OmmRecords out;
+  const orbit::LineIndex lines(text);
   pugi::xml_document document;
   const pugi::xml_parse_result parsed =
       document.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);

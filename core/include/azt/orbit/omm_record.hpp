@@ -1,7 +1,7 @@
 #pragma once
-// The format-independent middle of the OMM readers (element_sets.hpp): each syntax (XML, JSON,
-// KVN, CSV) only collects "KEYWORD → text" per object; one converter turns that into Elements,
-// so every format checks the same things and words its errors alike.
+// The format-independent middle of the OMM readers (the program's element_sets.hpp): each syntax
+// (XML, JSON, KVN, CSV) only collects "KEYWORD → text" per object; one converter turns that into
+// Elements, so every format checks the same things and words its errors alike.
 
 #include <cstddef>
 #include <map>
@@ -14,7 +14,7 @@
 #include "azt/util/result.hpp"
 #include "azt/util/text_lines.hpp"
 
-namespace azt::app {
+namespace azt::orbit {
 
 /// One keyword's value as written (trimmed) and its line in the file (0 where the format has
 /// no lines to give, JSON).
@@ -50,14 +50,14 @@ std::string record_label(const OmmRecord& record);
 
 /// The checks and conversions shared by every format. Errors read
 /// "line 12: MEAN_MOTION: not a number" (or without the line where there is none).
-Result<orbit::Elements> elements_from_record(const OmmRecord& record);
+Result<Elements> elements_from_record(const OmmRecord& record);
 
 /// An OMM EPOCH, `YYYY-MM-DDThh:mm:ss[.f…][Z]` or the day-of-year form `YYYY-DDDThh:mm:ss[.f…]`,
 /// as the split UTC Julian date the TLE parser gives (whole = the preceding midnight).
-Result<orbit::JulianDate> parse_omm_epoch(std::string_view text);
+Result<JulianDate> parse_omm_epoch(std::string_view text);
 
-OmmRecords read_omm_xml(std::string_view text);
-OmmRecords read_omm_json(std::string_view text);
+/// The two syntaxes with no library behind them (the XML and JSON readers, which use pugixml and
+/// nlohmann-json, are the program's: satellites/omm_library_readers.hpp).
 OmmRecords read_omm_kvn(std::string_view text);
 OmmRecords read_omm_csv(std::string_view text);
 
@@ -77,4 +77,4 @@ class LineIndex {
   std::vector<std::size_t> starts_;
 };
 
-}  // namespace azt::app
+}  // namespace azt::orbit

@@ -9,10 +9,10 @@
 #include <string>
 #include <string_view>
 
+#include "azt/orbit/omm_record.hpp"
 #include "azt/util/parse_number.hpp"
-#include "satellites/omm_record.hpp"
 
-namespace azt::app {
+namespace azt::orbit {
 
 namespace {
 
@@ -157,13 +157,13 @@ Result<Calendar> parse_calendar(std::string_view text) {
 
 }  // namespace
 
-Result<orbit::JulianDate> parse_omm_epoch(std::string_view text) {
+Result<JulianDate> parse_omm_epoch(std::string_view text) {
   Result<Calendar> parsed = parse_calendar(text);
   if (!parsed) return parsed.error();
   const Calendar& t = *parsed;
   // Vallado's jday in its split form, term for term as tle_epoch_to_jd (core/src/orbit/tle.cpp)
   // computes it, so the two parsers agree to the last bit on the whole part.
-  orbit::JulianDate jd;
+  JulianDate jd;
   jd.whole = 367.0 * t.year - std::floor((7 * (t.year + std::floor((t.month + 9) / 12.0))) * 0.25) +
              std::floor(275 * t.month / 9.0) + t.day + 1721013.5;
   jd.fraction = (t.second + t.minute * 60.0 + t.hour * 3600.0) / 86400.0;
@@ -174,4 +174,4 @@ Result<orbit::JulianDate> parse_omm_epoch(std::string_view text) {
   return jd;
 }
 
-}  // namespace azt::app
+}  // namespace azt::orbit

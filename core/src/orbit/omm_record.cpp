@@ -1,8 +1,8 @@
-// OMM keywords → orbit::Elements: the checks every OMM syntax shares (element_sets.hpp). Ranges
+// OMM keywords → Elements: the checks every OMM syntax shares (element_sets.hpp). Ranges
 // are the TLE parser's (core/src/orbit/tle.cpp) so that a file's format never changes what is
 // accepted.
 
-#include "satellites/omm_record.hpp"
+#include "azt/orbit/omm_record.hpp"
 
 #include <algorithm>
 #include <array>
@@ -16,7 +16,7 @@
 
 #include "azt/util/parse_number.hpp"
 
-namespace azt::app {
+namespace azt::orbit {
 
 namespace {
 
@@ -156,7 +156,7 @@ std::string tle_designator(const std::string& object_id) {
   return std::string(id.substr(2, 2)) + std::string(id.substr(5));
 }
 
-Result<bool> fill_identity(const OmmRecord& record, orbit::Elements& e) {
+Result<bool> fill_identity(const OmmRecord& record, Elements& e) {
   Result<std::int64_t> number =
       whole_number(record, "NORAD_CAT_ID", std::nullopt, kMaxCatalogNumber);
   if (!number) return number.error();
@@ -175,17 +175,17 @@ Result<bool> fill_identity(const OmmRecord& record, orbit::Elements& e) {
   return true;
 }
 
-Result<bool> fill_epoch(const OmmRecord& record, orbit::Elements& e) {
+Result<bool> fill_epoch(const OmmRecord& record, Elements& e) {
   const OmmField* field = find(record, "EPOCH");
   if (field == nullptr) return missing(record, "EPOCH");
-  Result<orbit::JulianDate> jd = parse_omm_epoch(field->value);
+  Result<JulianDate> jd = parse_omm_epoch(field->value);
   if (!jd) return field_error(field->line, "EPOCH", jd.error().message);
   e.epoch_jd = jd->whole;
   e.epoch_jd_frac = jd->fraction;
   return true;
 }
 
-Result<bool> fill_mean_elements(const OmmRecord& record, orbit::Elements& e) {
+Result<bool> fill_mean_elements(const OmmRecord& record, Elements& e) {
   constexpr double kHuge = std::numeric_limits<double>::max();
   const Limits motion{0.0, kHuge, true, false, "must be above 0 rev/day"};
   const Limits eccentricity{0.0, 1.0, false, true, "out of range 0 ≤ e < 1"};
@@ -209,7 +209,7 @@ Result<bool> fill_mean_elements(const OmmRecord& record, orbit::Elements& e) {
 
 /// The TLE's drag terms, units as there: ṅ/2 rev/day², n̈/6 rev/day³, B* 1/earth radii. Any
 /// finite value, as the TLE's fields allow any they can print.
-Result<bool> fill_drag_terms(const OmmRecord& record, orbit::Elements& e) {
+Result<bool> fill_drag_terms(const OmmRecord& record, Elements& e) {
   constexpr double kHuge = std::numeric_limits<double>::max();
   const Limits any{-kHuge, kHuge, false, false, ""};
   const std::array<std::pair<std::string_view, double*>, 3> fields = {{
@@ -225,7 +225,7 @@ Result<bool> fill_drag_terms(const OmmRecord& record, orbit::Elements& e) {
   return true;
 }
 
-Result<bool> fill_counters(const OmmRecord& record, orbit::Elements& e) {
+Result<bool> fill_counters(const OmmRecord& record, Elements& e) {
   Result<std::int64_t> set_no = whole_number(record, "ELEMENT_SET_NO", 0, kMaxCounter);
   if (!set_no) return set_no.error();
   Result<std::int64_t> revs = whole_number(record, "REV_AT_EPOCH", 0, kMaxCounter);
@@ -251,11 +251,11 @@ std::string record_label(const OmmRecord& record) {
   return {};
 }
 
-Result<orbit::Elements> elements_from_record(const OmmRecord& record) {
+Result<Elements> elements_from_record(const OmmRecord& record) {
   if (!record.problem.empty()) return fail(record.problem);
   if (Result<bool> ok = check_metadata(record); !ok) return ok.error();
-  orbit::Elements e;
-  using Step = Result<bool> (*)(const OmmRecord&, orbit::Elements&);
+  Elements e;
+  using Step = Result<bool> (*)(const OmmRecord&, Elements&);
   // In the order a reader scans an OMM: whose elements, when, then the values.
   constexpr std::array<Step, 5> kSteps = {fill_identity, fill_epoch, fill_mean_elements,
                                           fill_drag_terms, fill_counters};
@@ -277,4 +277,4 @@ int LineIndex::line_at(std::size_t offset) const {
   return static_cast<int>(after - starts_.begin());
 }
 
-}  // namespace azt::app
+}  // namespace azt::orbit

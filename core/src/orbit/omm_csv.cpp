@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "satellites/omm_record.hpp"
+#include "azt/orbit/omm_record.hpp"
 
-namespace azt::app {
+namespace azt::orbit {
 
 namespace {
 
@@ -99,4 +99,4 @@ OmmRecords read_omm_csv(std::string_view text) {
   return out;
 }
 
-}  // namespace azt::app
+}  // namespace azt::orbit

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "satellites/omm_record.hpp"
+#include "azt/orbit/omm_record.hpp"
 
-namespace azt::app {
+namespace azt::orbit {
 
 namespace {
 
@@ -107,4 +107,4 @@ OmmRecords read_omm_kvn(std::string_view text) {
   return reader.finish();
 }
 
-}  // namespace azt::app
+}  // namespace azt::orbit
