@@ -65,7 +65,7 @@ class StationDaemon {
   void control_event(const std::string& text);
   /// An accepted motion command: in the journal (at most 10 lines a minute per source, the rest
   /// counted) and in the console's recent commands, one line per source and kind of command.
-  void motion_event(const CommandSource& source, const std::string& what);
+  void motion_event(const CommandSource& source, const CommandRecord& record);
   // control_loop.cpp: the tick, the signals, the ways out.
   void arm_tick();
   void tick();

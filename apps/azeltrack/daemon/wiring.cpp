@@ -72,16 +72,16 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       sequencer_(make_sequencer()),
       antenna_(make_guarded(make_backend())),
       satellites_(satellite_settings(), [](const std::string& line) { spdlog::info("{}", line); }),
-      commands_(StationCommandParts{modes_, *antenna_, sky_, &satellites_, config_.target_limits(),
-                                    config_.sim.setup.station.el_range, [this] { return now_s(); },
-                                    [] { return unix_now_s(); },
-                                    config_.sim.setup.az_plant.start_deg,
-                                    [this](const CommandSource& source, const std::string& what) {
-                                      motion_event(source, what);
-                                    },
-                                    [this](const CommandSource& source, const Refusal& refusal) {
-                                      control_event(source.name + ": refused: " + refusal.reason);
-                                    }}),
+      commands_(
+          StationCommandParts{modes_, *antenna_, sky_, &satellites_, config_.target_limits(),
+                              config_.sim.setup.station.el_range, [this] { return now_s(); },
+                              [] { return unix_now_s(); }, config_.sim.setup.az_plant.start_deg,
+                              [this](const CommandSource& source, const CommandRecord& record) {
+                                motion_event(source, record);
+                              },
+                              [this](const CommandSource& source, const Refusal& refusal) {
+                                control_event(source.name + ": refused: " + refusal.reason);
+                              }}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
           "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
@@ -251,13 +251,13 @@ void StationDaemon::control_event(const std::string& text) {
   events_.add(unix_now_s(), line);
 }
 
-void StationDaemon::motion_event(const CommandSource& source, const std::string& what) {
-  const std::string line = log_safe(source.name + ": " + what);
+void StationDaemon::motion_event(const CommandSource& source, const CommandRecord& record) {
+  const std::string line = log_safe(source.name + ": " + record.words);
   log_.info("motion " + source.name, line, now_s());
   // A program's stream of positions is one entry; a new target or a STOP is a new one.
-  const bool stream = what.rfind("position ", 0) == 0 || what.rfind("continuous ", 0) == 0;
-  motions_.add(unix_now_s(), line,
-               source.name + "|" + (stream ? what.substr(0, what.find(' ')) : what));
+  motions_.add(
+      unix_now_s(), line,
+      source.name + "|" + (record.stream_kind.empty() ? record.words : record.stream_kind));
 }
 
 }  // namespace azt::app

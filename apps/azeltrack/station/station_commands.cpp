@@ -23,25 +23,6 @@ Refusal invalid(std::string field, std::string reason) {
 
 }  // namespace
 
-std::string describe(const TargetRequest& request) {
-  return std::visit(
-      [](const auto& r) -> std::string {
-        using T = std::decay_t<decltype(r)>;
-        if constexpr (std::is_same_v<T, NamedTarget>) {
-          return "track " + r.name;
-        } else if constexpr (std::is_same_v<T, SatelliteTarget>) {
-          return "track " + std::string(kSatellitePrefix) + r.name_or_norad;
-        } else if constexpr (std::is_same_v<T, RaDecTarget>) {
-          return "track RA " + degrees(r.ra_deg) + " Dec " + degrees(r.dec_deg);
-        } else if constexpr (std::is_same_v<T, ParkTarget>) {
-          return "park in slot " + std::to_string(r.slot);
-        } else {
-          return "position az " + degrees(r.az_deg) + " el " + degrees(r.el_deg);
-        }
-      },
-      request);
-}
-
 StationCommands::StationCommands(StationCommandParts parts) : p_(std::move(parts)) {
   commander_signature_ = mode_signature();
 }
@@ -69,10 +50,27 @@ void StationCommands::report_refusal(const CommandSource& source, const Refusal&
   if (p_.refused) p_.refused(source, refusal);
 }
 
-CommandOutcome StationCommands::accept(const CommandSource& source, const std::string& what) {
+CommandRecord StationCommands::record_of(const TargetRequest& request) const {
+  return std::visit(
+      [this](const auto& r) -> CommandRecord {
+        using T = std::decay_t<decltype(r)>;
+        if constexpr (std::is_same_v<T, PositionTarget>) {
+          return {"position az " + degrees(r.az_deg) + " el " + degrees(r.el_deg), "position"};
+        } else if constexpr (std::is_same_v<T, RaDecTarget>) {
+          return {"track RA " + degrees(r.ra_deg) + " Dec " + degrees(r.dec_deg), ""};
+        } else if constexpr (std::is_same_v<T, ParkTarget>) {
+          return {"park in slot " + std::to_string(r.slot), ""};
+        } else {  // a name, found: the modes hold it as tracked
+          return {"track " + p_.modes.who(), ""};
+        }
+      },
+      request);
+}
+
+CommandOutcome StationCommands::accept(const CommandSource& source, const CommandRecord& record) {
   commander_ = source.name;
   commander_signature_ = mode_signature();
-  if (p_.accepted) p_.accepted(source, what);
+  if (p_.accepted) p_.accepted(source, record);
   return CommandOutcome{std::nullopt, std::string(control::to_string(p_.modes.mode())),
                         p_.modes.who()};
 }
@@ -114,26 +112,34 @@ CommandOutcome StationCommands::point(const CommandSource& source, const TargetR
   }
   if (auto not_now = check_now(source)) return refuse(source, std::move(*not_now));
   if (auto failed = apply(source, request)) return refuse(source, std::move(*failed));
-  // A name is recorded as found ("track Cassiopeia A" for "casa"), the rest as asked.
-  const bool named = std::holds_alternative<NamedTarget>(request) ||
-                     std::holds_alternative<SatelliteTarget>(request);
-  return accept(source, named ? "track " + p_.modes.who() : describe(request));
+  return accept(source, record_of(request));
 }
 
 std::optional<Refusal> StationCommands::apply(const CommandSource& source,
                                               const TargetRequest& request) {
   if (const auto* t = std::get_if<SatelliteTarget>(&request)) return track_satellite(*t);
-  if (const auto* t = std::get_if<PositionTarget>(&request)) return go_to(source, *t);
-  if (const auto* t = std::get_if<ParkTarget>(&request)) {
-    auto r = p_.modes.park(static_cast<int>(t->slot));
-    if (!r) return invalid("park", r.error().message);
+  std::optional<Refusal> bad;
+  if (const auto* p = std::get_if<PositionTarget>(&request)) {
+    bad = go_to(source, *p);
+  } else if (const auto* k = std::get_if<ParkTarget>(&request)) {
+    bad = park(*k);
   } else if (const auto* n = std::get_if<NamedTarget>(&request)) {
-    if (auto bad = track_named(*n)) return bad;
-  } else if (auto bad = track_radec(std::get<RaDecTarget>(request))) {
-    return bad;
+    bad = track_named(*n);
+  } else {
+    bad = track_radec(std::get<RaDecTarget>(request));
   }
-  if (p_.satellites != nullptr) p_.satellites->stop();
+  if (!bad) forget_satellite();
+  return bad;
+}
+
+std::optional<Refusal> StationCommands::park(const ParkTarget& t) {
+  auto r = p_.modes.park(static_cast<int>(t.slot));
+  if (!r) return invalid("park", r.error().message);
   return std::nullopt;
+}
+
+void StationCommands::forget_satellite() {
+  if (p_.satellites != nullptr) p_.satellites->stop();
 }
 
 std::optional<Refusal> StationCommands::track_named(const NamedTarget& t) {
@@ -175,7 +181,6 @@ std::optional<Refusal> StationCommands::go_to(const CommandSource& source,
   auto r = source.kind == CommandSource::Kind::Console ? p_.modes.manual(sky)
                                                        : p_.modes.external(sky, source.name);
   if (!r) return invalid("az_deg", r.error().message);
-  if (p_.satellites != nullptr) p_.satellites->stop();
   return std::nullopt;
 }
 
@@ -183,14 +188,15 @@ CommandOutcome StationCommands::jog(const CommandSource& source, control::Jog jo
   if (auto not_now = check_now(source)) return refuse(source, std::move(*not_now));
   auto r = p_.modes.external_jog(jog, source.name, p_.monotonic_s());
   if (!r) return refuse(source, invalid("", "move: " + r.error().message));
-  if (p_.satellites != nullptr) p_.satellites->stop();
-  return accept(source, "continuous move az " + std::to_string(jog.az) + " el " +
-                            std::to_string(jog.el) + " (stops after 1 s without traffic)");
+  forget_satellite();
+  return accept(source, {"continuous move az " + std::to_string(jog.az) + " el " +
+                             std::to_string(jog.el) + " (stops after 1 s without traffic)",
+                         "continuous move"});
 }
 
 void StationCommands::stop(const CommandSource& source) {
   p_.modes.stop(source.kind == CommandSource::Kind::Console);
-  (void)accept(source, "STOP");
+  (void)accept(source, {"STOP", ""});
 }
 
 void StationCommands::heard_from(const CommandSource& source) {

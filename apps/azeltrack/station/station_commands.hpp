@@ -45,6 +45,14 @@ struct CommandOutcome {
   [[nodiscard]] bool accepted() const { return !refusal.has_value(); }
 };
 
+/// An accepted motion command, for the record of who moved the antenna.
+struct CommandRecord {
+  std::string words;  ///< "position az 120.00° el 30.00°", "track Moon", "STOP"
+  /// For commands a program repeats as a stream ("position", "continuous move"): records of one
+  /// kind from one source may be counted as one. Empty for one-off commands (a target, a STOP).
+  std::string stream_kind;
+};
+
 struct StationCommandParts {
   control::ModeController& modes;
   AntennaBackend& antenna;
@@ -56,8 +64,8 @@ struct StationCommandParts {
   std::function<double()> unix_s;
   /// Where the mount's azimuth is when the sensors cannot say (for a pass's wrap side).
   double fallback_mount_az_deg = 0.0;
-  /// "what" of an accepted motion command ("EXT az 120.00° el 30.00°"), and of a refusal.
-  std::function<void(const CommandSource&, const std::string&)> accepted;
+  /// Told of every accepted motion command, and of every refusal.
+  std::function<void(const CommandSource&, const CommandRecord&)> accepted;
   std::function<void(const CommandSource&, const Refusal&)> refused;
 };
 
@@ -81,7 +89,6 @@ class StationCommands {
   /// The source of the present mode while it lasts; what the modes say once it changed by itself
   /// (a continuous move's keep-alive ran out).
   [[nodiscard]] std::string commander() const;
-  [[nodiscard]] const proto::TargetLimits& limits() const { return p_.limits; }
 
  private:
   [[nodiscard]] std::optional<Refusal> check_position(const PositionTarget& p) const;
@@ -93,16 +100,18 @@ class StationCommands {
   std::optional<Refusal> track_satellite(const SatelliteTarget& t);
   std::optional<Refusal> track_radec(const RaDecTarget& t);
   std::optional<Refusal> go_to(const CommandSource& source, const PositionTarget& p);
+  std::optional<Refusal> park(const ParkTarget& t);
+  /// Leaves the satellite tracker idle: another target or mode was chosen.
+  void forget_satellite();
+  /// How an applied request is recorded: a name as found ("track Cassiopeia A" for "casa").
+  [[nodiscard]] CommandRecord record_of(const TargetRequest& request) const;
   CommandOutcome refuse(const CommandSource& source, Refusal refusal);
-  CommandOutcome accept(const CommandSource& source, const std::string& what);
+  CommandOutcome accept(const CommandSource& source, const CommandRecord& record);
   [[nodiscard]] std::string mode_signature() const;
 
   StationCommandParts p_;
   std::string commander_ = "configuration";
   std::string commander_signature_;
 };
-
-/// The words of a request for the log: "TRACK moon", "position az 120.00° el 30.00°".
-std::string describe(const TargetRequest& request);
 
 }  // namespace azt::app

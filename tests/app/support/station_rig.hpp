@@ -59,8 +59,8 @@ struct StationRig {
   StationCommands commands{StationCommandParts{
       modes, antenna, sky, nullptr, proto::TargetLimits{-180.0, 450.0, 0.0, 90.0},
       control::ElevationRange{0.0, 90.0}, [this] { return now_s; }, [] { return 1.8e9; }, 0.0,
-      [this](const CommandSource& s, const std::string& what) {
-        accepted.push_back(s.name + ": " + what);
+      [this](const CommandSource& s, const CommandRecord& r) {
+        accepted.push_back(s.name + ": " + r.words);
       },
       [this](const CommandSource& s, const Refusal& r) {
         refused.push_back(s.name + ": " + r.reason);
