@@ -32,7 +32,8 @@ class SimBackend final : public AntennaBackend {
       if (dt > 0.0) antenna_.step(duties_.az, duties_.el, dt, substeps);
     }
     last_s_ = now_s;
-    inject_due_faults(now_s);
+    if (!first_s_) first_s_ = now_s;  // the configured faults are timed from the first tick
+    faults_.inject_due(now_s - *first_s_, antenna_);
     if (const auto reading = antenna_.transmit_frame()) {
       station_.on_encoder_reading(now_s, reading->az_deg, reading->el_deg);
     }
@@ -74,17 +75,7 @@ class SimBackend final : public AntennaBackend {
   }
 
  private:
-  /// The configured plant faults ([sim.az] fault), timed from the first tick.
-  void inject_due_faults(double now_s) {
-    if (!first_s_) first_s_ = now_s;
-    while (next_fault_ < faults_.size() && faults_[next_fault_].at_s <= now_s - *first_s_) {
-      antenna_.inject(faults_[next_fault_].azimuth, faults_[next_fault_].fault);
-      ++next_fault_;
-    }
-  }
-
-  std::vector<sim::ScheduledFault> faults_;  ///< sorted by time
-  std::size_t next_fault_ = 0;
+  sim::FaultSchedule faults_;  ///< [sim.az] / [sim.el] fault
   std::optional<double> first_s_;
   sim::SimAntenna antenna_;
   control::StationController station_;

@@ -100,8 +100,6 @@ void read_plant_fault(const ConfigSection& s, bool azimuth, sim::StationSimSetup
   const double at_s = s.number("fault_at_s").value_or(0.0);
   if (!(at_s >= 0.0)) s.fail("fault_at_s", "must be 0 or more seconds");
   setup.plant_faults.push_back(sim::ScheduledFault{at_s, azimuth, fault});
-  std::sort(setup.plant_faults.begin(), setup.plant_faults.end(),
-            [](const auto& a, const auto& b) { return a.at_s < b.at_s; });
 }
 
 void read_link(const ConfigSection& s, sim::StationSimSetup& setup) {

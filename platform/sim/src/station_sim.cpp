@@ -39,6 +39,7 @@ class StationLoop {
  public:
   explicit StationLoop(const StationSimSetup& setup)
       : setup_(setup),
+        faults_(setup.plant_faults),
         antenna_(setup.az_plant, setup.el_plant, setup.frame_version, setup.link, setup.seed),
         station_(station_control_config(setup),
                  AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}) {
@@ -47,7 +48,7 @@ class StationLoop {
 
   /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
   void tick(double t_s, const std::optional<AzEl>& demand, const AzEl& rate_deg_s) {
-    inject_due_faults(t_s);
+    faults_.inject_due(t_s, antenna_);
     if (const auto reading = antenna_.transmit_frame()) {
       station_.on_encoder_reading(t_s, reading->az_deg, reading->el_deg);
     }
@@ -82,19 +83,11 @@ class StationLoop {
   }
 
  private:
-  void inject_due_faults(double t_s) {
-    for (; next_fault_ < setup_.plant_faults.size() && setup_.plant_faults[next_fault_].at_s <= t_s;
-         ++next_fault_) {
-      const ScheduledFault& f = setup_.plant_faults[next_fault_];
-      antenna_.inject(f.azimuth, f.fault);
-    }
-  }
-
   const StationSimSetup& setup_;
+  FaultSchedule faults_;
   SimAntenna antenna_;
   control::StationController station_;
   std::array<bool, 2> fault_reported_{};
-  std::size_t next_fault_ = 0;  ///< plant_faults are sorted by time
   double max_duty_after_fault_ = 0.0;
 };
 
@@ -109,6 +102,18 @@ AxisMetrics finish_axis(const Accumulator& acc, std::uint64_t starts, double hou
 }
 
 }  // namespace
+
+FaultSchedule::FaultSchedule(std::vector<ScheduledFault> faults) : faults_(std::move(faults)) {
+  std::stable_sort(
+      faults_.begin(), faults_.end(),
+      [](const ScheduledFault& a, const ScheduledFault& b) { return a.at_s < b.at_s; });
+}
+
+void FaultSchedule::inject_due(double t_s, SimAntenna& antenna) {
+  for (; next_ < faults_.size() && faults_[next_].at_s <= t_s; ++next_) {
+    antenna.inject(faults_[next_].azimuth, faults_[next_].fault);
+  }
+}
 
 control::StationControlConfig station_control_config(const StationSimSetup& setup) {
   control::StationControlConfig c = setup.station.control_config();

@@ -36,11 +36,24 @@ struct StationSimSetup {
   int plant_substeps = 5;  ///< plant integration steps per tick
   proto::HubFrameVersion frame_version = proto::HubFrameVersion::Crc8;
   LinkFaults link;
-  std::vector<ScheduledFault> plant_faults;  ///< sorted by at_s
+  std::vector<ScheduledFault> plant_faults;  ///< any order: injected in time order
   std::uint64_t seed = 1;                    ///< for the link faults
 };
 
 /// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
+/// Plant faults injected as their times come, earliest first, each once: the virtual-time
+/// simulations and the daemon's simulated antenna share it.
+class FaultSchedule {
+ public:
+  explicit FaultSchedule(std::vector<ScheduledFault> faults);
+  /// Injects into `antenna` every fault due at `t_s` (seconds from the start) not yet injected.
+  void inject_due(double t_s, SimAntenna& antenna);
+
+ private:
+  std::vector<ScheduledFault> faults_;  ///< sorted by at_s
+  std::size_t next_ = 0;
+};
+
 /// The simulated station controller's configuration: the station setup's, with the encoder steps
 /// of the plants it reads. Real stations use control::StationSetup::control_config().
 control::StationControlConfig station_control_config(const StationSimSetup& setup);
