@@ -1,0 +1,15 @@
+# The console's files (web/), embedded into one generated source by cmake/embed_web.cmake, for
+# the program and for the web request fuzzer alike: editing a file under web/ rebuilds it.
+set(AZT_WEB_FILES index.html app.css app.js)
+
+# Defines the custom command that writes OUT_CPP (a web_assets.cpp holding AZT_WEB_FILES).
+function(azt_embed_web_console out_cpp)
+  list(TRANSFORM AZT_WEB_FILES PREPEND ${PROJECT_SOURCE_DIR}/web/ OUTPUT_VARIABLE paths)
+  list(JOIN AZT_WEB_FILES "," file_list)
+  add_custom_command(
+    OUTPUT ${out_cpp}
+    COMMAND ${CMAKE_COMMAND} -DSRC_DIR=${PROJECT_SOURCE_DIR}/web -DFILES=${file_list}
+            -DOUT=${out_cpp} -P ${PROJECT_SOURCE_DIR}/cmake/embed_web.cmake
+    DEPENDS ${paths} ${PROJECT_SOURCE_DIR}/cmake/embed_web.cmake
+    COMMENT "Embedding the web console")
+endfunction()
