@@ -1,5 +1,6 @@
 """What the daemon's integration tests share: pass/fail counting, free ports, the console's HTTP
 API with a bearer token, waiting for a condition, and a rotctld conversation."""
+import http.client
 import json
 import socket
 import sys
@@ -49,16 +50,17 @@ def http_json(base, method, route, body=None, token=None, headers=None, timeout=
         return e.code, json.loads(e.read() or b"null")
 
 
-def wait_until(probe, seconds=10.0):
-    """True once probe() is true (errors while the daemon starts count as not yet)."""
-    end = time.time() + seconds
-    while time.time() < end:
+def wait_until(probe, seconds=10.0, every=0.1):
+    """True once probe() is true, asked every `every` seconds (errors while the daemon starts
+    or restarts count as not yet); False when `seconds` pass first."""
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
         try:
             if probe():
                 return True
-        except (OSError, ValueError, KeyError, TypeError):
+        except (OSError, ValueError, KeyError, TypeError, http.client.HTTPException):
             pass
-        time.sleep(0.1)
+        time.sleep(every)
     return False
 
 

@@ -39,6 +39,8 @@ import tempfile
 import threading
 import time
 
+from daemon_harness import Checks, free_port, wait_until
+
 BIN = os.path.realpath(sys.argv[1])
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
 TMP = tempfile.mkdtemp(prefix="azt-hardening-")
@@ -48,30 +50,13 @@ PTY_DIR = os.path.join(TMP, "pty")
 GS232B = os.path.join(PTY_DIR, "gs232b")
 PASSWORD = "a-long-password"
 NORAD = "25544"
-passed = 0
-failed = 0
+check = Checks()
 figures = collections.OrderedDict()  # row -> what was measured, printed at the end
-
-
-def check(condition, what):
-    global passed, failed
-    if condition:
-        passed += 1
-    else:
-        failed += 1
-        print(f"FAIL: {what}", file=sys.stderr)
-    return condition
 
 
 def figure(row, text):
     figures.setdefault(row, []).append(text)
     print(f"measure: row {row}: {text}")
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 WEB_PORT = free_port()
@@ -153,16 +138,8 @@ def json_error_body(body):
 
 
 def wait_for(what, probe, seconds=10.0):
-    end = time.monotonic() + seconds
-    while time.monotonic() < end:
-        try:
-            if probe():
-                return True
-        except (OSError, ValueError, KeyError, TypeError, http.client.HTTPException):
-            pass
-        time.sleep(0.05)
-    check(False, f"timed out after {seconds} s waiting for {what}")
-    return False
+    return check(wait_until(probe, seconds, every=0.05),
+                 f"timed out after {seconds} s waiting for {what}")
 
 
 def read_head(s):
@@ -975,7 +952,7 @@ try:
         figure(10, f"directory of nobody: rc {r.returncode}, "
                    f"{r.stderr.decode(errors='replace').strip().splitlines()[-1:]}")
 finally:
-    if failed and daemon_log and os.path.exists(daemon_log):
+    if check.failed and daemon_log and os.path.exists(daemon_log):
         print(open(daemon_log, "rb").read()[-3000:].decode("utf-8", "replace"), file=sys.stderr)
     cleanup()
 
@@ -983,5 +960,5 @@ print(f"figures ({time.monotonic() - t_start:.1f} s):")
 for row in sorted(figures):
     for text in figures[row]:
         print(f"  row {row}: {text}")
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+print(f"{check.passed} passed, {check.failed} failed")
+sys.exit(1 if check.failed else 0)

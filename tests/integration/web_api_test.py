@@ -14,23 +14,13 @@ import tempfile
 import time
 import urllib.request
 
-from daemon_harness import free_port, http_json, wait_until
+from daemon_harness import Checks, free_port, http_json, wait_until
 
 BIN = os.path.realpath(sys.argv[1])
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
 TMP = tempfile.mkdtemp(prefix="azt-web-api-")
 CONFIG = os.path.join(TMP, "azeltrack.toml")
-passed = 0
-failed = 0
-
-
-def check(condition, what):
-    global passed, failed
-    if condition:
-        passed += 1
-    else:
-        failed += 1
-        print(f"FAIL: {what}", file=sys.stderr)
+check = Checks()
 
 
 PORT = free_port()
@@ -294,8 +284,8 @@ finally:
     daemon.terminate()
     daemon.wait(10)
     log.close()
-    if failed:
+    if check.failed:
         print(open(os.path.join(TMP, "daemon.log")).read()[-3000:], file=sys.stderr)
     shutil.rmtree(TMP, ignore_errors=True)
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+print(f"{check.passed} passed, {check.failed} failed")
+sys.exit(1 if check.failed else 0)
