@@ -164,7 +164,7 @@ TEST(Mcp3008Spi, BusErrorPropagatesWithItsMessage) {
 // ---- ADS1115 ------------------------------------------------------------------------------
 
 // Nothing in the reader waits: a reading is three steps, each of one or two I2C messages, and
-// the caller (axis_io.cpp) spreads them over its control ticks.
+// the caller (Ads1115Chip in pot_sensors.cpp) spreads them over its control ticks.
 template <typename R>
 constexpr bool kHasBlockingRead = requires(R r) {
   r.read(0U);

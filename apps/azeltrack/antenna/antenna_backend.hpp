@@ -37,9 +37,9 @@ class AntennaBackend {
   /// Latched faults in words (empty when healthy).
   [[nodiscard]] virtual std::vector<std::string> faults() const = 0;
   virtual void clear_faults() = 0;
-  /// The Offset / ± / UP / DWN / tilt settings, applied to every reading from now on. False when
-  /// this backend cannot apply them (a Hamlib rotator closes its own loop).
-  virtual bool set_corrections(const control::PositionCorrections& corrections) = 0;
+  /// The Offset / ± / UP / DWN / tilt settings, applied to every reading from now on (a Hamlib
+  /// box's reports too: the station's controller reads them as any sensor).
+  virtual void set_corrections(const control::PositionCorrections& corrections) = 0;
   /// The encoder angles as read, before corrections; nullopt when there are no encoders of ours.
   [[nodiscard]] virtual std::optional<control::AzEl> encoder_reading() const = 0;
   [[nodiscard]] virtual std::string describe() const = 0;

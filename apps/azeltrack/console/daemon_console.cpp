@@ -336,7 +336,7 @@ ApiError DaemonConsole::save_refusal(const std::string& field, std::string messa
 
 void DaemonConsole::apply_corrections(const control::PositionCorrections& corrections) {
   p_.config.sim.setup.station.corrections = corrections;
-  (void)p_.antenna.set_corrections(corrections);
+  p_.antenna.set_corrections(corrections);
 }
 
 void DaemonConsole::act(const std::string& action, const json& body, const std::string& source,

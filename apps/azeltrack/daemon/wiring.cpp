@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "antenna/axis_io.hpp"
+#include "antenna/axis_devices.hpp"
 #include "azt/linux/libgpiod_lines.hpp"
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"

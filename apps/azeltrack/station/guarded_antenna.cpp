@@ -147,8 +147,8 @@ void GuardedAntenna::clear_faults() {
   if (!latched_) inner_->clear_faults();
 }
 
-bool GuardedAntenna::set_corrections(const control::PositionCorrections& corrections) {
-  return inner_->set_corrections(corrections);
+void GuardedAntenna::set_corrections(const control::PositionCorrections& corrections) {
+  inner_->set_corrections(corrections);
 }
 
 std::optional<control::AzEl> GuardedAntenna::encoder_reading() const {

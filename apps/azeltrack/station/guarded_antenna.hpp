@@ -48,7 +48,7 @@ class GuardedAntenna final : public AntennaBackend {
   /// Clears the backend's faults and the sequencer's; the E-stop latch only when its input is
   /// released.
   void clear_faults() override;
-  bool set_corrections(const control::PositionCorrections& corrections) override;
+  void set_corrections(const control::PositionCorrections& corrections) override;
   [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override;
   [[nodiscard]] std::string describe() const override;
   void set_limits(double now_s, const control::LimitSwitches& limits) override;

@@ -78,14 +78,16 @@ StationController::StationController(const StationControlConfig& config, AzEl st
           config.az_drive,
           RelayDrive(config.az_drive.relay),
           std::nullopt,
-          0.0},
+          0.0,
+          false},
       el_{AxisController(config.el_control),
           AxisSupervisor(with_lsb(config.el_supervisor, config.el_control)),
           start_mount.el_deg,
           config.el_drive,
           RelayDrive(config.el_drive.relay),
           std::nullopt,
-          0.0} {}
+          0.0,
+          false} {}
 
 void StationController::on_encoder_reading(double now_s, double az_deg, double el_deg) {
   last_encoder_ = AzEl{az_deg, el_deg};
@@ -156,11 +158,17 @@ Duties StationController::duties() const {
 double StationController::drive(Axis& axis, double now_s, std::optional<double> target_deg,
                                 double rate_deg_s) const {
   if (!target_deg) {
-    // Holding: a PWM move finishes its soft stop at the present position; a setpoint axis keeps
-    // the setpoint it has (re-sending the moving reading would chase the coast).
-    target_deg = axis.drive.kind == DriveKind::Setpoint && axis.setpoint_deg ? *axis.setpoint_deg
-                                                                             : axis.mount_deg;
+    // Holding: a PWM move finishes its soft stop at the present position. A setpoint axis is
+    // sent where it stands when the hold begins (a STOP mid-move stops the box there), then
+    // keeps that setpoint: re-sending the moving reading every tick would chase the coast.
+    if (axis.drive.kind == DriveKind::Setpoint && (!axis.holding || !axis.setpoint_deg)) {
+      axis.setpoint_deg = axis.mount_deg;
+    }
+    axis.holding = true;
+    target_deg = axis.drive.kind == DriveKind::Setpoint ? *axis.setpoint_deg : axis.mount_deg;
     rate_deg_s = 0.0;
+  } else {
+    axis.holding = false;
   }
   switch (axis.drive.kind) {
     case DriveKind::Relay:

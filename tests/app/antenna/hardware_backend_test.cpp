@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "antenna/antenna_backend.hpp"
-#include "antenna/axis_io.hpp"
+#include "antenna/axis_devices.hpp"
 #include "azt/sim/axis_plant.hpp"
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
@@ -456,7 +456,7 @@ struct AdsRig {
 
 TEST(Ads1115Sensor, AConversionStartedAtOneTickIsReadAtTheNext) {
   AdsRig rig;
-  auto sensor = make_adc_sensor(rig.el, rig.ports);
+  auto sensor = open_adc_sensor(rig.el, rig.ports);
   ASSERT_EQ(rig.chips.size(), 1U);
   RecordingAds1115& chip = *rig.chips[0];
   const Lines start = {"W 48: 01 c3 83"};  // AIN0, ±4.096 V, single shot, 128 SPS
@@ -472,18 +472,18 @@ TEST(Ads1115Sensor, AConversionStartedAtOneTickIsReadAtTheNext) {
   auto second = sensor->read(0.05);
   ASSERT_TRUE(second.ok()) << second.error().message;
   ASSERT_TRUE(second.value().has_value());
-  EXPECT_DOUBLE_EQ(*second.value(), 45.0);
+  EXPECT_DOUBLE_EQ(second.value()->deg, 45.0);
   EXPECT_EQ(chip.take(), poll_fetch_start);
 
   auto third = sensor->read(0.10);
   ASSERT_TRUE(third.ok() && third.value().has_value());
-  EXPECT_DOUBLE_EQ(*third.value(), 90.0);
+  EXPECT_DOUBLE_EQ(third.value()->deg, 90.0);
   EXPECT_EQ(chip.take(), poll_fetch_start);
 }
 
 TEST(Ads1115Sensor, NeverReadyIsAnErrorAtTheThirdPollThenItStartsAgain) {
   AdsRig rig;
-  auto sensor = make_adc_sensor(rig.el, rig.ports);
+  auto sensor = open_adc_sensor(rig.el, rig.ports);
   RecordingAds1115& chip = *rig.chips[0];
   chip.ready = false;
   chip.codes[0] = 13000;
@@ -507,12 +507,12 @@ TEST(Ads1115Sensor, NeverReadyIsAnErrorAtTheThirdPollThenItStartsAgain) {
   EXPECT_EQ(chip.take(), (Lines{"W 48: 01 c3 83"}));
   auto back = sensor->read(0.25);
   ASSERT_TRUE(back.ok() && back.value().has_value());
-  EXPECT_DOUBLE_EQ(*back.value(), 45.0);
+  EXPECT_DOUBLE_EQ(back.value()->deg, 45.0);
 }
 
 TEST(Ads1115Sensor, ABusErrorIsReportedAtItsTickAndTheNextStartsAgain) {
   AdsRig rig;
-  auto sensor = make_adc_sensor(rig.el, rig.ports);
+  auto sensor = open_adc_sensor(rig.el, rig.ports);
   RecordingAds1115& chip = *rig.chips[0];
   chip.codes[0] = 26000;
   ASSERT_TRUE(sensor->read(0.0).ok());
@@ -528,13 +528,13 @@ TEST(Ads1115Sensor, ABusErrorIsReportedAtItsTickAndTheNextStartsAgain) {
   EXPECT_FALSE(restart.value().has_value());
   auto back = sensor->read(0.15);
   ASSERT_TRUE(back.ok() && back.value().has_value());
-  EXPECT_DOUBLE_EQ(*back.value(), 90.0);
+  EXPECT_DOUBLE_EQ(back.value()->deg, 90.0);
 }
 
 TEST(Ads1115Sensor, TwoAxesOnOneChipTakeTurnsAndNeverGetEachOthersChannel) {
   AdsRig rig;
-  auto az = make_adc_sensor(rig.az(1), rig.ports);  // the backend's order: az, then el
-  auto el = make_adc_sensor(rig.el, rig.ports);
+  auto az = open_adc_sensor(rig.az(1), rig.ports);  // the backend's order: az, then el
+  auto el = open_adc_sensor(rig.el, rig.ports);
   ASSERT_EQ(rig.chips.size(), 1U) << "one chip, opened once";
   RecordingAds1115& chip = *rig.chips[0];
   chip.codes = {13000, 26000, 0, 0};  // el on AIN0: 45°, az on AIN1: 90°
@@ -545,10 +545,10 @@ TEST(Ads1115Sensor, TwoAxesOnOneChipTakeTurnsAndNeverGetEachOthersChannel) {
     auto e = el->read(t);
     ASSERT_TRUE(a.ok() && e.ok()) << "tick " << tick;
     if (a.value()) {
-      EXPECT_DOUBLE_EQ(*a.value(), 90.0);
+      EXPECT_DOUBLE_EQ(a.value()->deg, 90.0);
     }
     if (e.value()) {
-      EXPECT_DOUBLE_EQ(*e.value(), 45.0);
+      EXPECT_DOUBLE_EQ(e.value()->deg, 45.0);
     }
     got.push_back(std::string(a.value() ? "a" : "") + (e.value() ? "e" : ""));
     EXPECT_LE(chip.take().size(), 5U) << "tick " << tick;
@@ -558,15 +558,15 @@ TEST(Ads1115Sensor, TwoAxesOnOneChipTakeTurnsAndNeverGetEachOthersChannel) {
 
 TEST(Ads1115Sensor, TwoAxesOnOneChannelAreRefusedAndTwoAddressesAreTwoChips) {
   AdsRig rig;
-  auto el = make_adc_sensor(rig.el, rig.ports);
+  auto el = open_adc_sensor(rig.el, rig.ports);
   try {
-    (void)make_adc_sensor(rig.az(0), rig.ports);
+    (void)open_adc_sensor(rig.az(0), rig.ports);
     FAIL() << "two axes on AIN0";
   } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("[hardware.az] adc_channel"), std::string::npos)
         << e.what();
   }
-  auto az = make_adc_sensor(rig.az(0, 0x49), rig.ports);
+  auto az = open_adc_sensor(rig.az(0, 0x49), rig.ports);
   EXPECT_EQ(rig.chips.size(), 2U);
 }
 

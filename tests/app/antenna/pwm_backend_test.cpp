@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "antenna/antenna_backend.hpp"
-#include "antenna/axis_io.hpp"
+#include "antenna/axis_devices.hpp"
 #include "azt/linux/asio.hpp"
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
@@ -92,11 +92,12 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
   EXPECT_LE(after_ms, 200.0);                              // R01
   EXPECT_FALSE(backend->position(seconds()).has_value());  // no cached angle is served
 
-  // Unplugged: a fault that refuses motion, named.
+  // Unplugged: a fault that refuses motion, named (at the next tick that reads the hub).
   station_.close_hub();
   for (int i = 0; i < 50 && backend->faults().empty(); ++i) {
     io.run_for(std::chrono::milliseconds(10));
     io.restart();
+    backend->tick(seconds(), go, control::AzEl{});
   }
   ASSERT_FALSE(backend->faults().empty());
   EXPECT_NE(backend->faults().back().find("hub: lost"), std::string::npos)

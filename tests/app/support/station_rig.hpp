@@ -28,9 +28,7 @@ class StandingAntenna final : public AntennaBackend {
   void stop_now(double /*now_s*/) override {}
   [[nodiscard]] std::vector<std::string> faults() const override { return faults_; }
   void clear_faults() override { faults_.clear(); }
-  bool set_corrections(const control::PositionCorrections& /*corrections*/) override {
-    return false;
-  }
+  void set_corrections(const control::PositionCorrections& /*corrections*/) override {}
   [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override {
     return std::nullopt;
   }

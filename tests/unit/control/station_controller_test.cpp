@@ -254,6 +254,24 @@ TEST(StationController, SetpointAxisIsSentWhereItStandsOnAnEStopOrALimit) {
   EXPECT_DOUBLE_EQ(*stopped.el_setpoint_deg, rig.station.el().mount_deg);
 }
 
+// A STOP (no target) mid-move stops a rotator box where it stands, as it stops a motor; the
+// setpoint is not re-sent at every tick of the hold (that would chase the coast).
+TEST(StationController, StopMidMoveSendsTheSetpointAxisWhereItStands) {
+  MixedRig rig;
+  Demand up;
+  up.position = AzEl{rig.setup.az_plant.start_deg, 60.0};
+  rig.run(up, 3.0);
+  ASSERT_TRUE(rig.box_setpoint.has_value());
+  ASSERT_DOUBLE_EQ(*rig.box_setpoint, 60.0);
+  rig.run(Demand{}, 0.05);  // one tick of STOP, on the reading of that tick
+  EXPECT_LT(*rig.box_setpoint, 50.0) << "STOP left the box driving to its old setpoint";
+  EXPECT_DOUBLE_EQ(*rig.box_setpoint, rig.station.el().mount_deg);
+  const double held = *rig.box_setpoint;
+  rig.run(Demand{}, 2.0);
+  EXPECT_DOUBLE_EQ(*rig.box_setpoint, held) << "the held setpoint followed the coast";
+  EXPECT_FALSE(rig.station.faulted());
+}
+
 TEST(StationController, RelayAxisStopsAtATrippedLimitAndOnEStop) {
   MixedRig rig;
   Demand cw;

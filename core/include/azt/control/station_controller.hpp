@@ -134,6 +134,7 @@ class StationController {
     RelayDrive relay;
     std::optional<double> setpoint_deg;  ///< Setpoint axes: what the box was last given
     double setpoint_duty = 0.0;          ///< Setpoint axes: the direction the box drives
+    bool holding = false;                ///< the last tick had no target (STOP, or holding)
     [[nodiscard]] double duty() const;
     [[nodiscard]] bool moving() const;
     /// Stops the drive now, whatever its kind (a setpoint axis is sent where it stands).

@@ -33,7 +33,7 @@ class Mcp3008Reader {
 /// A conversion takes about 7.8 ms (up to 10% more: the internal oscillator may run slow), far
 /// longer than a handler on the event loop may block. So a reading is three steps, none of which
 /// waits: start() a conversion, poll() it until it is done, fetch() the result. The caller spreads
-/// them over its ticks (apps/azeltrack/axis_io.cpp: one poll a tick).
+/// them over its ticks (pot_sensors.hpp: Ads1115Chip, one poll a tick).
 class Ads1115Reader {
  public:
   static constexpr std::uint8_t kDefaultAddress = 0x48;  ///< ADDR pin to GND

@@ -40,7 +40,6 @@ struct StationSimSetup {
   std::uint64_t seed = 1;                    ///< for the link faults
 };
 
-/// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
 /// Plant faults injected as their times come, earliest first, each once: the virtual-time
 /// simulations and the daemon's simulated antenna share it.
 class FaultSchedule {
@@ -58,6 +57,7 @@ class FaultSchedule {
 /// of the plants it reads. Real stations use control::StationSetup::control_config().
 control::StationControlConfig station_control_config(const StationSimSetup& setup);
 
+/// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
 using SkyTrack = std::function<std::optional<control::AzEl>(double t_s)>;
 
 struct AxisMetrics {

@@ -1,0 +1,111 @@
+#include "antenna/axis_devices.hpp"
+
+#include "azt/linux/axis_drives.hpp"
+#include "azt/linux/pwm_hbridge.hpp"
+#include "common/usage_error.hpp"
+
+namespace azt::app {
+namespace {
+
+std::unique_ptr<linux_os::GpioOutput> output_line(HardwarePorts& ports,
+                                                  const linux_os::GpioLineSpec& spec) {
+  if (ports.gpio == nullptr) throw UsageError(spec.key + ": no GPIO provider");
+  auto line = ports.gpio->output(spec, false);  // released until the station asks
+  if (!line) throw UsageError(line.error().message);
+  return std::move(line).value();
+}
+
+/// The ADS1115 of `a`, opened now or shared with the other axis, with `a`'s channel added.
+std::shared_ptr<linux_os::Ads1115Chip> ads1115_chip(const HardwareAxisConfig& a,
+                                                    HardwarePorts& ports) {
+  std::shared_ptr<linux_os::Ads1115Chip>& chip = ports.ads1115_chips[{a.adc_device, a.adc_address}];
+  if (!chip) {
+    auto bus = ports.open_i2c(a.adc_device);
+    if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
+    chip = std::make_shared<linux_os::Ads1115Chip>(std::move(bus).value(), a.adc_address);
+  } else if (chip->has_channel(a.adc_channel)) {
+    throw UsageError(a.key("adc_channel") + ": the other axis reads channel " +
+                     std::to_string(a.adc_channel) + " of this ADS1115 already");
+  }
+  chip->add_channel(a.adc_channel);
+  return chip;
+}
+
+}  // namespace
+
+HardwarePorts HardwarePorts::linux_devices(linux_os::GpioProvider* gpio) {
+  HardwarePorts p;
+  p.gpio = gpio;
+  p.open_spi = [](const std::string& path,
+                  std::uint32_t hz) -> Result<std::unique_ptr<linux_os::SpiBus>> {
+    auto bus = linux_os::SpidevBus::open(path, hz);
+    if (!bus) return bus.error();
+    return std::unique_ptr<linux_os::SpiBus>(
+        std::make_unique<linux_os::SpidevBus>(std::move(bus).value()));
+  };
+  p.open_i2c = [](const std::string& path) -> Result<std::unique_ptr<linux_os::I2cBus>> {
+    auto bus = linux_os::I2cDevBus::open(path);
+    if (!bus) return bus.error();
+    return std::unique_ptr<linux_os::I2cBus>(
+        std::make_unique<linux_os::I2cDevBus>(std::move(bus).value()));
+  };
+  return p;
+}
+
+std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& a, const PwmConfig& pwm,
+                                                  HardwarePorts& ports) {
+  if (a.drive == AxisDriveKind::Relay) {
+    const bool pp = a.relay_power.has_value();
+    auto first = output_line(ports, pp ? *a.relay_power : *a.relay_forward);
+    auto second = output_line(ports, pp ? *a.relay_polarity : *a.relay_reverse);
+    std::optional<control::PowerPolarityConfig> power_polarity;
+    if (pp)
+      power_polarity = control::PowerPolarityConfig{a.relay.reversal_dead_s, a.polarity_settle_s};
+    return linux_os::make_relay_lines_drive(
+        std::move(first), std::move(second), power_polarity,
+        pp ? "relays (power + polarity)" : "relays (forward/reverse)");
+  }
+  if (a.drive == AxisDriveKind::Pot) {
+    auto bus = ports.open_spi(a.spi_device, a.spi_hz);
+    if (!bus) throw UsageError(a.key("spi_device") + ": " + bus.error().message);
+    return linux_os::make_mcp41010_drive(std::move(bus).value(), a.wiper,
+                                         "MCP41010 on " + a.spi_device);
+  }
+  linux_os::PwmHBridgeConfig c;
+  c.chip_dir = pwm.chip_dir;
+  c.rpwm_channel = a.name == "az" ? pwm.az_rpwm : pwm.el_rpwm;
+  c.lpwm_channel = a.name == "az" ? pwm.az_lpwm : pwm.el_lpwm;
+  c.frequency_hz = pwm.frequency_hz;
+  c.dead_time_s = pwm.dead_time_s;
+  auto bridge = linux_os::PwmHBridge::open(c);
+  if (!bridge) {
+    throw UsageError(std::string("[pwm] ") + (a.name == "az" ? "azimuth" : "elevation") + ": " +
+                     bridge.error().message);
+  }
+  std::unique_ptr<linux_os::GpioOutput> enable;
+  if (a.enable) {
+    try {
+      enable = output_line(ports, *a.enable);
+    } catch (const UsageError&) {
+      (void)bridge.value().disable(0.0);
+      throw;
+    }
+  }
+  return linux_os::make_pwm_bridge_drive(
+      std::move(bridge).value(), std::move(enable),
+      a.enable ? "IBT-2 on sysfs PWM, enables on GPIO" : "IBT-2 on sysfs PWM");
+}
+
+std::unique_ptr<ports::AxisSensor> open_adc_sensor(const HardwareAxisConfig& a,
+                                                   HardwarePorts& ports) {
+  const std::string what = a.name + " pot (" + std::string(name_of(kAxisSensorKinds, a.sensor)) +
+                           " " + a.adc_device + " channel " + std::to_string(a.adc_channel) + ")";
+  if (a.sensor == AxisSensorKind::Mcp3008) {
+    auto bus = ports.open_spi(a.adc_device, 1'000'000);
+    if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
+    return linux_os::make_mcp3008_pot_sensor(std::move(bus).value(), a.adc_channel, a.pot, what);
+  }
+  return linux_os::make_ads1115_pot_sensor(ads1115_chip(a, ports), a.adc_channel, a.pot, what);
+}
+
+}  // namespace azt::app

@@ -1,0 +1,19 @@
+#pragma once
+// Both axes' drives and sensors: what a station backend is handed by the simulation, the Linux
+// devices or a Hamlib rotator box.
+
+#include <array>
+#include <memory>
+
+#include "azt/ports/axis_drive.hpp"
+#include "azt/ports/axis_sensor.hpp"
+
+namespace azt::ports {
+
+/// Azimuth first, then elevation.
+struct StationPorts {
+  std::array<std::unique_ptr<AxisDrive>, 2> drives;
+  std::array<std::unique_ptr<AxisSensor>, 2> sensors;
+};
+
+}  // namespace azt::ports
