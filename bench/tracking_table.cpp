@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
       const double l2 = window + lsb;
       const double hours = kHours - r.acquired_s.value_or(0.0) / 3600.0;
       StationSimSetup slew_setup = azt::sim::reference_station(bits, window);
-      slew_setup.az_plant.start_deg = 90.0;
+      slew_setup.plant.az.start_deg = 90.0;
       const auto slew = azt::sim::simulate_slew(slew_setup, azt::control::AzEl{270.0, 10.0}, 600.0);
       std::printf(
           "| %d | %.1f | %.4f | %.4f | %.4f | %.1f | %.1f | %.1f | %.1f | %.2f | %.4f | %.3f |%s\n",

@@ -16,7 +16,7 @@ namespace {
 /// The box's position comes every poll_s at best, over a bus: a report is stale only after five
 /// polls (and never sooner than a second). The box's own deadband is the window.
 control::StationControlConfig control_config(const DaemonConfig& config) {
-  control::StationControlConfig c = config.sim.setup.station.control_config();
+  control::StationControlConfig c = config.station.control_config();
   const double stale_s = std::max(1.0, 5.0 * config.hamlib.poll_s);
   for (control::SupervisorConfig* s : {&c.az_supervisor, &c.el_supervisor}) {
     s->stale_s = std::max(s->stale_s, stale_s);
@@ -35,10 +35,8 @@ std::unique_ptr<AntennaBackend> make_hamlib_backend(const DaemonConfig& config) 
   const std::string describe =
       "Hamlib rotator model " + std::to_string(config.hamlib.model) +
       (config.hamlib.device.empty() ? std::string() : " on " + config.hamlib.device);
-  const sim::StationSimSetup& s = config.sim.setup;
   return make_station_backend(
-      control_config(config), control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg},
-      s.station.corrections,
+      control_config(config), config.station.believed_start(), config.station.corrections,
       linux_os::make_hamlib_rotator_ports(std::move(rotator).value(), describe), describe);
 }
 

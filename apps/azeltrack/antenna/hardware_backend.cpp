@@ -26,7 +26,7 @@ control::AxisDriveConfig drive_config(const HardwareAxisConfig& a) {
 }
 
 control::StationControlConfig control_config(const DaemonConfig& config) {
-  control::StationControlConfig c = config.sim.setup.station.control_config();
+  control::StationControlConfig c = config.station.control_config();
   c.az_drive = drive_config(config.hardware.az);
   c.el_drive = drive_config(config.hardware.el);
   c.az_absolute = config.hardware.az.sensor != AxisSensorKind::Hub;
@@ -42,7 +42,7 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
   if (config.hardware.uses_hub()) {
     linux_os::HubSensorsConfig hub{
         config.hub,
-        {config.sim.mount.az.encoder_bits, config.sim.mount.el.encoder_bits},
+        {config.mount.az.encoder_bits, config.mount.el.encoder_bits},
         {axes[0]->sensor == AxisSensorKind::Hub, axes[1]->sensor == AxisSensorKind::Hub}};
     auto sensors = linux_os::open_hub_sensors(io, hub);
     if (!sensors) throw UsageError("[hub] device: " + sensors.error().message);
@@ -65,10 +65,8 @@ std::unique_ptr<AntennaBackend> make_hardware_backend(boost::asio::io_context& i
   ports::StationPorts p = open_ports(io, config, devices);
   const std::string describe = "az: " + p.drives[0]->describe() + ", " + p.sensors[0]->describe() +
                                "; el: " + p.drives[1]->describe() + ", " + p.sensors[1]->describe();
-  const sim::StationSimSetup& s = config.sim.setup;
-  return make_station_backend(control_config(config),
-                              control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg},
-                              s.station.corrections, std::move(p), describe);
+  return make_station_backend(control_config(config), config.station.believed_start(),
+                              config.station.corrections, std::move(p), describe);
 }
 
 std::unique_ptr<AntennaBackend> make_pwm_backend(boost::asio::io_context& io,

@@ -7,12 +7,10 @@
 namespace azt::app {
 
 std::unique_ptr<AntennaBackend> make_sim_backend(const DaemonConfig& config) {
-  const sim::StationSimSetup& s = config.sim.setup;
-  auto ports = sim::make_sim_station_ports(s);
+  auto ports = sim::make_sim_station_ports(config.sim);
   std::string describe = ports.sensors[0]->describe();
-  return make_station_backend(sim::station_control_config(s),
-                              control::AzEl{s.az_plant.start_deg, s.el_plant.start_deg},
-                              s.station.corrections, std::move(ports), std::move(describe));
+  return make_station_backend(sim::station_control_config(config.simulated()), config.start_mount(),
+                              config.station.corrections, std::move(ports), std::move(describe));
 }
 
 }  // namespace azt::app

@@ -59,21 +59,21 @@ nlohmann::json result_json(const sim::SimResult& r, const std::string& scenario,
 }
 
 sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double hours) {
-  const auto ephemeris = open_ephemeris(c.station.sky.ephemeris);
+  const auto ephemeris = open_ephemeris(c.sky.settings.ephemeris);
   astro::UtcInstant start = utc_now();
   if (!o.from.empty()) {
     auto parsed = astro::parse_iso8601_utc(o.from);
     if (!parsed) throw UsageError("--from: " + parsed.error().message);
     start = *parsed;
   }
-  time_scales_at(start, c.station.sky.dut1_s);  // validates the instant, warns once if needed
+  time_scales_at(start, c.sky.settings.dut1_s);  // validates the instant, warns once if needed
   sim::SkyTrackSetup track;
   track.ephemeris = ephemeris.get();
   track.target = o.scenario == "sun" ? astro::Target::sun() : astro::Target::moon();
-  track.observer = c.station.sky.observer;
-  track.atmosphere = c.station.sky.atmosphere;
+  track.observer = c.sky.settings.observer;
+  track.atmosphere = c.sky.settings.atmosphere;
   track.start = start;
-  track.dut1_s = c.station.sky.dut1_s;
+  track.dut1_s = c.sky.settings.dut1_s;
   track.leap_table = &leap_table();
   return sim::simulate_tracking(c.setup, sim::make_sky_track(track), hours * 3600.0);
 }
@@ -90,8 +90,8 @@ int run_pass(const SimConfig& c, const SimulateOptions& o) {
     if (!parsed) throw UsageError("--from: " + parsed.error().message);
     from = *parsed;
   }
-  const double dut1 = c.station.sky.dut1_s;
-  const astro::Observer& site = c.station.sky.observer;
+  const double dut1 = c.sky.settings.dut1_s;
+  const astro::Observer& site = c.sky.settings.observer;
   auto passes = find_satellite_passes(sat, from, 48.0, orbit::HorizonMask::flat(0.0), dut1, site);
   if (!passes) throw std::runtime_error(passes.error().message);
   const orbit::Pass* next = nullptr;
@@ -109,7 +109,7 @@ int run_pass(const SimConfig& c, const SimulateOptions& o) {
   const double prep_s = std::min(600.0, next->aos_s);
   const std::clock_t cpu_start = std::clock();
   auto r = sim::simulate_pass(sky.value(), mount, c.setup,
-                              {c.setup.az_plant.start_deg, c.setup.el_plant.start_deg}, prep_s);
+                              {c.setup.plant.az.start_deg, c.setup.plant.el.start_deg}, prep_s);
   if (!r) throw std::runtime_error(r.error().message);
   const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   const auto iso = [&from](double t) { return astro::format_iso8601_utc(utc_plus(from, t)); };

@@ -14,7 +14,7 @@
 #include "cli/commands.hpp"
 #include "common/sky_report.hpp"
 #include "common/usage_error.hpp"
-#include "config/station_config.hpp"
+#include "config/sky_config.hpp"
 
 namespace azt::app {
 namespace {
@@ -40,9 +40,9 @@ std::string row(const TargetReport& r) {
 
 /// `moon` now and `moon_later` one minute on: the Doppler drift an operator retunes for.
 std::string moon_lines(const TargetReport& moon, const TargetReport& moon_later,
-                       const StationConfig& c) {
+                       const SkyConfig& c) {
   const auto& p = moon.observation.place;
-  const double f = *c.sky.freq_mhz;
+  const double f = *c.settings.freq_mhz;
   const double drift_hz_min =
       astro::self_echo_doppler_hz(f, *moon_later.observation.place.range_rate_km_s) -
       astro::self_echo_doppler_hz(f, *p.range_rate_km_s);
@@ -55,7 +55,7 @@ std::string moon_lines(const TargetReport& moon, const TargetReport& moon_later,
       << astro::self_echo_doppler_hz(f, *p.range_rate_km_s) << " Hz (" << std::setprecision(1)
       << drift_hz_min << " Hz/min)" << std::noshowpos << std::setprecision(0);
   if (moon.dx_range_rate_km_s) {
-    out << "   DX " << c.sky.dx_grid << ": " << std::showpos
+    out << "   DX " << c.settings.dx_grid << ": " << std::showpos
         << astro::dx_echo_doppler_hz(f, *p.range_rate_km_s, *moon.dx_range_rate_km_s) << " Hz"
         << std::noshowpos << " (DX sees the Moon at el " << std::setprecision(1)
         << moon.dx_place->el_geometric_deg << "°)";
@@ -64,15 +64,15 @@ std::string moon_lines(const TargetReport& moon, const TargetReport& moon_later,
   return out.str();
 }
 
-std::string frame(const astro::Ephemeris& eph, const StationConfig& c,
+std::string frame(const astro::Ephemeris& eph, const SkyConfig& c,
                   const astro::UtcInstant& utc) {
-  const SkySnapshot snapshot(eph, c.sky, utc);
+  const SkySnapshot snapshot(eph, c.settings, utc);
   std::ostringstream out;
-  out << "azeltrack  " << astro::format_iso8601_utc(utc) << "  station " << c.sky.grid << " ("
-      << std::fixed << std::setprecision(4) << c.sky.observer.lat_deg << ", "
-      << c.sky.observer.lon_deg << ", " << std::setprecision(0) << c.sky.observer.height_m
+  out << "azeltrack  " << astro::format_iso8601_utc(utc) << "  station " << c.settings.grid << " ("
+      << std::fixed << std::setprecision(4) << c.settings.observer.lat_deg << ", "
+      << c.settings.observer.lon_deg << ", " << std::setprecision(0) << c.settings.observer.height_m
       << " m)  ephemeris " << eph.name() << "  refraction "
-      << astro::to_string(c.sky.atmosphere.model) << "\nTAI-UTC " << std::setprecision(0)
+      << astro::to_string(c.settings.atmosphere.model) << "\nTAI-UTC " << std::setprecision(0)
       << snapshot.time().tai_minus_utc_s << " s  DUT1 " << std::showpos << std::setprecision(3)
       << snapshot.time().dut1_s << std::noshowpos << " s  band " << c.band_name << "\n\n"
       << std::left << std::setw(20) << "target" << std::right << std::setw(8) << "az°"
@@ -86,7 +86,7 @@ std::string frame(const astro::Ephemeris& eph, const StationConfig& c,
   }
   if (moon) {
     const astro::UtcInstant later{astro::JulianDate{utc.jd.jd1, utc.jd.jd2 + 60.0 / 86400.0}};
-    out << moon_lines(*moon, SkySnapshot(eph, c.sky, later).observe(moon->target), c);
+    out << moon_lines(*moon, SkySnapshot(eph, c.settings, later).observe(moon->target), c);
   }
   return out.str();
 }
@@ -103,8 +103,8 @@ void wait_for_next_second() {
 }
 
 int run_watch(const WatchOptions& o) {
-  const StationConfig config = load_station_config(o.config);
-  const auto ephemeris = open_ephemeris(config.sky.ephemeris);
+  const SkyConfig config = load_sky_config(o.config);
+  const auto ephemeris = open_ephemeris(config.settings.ephemeris);
   std::optional<astro::UtcInstant> fixed;
   if (!o.at.empty()) {
     auto parsed = astro::parse_iso8601_utc(o.at);

@@ -8,7 +8,8 @@
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
 #include "config/hardware_config.hpp"
-#include "config/station_config.hpp"
+#include "config/sim_config.hpp"
+#include "config/sky_config.hpp"
 
 namespace azt::app {
 namespace {
@@ -215,11 +216,10 @@ PwmConfig read_pwm(const ConfigSection& s) {
 
 /// Four slots: the configured [[park]] entries in order, the rest from defaults inside the travel.
 std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
-    const ConfigFile& file, const sim::StationSimSetup& setup) {
-  const double el_low = setup.station.el_range.min_deg;
-  const double el_high = std::min(90.0, setup.station.el_range.max_deg);
-  const control::AzEl first =
-      setup.station.park_when_out_of_range.value_or(control::AzEl{180.0, el_low});
+    const ConfigFile& file, const control::StationSetup& station) {
+  const double el_low = station.el_range.min_deg;
+  const double el_high = std::min(90.0, station.el_range.max_deg);
+  const control::AzEl first = station.park_when_out_of_range.value_or(control::AzEl{180.0, el_low});
   std::array<control::ParkSlot, control::ModeController::kParkSlots> slots = {{
       {"park", first},
       {"stow", {180.0, el_high}},
@@ -236,7 +236,7 @@ std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
     if (slot.position.az_deg < 0.0 || slot.position.az_deg >= 360.0) {
       s.fail("az_deg", "must be 0 to 360");
     }
-    if (!control::plan_elevation(slot.position.el_deg, setup.station.el_range)) {
+    if (!control::plan_elevation(slot.position.el_deg, station.el_range)) {
       s.fail("el_deg", "must be inside [geometry] el_min_deg..el_max_deg");
     }
     slots[i] = slot;
@@ -259,24 +259,33 @@ void check_relay_lines(const DaemonConfig& c, const ConfigSection& antenna) {
 
 }  // namespace
 
+control::AzEl DaemonConfig::start_mount() const {
+  if (backend == BackendKind::Sim) return control::AzEl{sim.az.start_deg, sim.el.start_deg};
+  return station.believed_start();
+}
+
 proto::TargetLimits DaemonConfig::target_limits() const {
   proto::TargetLimits l;
-  l.az_min_deg = std::min(-180.0, sim.setup.station.az_range.min_deg);
-  l.az_max_deg = std::max(450.0, sim.setup.station.az_range.max_deg);
-  l.el_min_deg = sim.setup.station.el_range.min_deg;
-  l.el_max_deg = sim.setup.station.el_range.max_deg;
+  l.az_min_deg = std::min(-180.0, station.az_range.min_deg);
+  l.az_max_deg = std::max(450.0, station.az_range.max_deg);
+  l.el_min_deg = station.el_range.min_deg;
+  l.el_max_deg = station.el_range.max_deg;
   return l;
 }
 
 DaemonConfig daemon_config_from(const ConfigFile& file) {
   DaemonConfig c;
-  c.sim = sim_config_from(file);
+  const SimConfig sim = sim_config_from(file);
+  c.sky = sim.sky;
+  c.mount = sim.mount;
+  c.station = sim.setup.station;
+  c.sim = sim.setup.plant;
   const ConfigSection target = file.section("target", {"name"});
   c.start_target = target.text("name").value_or("moon");
   // "sat:NAME" is looked up in the satellite catalogue when the daemon starts.
   if (c.start_target != "stop" &&
       std::holds_alternative<NamedTarget>(target_from_name(c.start_target)) &&
-      !find_station_target(c.sim.station, c.start_target)) {
+      !find_sky_target(c.sky, c.start_target)) {
     target.fail("name", "'" + c.start_target +
                             "' is not a target of this station: sun, moon, a [sky] source, "
                             "sat:NAME, or \"stop\"");
@@ -338,8 +347,8 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   }
   c.web = read_web(
       file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));
-  c.park = read_park(file, c.sim.setup);
-  if (c.sim.setup.station.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
+  c.park = read_park(file, c.station);
+  if (c.station.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
   const ConfigSection log = file.section("log", {"level"});
   c.log_level = log.text("level").value_or("info");
   if (c.log_level != "debug" && c.log_level != "info" && c.log_level != "warn") {

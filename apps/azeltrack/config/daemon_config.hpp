@@ -6,14 +6,17 @@
 #include <vector>
 
 #include "azt/control/modes.hpp"
+#include "azt/control/station_setup.hpp"
 #include "azt/linux/gpio.hpp"
 #include "azt/linux/hamlib_rotator.hpp"
 #include "azt/linux/hub_serial_link.hpp"
 #include "azt/proto/target_limits.hpp"
 #include "azt/sequencer/tr_sequencer.hpp"
+#include "azt/sim/station_sim.hpp"
 #include "config/config_choice.hpp"
 #include "config/hardware_config.hpp"
-#include "config/sim_config.hpp"
+#include "config/mount_config.hpp"
+#include "config/sky_config.hpp"
 
 namespace azt::app {
 
@@ -94,7 +97,10 @@ struct WebConfig {
 
 /// Everything `serve` reads (README "Configuration").
 struct DaemonConfig {
-  SimConfig sim;                      ///< station, sky, control, geometry, and the simulated plant
+  SkyConfig sky;                      ///< where the station is and what it can point at
+  MountConfig mount;                  ///< [mount.az] / [mount.el]
+  control::StationSetup station;      ///< what the controller knows, for every backend
+  sim::PlantSetup sim;                ///< [sim.*]: the simulated plants (the `sim` backend only)
   std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
   BackendKind backend = BackendKind::Sim;  ///< [antenna] backend
   linux_os::HamlibConfig hamlib;
@@ -117,6 +123,11 @@ struct DaemonConfig {
   std::string log_level = "info";
   bool jog_enabled = true;
 
+  /// Where the axes are believed to be before the first reading: the simulated plants' start
+  /// on the `sim` backend, otherwise the station's own belief (StationSetup::believed_start).
+  [[nodiscard]] control::AzEl start_mount() const;
+  /// The simulated station: this station on the [sim.*] plants.
+  [[nodiscard]] sim::StationSimSetup simulated() const { return {station, sim}; }
   /// The targets PC programs may send: the travel in sky terms, azimuth in any convention
   /// clients use (−180..450).
   [[nodiscard]] proto::TargetLimits target_limits() const;

@@ -2,21 +2,27 @@
 
 #include "azt/sim/station_sim.hpp"
 #include "config/mount_config.hpp"
-#include "config/station_config.hpp"
+#include "config/sky_config.hpp"
 
 namespace azt::app {
 
 class ConfigFile;
 
-/// Everything `simulate` reads: the station and sky (station_config.hpp), the mount
-/// ([mount.az], [mount.el]), the controller ([control]), the travel ([geometry]) and the
-/// simulated plants ([sim.az], [sim.el], [sim]). `setup`'s controller and supervisor settings come
-/// from the mount, never from the plants.
+/// Everything `simulate` reads: the sky (sky_config.hpp), the mount ([mount.az], [mount.el]),
+/// the station as its controller knows it (station_setup_config.hpp) and the simulated plants
+/// ([sim.az], [sim.el], [sim]). The controller's settings come from the mount, never from the
+/// plants.
 struct SimConfig {
-  StationConfig station;
+  SkyConfig sky;
   MountConfig mount;
   sim::StationSimSetup setup;
 };
+
+/// The simulated plants of [sim.az], [sim.el] and [sim]: the mount's rate and encoders with their
+/// own imperfections, start angles, end stops (the travel's by default) and faults. Throws
+/// UsageError naming the key on any invalid value.
+sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& mount,
+                                 const control::StationSetup& station);
 
 /// Throws UsageError naming the key on any missing or invalid value.
 SimConfig sim_config_from(const ConfigFile& file);

@@ -10,7 +10,7 @@
 #include "azt/astro/time_scales.hpp"
 #include "common/sky_report.hpp"
 #include "common/usage_error.hpp"
-#include "config/station_config.hpp"
+#include "config/sky_config.hpp"
 
 namespace azt::app {
 namespace {
@@ -91,8 +91,8 @@ const DaemonConsole::Snapshot& DaemonConsole::snapshot() {
   Snapshot s;
   s.unix_s = now;
   try {
-    const StationConfig& station = p_.config.sim.station;
-    const SkySnapshot sky(p_.ephemeris, station.sky, astro::UtcInstant::from_unix_seconds(now));
+    const SkyConfig& station = p_.config.sky;
+    const SkySnapshot sky(p_.ephemeris, station.settings, astro::UtcInstant::from_unix_seconds(now));
     for (const auto& target : station.targets) {
       if (target.kind == astro::Target::Kind::Spacecraft) {
         // Outside its table a spacecraft is listed without a position; the others go on.
@@ -120,7 +120,7 @@ const DaemonConsole::Snapshot& DaemonConsole::snapshot() {
              {"az_deg", r.observation.place.az_deg},
              {"el_deg", r.observation.el_deg}};
       if (target.kind == astro::Target::Kind::Moon) {
-        const json full = report_json(r, sky, station.sky, p_.ephemeris.name());
+        const json full = report_json(r, sky, station.settings, p_.ephemeris.name());
         json doppler = json::object();
         for (const auto& b : full["bands"])
           doppler[b["band"].get<std::string>()] = b["echo_doppler_hz"];
@@ -187,8 +187,8 @@ json DaemonConsole::state() {
              {"el", target["el_deg"].get<double>() - here->el_deg}};
   }
   const Snapshot& sky = snapshot();
-  const auto& c = p_.config.sim.setup.station.corrections;
-  const auto& obs = p_.config.sim.station.sky.observer;
+  const auto& c = p_.config.station.corrections;
+  const auto& obs = p_.config.sky.settings.observer;
   return {{"utc", utc_text(p_.unix_s())},
           {"mode", std::string(control::to_string(p_.modes.mode()))},
           {"who", p_.commands.commander()},
@@ -204,7 +204,7 @@ json DaemonConsole::state() {
             {"az_offset_deg", c.offsets.az_deg},
             {"el_offset_deg", c.offsets.el_deg}}},
           {"station",
-           {{"grid", p_.config.sim.station.sky.grid},
+           {{"grid", p_.config.sky.settings.grid},
             {"lat_deg", obs.lat_deg},
             {"lon_deg", obs.lon_deg},
             {"alt_m", obs.height_m}}},
@@ -218,8 +218,8 @@ json DaemonConsole::state() {
 
 json DaemonConsole::config() {
   const DaemonConfig& c = p_.config;
-  const auto& corr = c.sim.setup.station.corrections;
-  const auto& obs = c.sim.station.sky.observer;
+  const auto& corr = c.station.corrections;
+  const auto& obs = c.sky.settings.observer;
   json park = json::array();
   for (std::size_t i = 0; i < p_.modes.park_slots().size(); ++i) {
     const auto& slot = p_.modes.park_slots()[i];
@@ -234,21 +234,21 @@ json DaemonConsole::config() {
   }
   return {
       {"station",
-       {{"grid", c.sim.station.sky.grid},
+       {{"grid", c.sky.settings.grid},
         {"lat_deg", obs.lat_deg},
         {"lon_deg", obs.lon_deg},
         {"alt_m", obs.height_m}}},
-      {"band", c.sim.station.band_name},
-      {"dx_grid", c.sim.station.sky.dx_grid},
+      {"band", c.sky.band_name},
+      {"dx_grid", c.sky.settings.dx_grid},
       {"control",
-       {{"window_deg", c.sim.setup.station.az_control.window_deg},
-        {"ramp_s", c.sim.setup.station.az_control.ramp_s},
-        {"tracking_speed", c.sim.setup.station.az_control.tracking_speed}}},
+       {{"window_deg", c.station.az_control.window_deg},
+        {"ramp_s", c.station.az_control.ramp_s},
+        {"tracking_speed", c.station.az_control.tracking_speed}}},
       {"geometry",
-       {{"az_min_deg", c.sim.setup.station.az_range.min_deg},
-        {"az_max_deg", c.sim.setup.station.az_range.max_deg},
-        {"el_min_deg", c.sim.setup.station.el_range.min_deg},
-        {"el_max_deg", c.sim.setup.station.el_range.max_deg}}},
+       {{"az_min_deg", c.station.az_range.min_deg},
+        {"az_max_deg", c.station.az_range.max_deg},
+        {"el_min_deg", c.station.el_range.min_deg},
+        {"el_max_deg", c.station.el_range.max_deg}}},
       {"corrections",
        {{"az_offset_deg", corr.offsets.az_deg},
         {"el_offset_deg", corr.offsets.el_deg},
@@ -277,7 +277,7 @@ json DaemonConsole::targets() {
 
 json DaemonConsole::sky(double hours) {
   json out{{"now", snapshot().targets}};
-  const StationConfig& station = p_.config.sim.station;
+  const SkyConfig& station = p_.config.sky;
   json moon_path = json::array();
   json sun_path = json::array();
   const double start = std::floor(p_.unix_s() / 600.0) * 600.0;
@@ -285,7 +285,7 @@ json DaemonConsole::sky(double hours) {
   for (int i = 0; i <= steps; ++i) {
     const double t = start + 600.0 * i;
     try {
-      const SkySnapshot snap(p_.ephemeris, station.sky, astro::UtcInstant::from_unix_seconds(t));
+      const SkySnapshot snap(p_.ephemeris, station.settings, astro::UtcInstant::from_unix_seconds(t));
       const auto moon = snap.observe(astro::Target::moon()).observation;
       const auto sun = snap.observe(astro::Target::sun()).observation;
       moon_path.push_back(
@@ -335,7 +335,7 @@ ApiError DaemonConsole::save_refusal(const std::string& field, std::string messa
 }
 
 void DaemonConsole::apply_corrections(const control::PositionCorrections& corrections) {
-  p_.config.sim.setup.station.corrections = corrections;
+  p_.config.station.corrections = corrections;
   p_.antenna.set_corrections(corrections);
 }
 
@@ -429,7 +429,7 @@ void DaemonConsole::act_correction(const json& body, ActDone done) {
         t.insert_or_assign(axis + "_user_deg", axis == "az" ? user.az_deg() : user.el_deg());
       },
       [this] {
-        const auto& c = p_.store.config().sim.setup.station.corrections;
+        const auto& c = p_.store.config().station.corrections;
         apply_corrections(c);
         return json{{"az_user_deg", c.user.az_deg()}, {"el_user_deg", c.user.el_deg()}};
       },
@@ -460,9 +460,9 @@ void DaemonConsole::act_station(const json& body, ActDone done) {
   save(
       body.contains("grid") ? "grid" : "lat_deg", std::move(change),
       [this] {
-        p_.config.sim.station = p_.store.config().sim.station;
+        p_.config.sky = p_.store.config().sky;
         if (p_.sky.target()) {
-          const auto again = find_station_target(p_.config.sim.station, p_.sky.target()->name);
+          const auto again = find_sky_target(p_.config.sky, p_.sky.target()->name);
           p_.sky.follow(again ? *again : *p_.sky.target());  // recomputed for the new place
         }
         snapshot_.unix_s = -1.0;
@@ -478,10 +478,10 @@ void DaemonConsole::act_band(const json& body, ActDone done) {
         table_at(root, "sky").insert_or_assign("band", band);
       },
       [this] {
-        p_.config.sim.station.band_name = p_.store.config().sim.station.band_name;
-        p_.config.sim.station.sky.freq_mhz = p_.store.config().sim.station.sky.freq_mhz;
+        p_.config.sky.band_name = p_.store.config().sky.band_name;
+        p_.config.sky.settings.freq_mhz = p_.store.config().sky.settings.freq_mhz;
         snapshot_.unix_s = -1.0;
-        return json{{"band", p_.config.sim.station.band_name}};
+        return json{{"band", p_.config.sky.band_name}};
       },
       std::move(done));
 }
@@ -498,10 +498,10 @@ void DaemonConsole::act_dx(const json& body, ActDone done) {
         }
       },
       [this] {
-        p_.config.sim.station.sky.dx = p_.store.config().sim.station.sky.dx;
-        p_.config.sim.station.sky.dx_grid = p_.store.config().sim.station.sky.dx_grid;
+        p_.config.sky.settings.dx = p_.store.config().sky.settings.dx;
+        p_.config.sky.settings.dx_grid = p_.store.config().sky.settings.dx_grid;
         snapshot_.unix_s = -1.0;
-        return json{{"dx_grid", p_.config.sim.station.sky.dx_grid}};
+        return json{{"dx_grid", p_.config.sky.settings.dx_grid}};
       },
       std::move(done));
 }
@@ -518,7 +518,7 @@ void DaemonConsole::act_offsets(const json& body, ActDone done) {
         if (el) t.insert_or_assign("el_offset_deg", *el);
       },
       [this] {
-        apply_corrections(p_.store.config().sim.setup.station.corrections);
+        apply_corrections(p_.store.config().station.corrections);
         return json::object();
       },
       std::move(done));
@@ -564,7 +564,7 @@ void DaemonConsole::act_tilt(const json& body, ActDone done) {
         t.insert_or_assign("tilt_el_deg", a);
       },
       [this] {
-        apply_corrections(p_.store.config().sim.setup.station.corrections);
+        apply_corrections(p_.store.config().station.corrections);
         return json::object();
       },
       std::move(done));

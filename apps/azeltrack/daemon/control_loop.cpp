@@ -35,7 +35,7 @@ int StationDaemon::run() {
   deadline_ = SteadyClock::now() + period_;
   arm_tick();
   spdlog::info("serving {} with {}; tick {:.0f} Hz", options_.config_path, antenna_->describe(),
-               1.0 / config_.sim.setup.station.tick_s);
+               1.0 / config_.station.tick_s);
   notifier_.ready("tracking " + modes_.who());
   if (options_.on_loop_started) asio::post(io_, [this] { options_.on_loop_started(io_); });
   try {

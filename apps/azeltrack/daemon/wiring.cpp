@@ -63,35 +63,33 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       store_(store),
       options_(options),
       start_(SteadyClock::now()),
-      ephemeris_(open_ephemeris(config_.sim.station.sky.ephemeris)),
-      sky_(*ephemeris_, config_.sim.station),
-      modes_(config_.park, config_.out_of_range, config_.sim.setup.station.el_range.min_deg),
+      ephemeris_(open_ephemeris(config_.sky.settings.ephemeris)),
+      sky_(*ephemeris_, config_.sky),
+      modes_(config_.park, config_.out_of_range, config_.station.el_range.min_deg),
       gpio_(config_.gpio.any_line() || config_.hardware.uses_gpio()
                 ? linux_os::make_libgpiod_provider(io_)
                 : nullptr),
       sequencer_(make_sequencer()),
       antenna_(make_guarded(make_backend())),
       satellites_(satellite_settings(), [](const std::string& line) { spdlog::info("{}", line); }),
-      commands_(
-          StationCommandParts{modes_, *antenna_, sky_, &satellites_, config_.target_limits(),
-                              config_.sim.setup.station.el_range, [this] { return now_s(); },
-                              [] { return unix_now_s(); }, config_.sim.setup.az_plant.start_deg,
-                              [this](const CommandSource& source, const CommandRecord& record) {
-                                motion_event(source, record);
-                              },
-                              [this](const CommandSource& source, const Refusal& refusal) {
-                                control_event(source.name + ": refused: " + refusal.reason);
-                              }}),
+      commands_(StationCommandParts{
+          modes_, *antenna_, sky_, &satellites_, config_.target_limits(), config_.station.el_range,
+          [this] { return now_s(); }, [] { return unix_now_s(); }, config_.start_mount().az_deg,
+          [this](const CommandSource& source, const CommandRecord& record) {
+            motion_event(source, record);
+          },
+          [this](const CommandSource& source, const Refusal& refusal) {
+            control_event(source.name + ": refused: " + refusal.reason);
+          }}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
-          "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " +
-              config_.sim.station.sky.grid,
+          "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " + config_.sky.settings.grid,
           [this](const std::string& line) { control_event(line); }),
       // SIGHUP too: a closed terminal must stop the motors, not kill the process mid-move.
       signals_(io_, SIGINT, SIGTERM, SIGHUP),
       timer_(io_),
       period_(std::chrono::duration_cast<SteadyClock::duration>(
-          std::chrono::duration<double>(config_.sim.setup.station.tick_s))) {}
+          std::chrono::duration<double>(config_.station.tick_s))) {}
 
 std::unique_ptr<AntennaBackend> StationDaemon::make_backend() {
   if (config_.backend == BackendKind::Hamlib) return make_hamlib_backend(config_);
@@ -146,15 +144,15 @@ SatelliteSettings StationDaemon::satellite_settings() const {
                  : (std::filesystem::path(options_.config_path).parent_path() / file).string();
   }
   s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
-  s.dut1_s = config_.sim.station.sky.dut1_s;
-  s.site = config_.sim.station.sky.observer;
-  s.mount = track::mount_geometry(config_.sim.setup.station);  // the mount's, not the plant's
+  s.dut1_s = config_.sky.settings.dut1_s;
+  s.site = config_.sky.settings.observer;
+  s.mount = track::mount_geometry(config_.station);  // the mount's, not the plant's
   return s;
 }
 
 double StationDaemon::mount_az() const {
   const auto p = antenna_->position(now_s());
-  return p ? p->az_mount_deg : config_.sim.setup.az_plant.start_deg;
+  return p ? p->az_mount_deg : config_.start_mount().az_deg;
 }
 
 Offload StationDaemon::off_loop() {

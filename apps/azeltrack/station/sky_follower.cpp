@@ -21,7 +21,7 @@ astro::UtcInstant utc_from_unix(double unix_s) {
 }  // namespace
 
 std::optional<astro::Target> SkyFollower::find(const std::string& name) const {
-  return find_station_target(station_, name);
+  return find_sky_target(station_, name);
 }
 
 void SkyFollower::follow(const astro::Target& target) {
@@ -31,7 +31,7 @@ void SkyFollower::follow(const astro::Target& target) {
 
 std::optional<control::AzEl> SkyFollower::compute(double utc_unix_s) {
   try {
-    const SkySnapshot snapshot(ephemeris_, station_.sky, utc_from_unix(utc_unix_s));
+    const SkySnapshot snapshot(ephemeris_, station_.settings, utc_from_unix(utc_unix_s));
     const TargetReport r = snapshot.observe(*target_);
     return control::AzEl{r.observation.place.az_deg, r.observation.el_deg};
   } catch (const UsageError& e) {

@@ -9,7 +9,7 @@
 #include "azt/astro/ephemeris.hpp"
 #include "azt/astro/target.hpp"
 #include "azt/control/modes.hpp"
-#include "config/station_config.hpp"
+#include "config/sky_config.hpp"
 
 namespace azt::app {
 
@@ -20,7 +20,7 @@ struct SkyFix {
 
 class SkyFollower {
  public:
-  SkyFollower(const astro::Ephemeris& ephemeris, const StationConfig& station)
+  SkyFollower(const astro::Ephemeris& ephemeris, const SkyConfig& station)
       : ephemeris_(ephemeris), station_(station) {}
 
   /// Finds a target by name among the configured ones (case-insensitive: "moon", "casa").
@@ -37,7 +37,7 @@ class SkyFollower {
   std::optional<control::AzEl> compute(double utc_unix_s);
 
   const astro::Ephemeris& ephemeris_;
-  const StationConfig& station_;
+  const SkyConfig& station_;
   std::optional<astro::Target> target_;
   double t0_ = -1.0;  ///< whole second of the cached pair
   std::optional<control::AzEl> p0_;

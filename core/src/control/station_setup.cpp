@@ -1,5 +1,7 @@
 #include "azt/control/station_setup.hpp"
 
+#include <algorithm>
+
 namespace azt::control {
 
 StationControlConfig StationSetup::control_config() const {
@@ -12,6 +14,11 @@ StationControlConfig StationSetup::control_config() const {
   c.el_range = el_range;
   c.tick_s = tick_s;
   return c;
+}
+
+AzEl StationSetup::believed_start() const {
+  return AzEl{std::clamp(0.0, az_range.min_deg, az_range.max_deg),
+              std::clamp(0.0, el_range.min_deg, el_range.max_deg)};
 }
 
 }  // namespace azt::control

@@ -68,8 +68,8 @@ track::MountGeometry mount_geometry(const StationSimSetup& setup) {
   track::MountGeometry m;
   m.az = setup.station.az_range;
   m.el = setup.station.el_range;
-  m.max_az_rate_deg_s = setup.az_plant.max_rate_deg_s;
-  m.max_el_rate_deg_s = setup.el_plant.max_rate_deg_s;
+  m.max_az_rate_deg_s = setup.plant.az.max_rate_deg_s;
+  m.max_el_rate_deg_s = setup.plant.el.max_rate_deg_s;
   return m;
 }
 
@@ -81,15 +81,15 @@ Result<PassSimResult> simulate_pass(const std::vector<track::SkyPoint>& sky,
   StationSimSetup s = setup;
   s.station.az_range = mount.az;
   s.station.el_range = mount.el;
-  s.az_plant.start_deg = start.az_deg;
-  s.el_plant.start_deg = start.el_deg;
-  s.az_plant.min_deg = mount.az.min_deg - 5.0;
-  s.az_plant.max_deg = mount.az.max_deg + 5.0;
-  s.el_plant.min_deg = mount.el.min_deg - 5.0;
-  s.el_plant.max_deg = mount.el.max_deg + 5.0;
+  s.plant.az.start_deg = start.az_deg;
+  s.plant.el.start_deg = start.el_deg;
+  s.plant.az.min_deg = mount.az.min_deg - 5.0;
+  s.plant.az.max_deg = mount.az.max_deg + 5.0;
+  s.plant.el.min_deg = mount.el.min_deg - 5.0;
+  s.plant.el.max_deg = mount.el.max_deg + 5.0;
   control::StationController station(station_control_config(s), start);
-  AxisPlant az(s.az_plant);
-  AxisPlant el(s.el_plant);
+  AxisPlant az(s.plant.az);
+  AxisPlant el(s.plant.el);
 
   PassSimResult out;
   out.flip = plan.value().flip;

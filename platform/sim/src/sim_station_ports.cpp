@@ -12,9 +12,8 @@ namespace {
 /// What the two axes' ports share: the plants, the link and the schedule of faults.
 class SimRig {
  public:
-  explicit SimRig(const StationSimSetup& s)
-      : faults_(s.plant_faults),
-        antenna_(s.az_plant, s.el_plant, s.frame_version, s.link, s.seed) {}
+  explicit SimRig(const PlantSetup& p)
+      : faults_(p.faults), antenna_(p.az, p.el, p.frame_version, p.link, p.seed) {}
 
   void set_duty(std::size_t axis, double duty) { (axis == 0 ? az_duty_ : el_duty_) = duty; }
 
@@ -83,8 +82,8 @@ class SimSensor final : public ports::AxisSensor {
 
 }  // namespace
 
-ports::StationPorts make_sim_station_ports(const StationSimSetup& setup) {
-  auto rig = std::make_shared<SimRig>(setup);
+ports::StationPorts make_sim_station_ports(const PlantSetup& plant) {
+  auto rig = std::make_shared<SimRig>(plant);
   ports::StationPorts p;
   for (std::size_t i = 0; i < 2; ++i) {
     p.drives.at(i) = std::make_unique<SimDrive>(rig, i);

@@ -39,10 +39,11 @@ class StationLoop {
  public:
   explicit StationLoop(const StationSimSetup& setup)
       : setup_(setup),
-        faults_(setup.plant_faults),
-        antenna_(setup.az_plant, setup.el_plant, setup.frame_version, setup.link, setup.seed),
+        faults_(setup.plant.faults),
+        antenna_(setup.plant.az, setup.plant.el, setup.plant.frame_version, setup.plant.link,
+                 setup.plant.seed),
         station_(station_control_config(setup),
-                 AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}) {
+                 AzEl{setup.plant.az.start_deg, setup.plant.el.start_deg}) {
     station_.set_corrections(setup.station.corrections);
   }
 
@@ -60,7 +61,7 @@ class StationLoop {
         max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(axis.duty));
       }
     }
-    antenna_.step(duties.az, duties.el, setup_.station.tick_s, setup_.plant_substeps);
+    antenna_.step(duties.az, duties.el, setup_.station.tick_s, setup_.plant.substeps);
   }
 
   [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
@@ -119,8 +120,8 @@ control::StationControlConfig station_control_config(const StationSimSetup& setu
   control::StationControlConfig c = setup.station.control_config();
   // The simulated station reads the plants' encoders (the same as the mount's when the setup
   // comes from a configuration file; tests may give the plants other resolutions).
-  c.az_control.lsb_deg = proto::hub_resolution_deg(setup.az_plant.encoder_bits);
-  c.el_control.lsb_deg = proto::hub_resolution_deg(setup.el_plant.encoder_bits);
+  c.az_control.lsb_deg = proto::hub_resolution_deg(setup.plant.az.encoder_bits);
+  c.el_control.lsb_deg = proto::hub_resolution_deg(setup.plant.el.encoder_bits);
   return c;
 }
 
@@ -154,8 +155,8 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
     const double e_az = wrapped_difference(target->az_deg, loop.az_plant().shaft_deg());
     const double e_el = target->el_deg - loop.el_plant().shaft_deg();
     if (!result.acquired_s) {
-      const double az_ok = setup.station.az_control.window_deg + l2_slack * lsb_deg(setup.az_plant);
-      const double el_ok = setup.station.el_control.window_deg + l2_slack * lsb_deg(setup.el_plant);
+      const double az_ok = setup.station.az_control.window_deg + l2_slack * lsb_deg(setup.plant.az);
+      const double el_ok = setup.station.el_control.window_deg + l2_slack * lsb_deg(setup.plant.el);
       if (std::fabs(e_az) <= az_ok && std::fabs(e_el) <= el_ok) result.acquired_s = t;
     }
     if (result.acquired_s) {
@@ -188,12 +189,12 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
   StationLoop loop(setup);
   SimResult result;
   const double az_target =
-      control::plan_azimuth(setup.az_plant.start_deg, to.az_deg, setup.station.az_range);
-  const double az_dir = az_target >= setup.az_plant.start_deg ? 1.0 : -1.0;
-  const double el_dir = to.el_deg >= setup.el_plant.start_deg ? 1.0 : -1.0;
+      control::plan_azimuth(setup.plant.az.start_deg, to.az_deg, setup.station.az_range);
+  const double az_dir = az_target >= setup.plant.az.start_deg ? 1.0 : -1.0;
+  const double el_dir = to.el_deg >= setup.plant.el.start_deg ? 1.0 : -1.0;
   result.slew_min_time_s =
-      std::max(std::fabs(az_target - setup.az_plant.start_deg) / setup.az_plant.max_rate_deg_s,
-               std::fabs(to.el_deg - setup.el_plant.start_deg) / setup.el_plant.max_rate_deg_s);
+      std::max(std::fabs(az_target - setup.plant.az.start_deg) / setup.plant.az.max_rate_deg_s,
+               std::fabs(to.el_deg - setup.plant.el.start_deg) / setup.plant.el.max_rate_deg_s);
   double rest_since = -1.0;
   const std::uint64_t ticks =
       static_cast<std::uint64_t>(std::llround(max_duration_s / setup.station.tick_s));

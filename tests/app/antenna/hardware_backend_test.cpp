@@ -105,8 +105,8 @@ pot_calibration = [0, 0.0, 26000, 90.0]
 struct Rig {
   explicit Rig(const std::string& extra = "")
       : config(daemon_config_from(ConfigFile::parse(kStation + extra, "hw.toml"))),
-        az(config.sim.setup.az_plant),
-        el(config.sim.setup.el_plant) {
+        az(config.sim.az),
+        el(config.sim.el) {
     ports.gpio = &gpio;
     ports.open_spi = [this](const std::string& path,
                             std::uint32_t) -> Result<std::unique_ptr<linux_os::SpiBus>> {

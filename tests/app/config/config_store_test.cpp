@@ -73,7 +73,7 @@ class ConfigStoreTest : public ::testing::Test {
 TEST_F(ConfigStoreTest, OpensAValidFile) {
   write(path_, kValid);
   const ConfigStore store = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(store.config().sim.setup.station.az_control.window_deg, 0.1);
+  EXPECT_DOUBLE_EQ(store.config().station.az_control.window_deg, 0.1);
   EXPECT_EQ(store.config().start_target, "stop");
   EXPECT_EQ(store.config().park[0].name, "south");
   EXPECT_TRUE(store.notices().empty());
@@ -87,10 +87,10 @@ TEST_F(ConfigStoreTest, SetSavesValidatedAndKeepsTheOldFileAsBackup) {
   write(path_, kValid);
   ConfigStore store = ConfigStore::open(path_);
   ASSERT_TRUE(store.set("control.window_deg", "0.25").ok());
-  EXPECT_DOUBLE_EQ(store.config().sim.setup.station.az_control.window_deg, 0.25);
+  EXPECT_DOUBLE_EQ(store.config().station.az_control.window_deg, 0.25);
   EXPECT_EQ(read(path_ + ".bak"), kValid);
   const ConfigStore again = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(again.config().sim.setup.station.az_control.window_deg, 0.25);
+  EXPECT_DOUBLE_EQ(again.config().station.az_control.window_deg, 0.25);
   EXPECT_EQ(again.config().start_target, "stop");  // everything else kept
   ASSERT_TRUE(store.set("park.1.az_deg", "200.5").ok());
   EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().park[0].position.az_deg, 200.5);
@@ -122,7 +122,7 @@ TEST_F(ConfigStoreTest, BadChangesAreRefusedAndChangeNothing) {
   }
   EXPECT_EQ(read(path_), kValid);
   EXPECT_FALSE(fs::exists(path_ + ".bak"));
-  EXPECT_DOUBLE_EQ(store.config().sim.setup.station.az_control.window_deg, 0.1);
+  EXPECT_DOUBLE_EQ(store.config().station.az_control.window_deg, 0.1);
 }
 
 TEST_F(ConfigStoreTest, ValidationErrorsNameTheKeyAndLineAndDoNotFallBack) {
@@ -148,7 +148,7 @@ TEST_F(ConfigStoreTest, CorruptPrimaryFallsBackToTheBackupLoudly) {
     ASSERT_TRUE(store.set("control.window_deg", "0.3").ok());
     EXPECT_EQ(read(path_ + ".corrupt"), corrupt);
     EXPECT_EQ(read(path_ + ".bak"), kValid);
-    EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().sim.setup.station.az_control.window_deg,
+    EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().station.az_control.window_deg,
                      0.3);
     fs::remove(path_ + ".corrupt");
   }
@@ -174,7 +174,7 @@ TEST_F(ConfigStoreTest, SchemaZeroIsMigratedAndSavedIdempotently) {
       "[station]\ngrid = \"FN06HE\"\nheight_m = 250.0\n[target]\nname = \"stop\"\n";
   write(path_, v0);
   ConfigStore store = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(store.config().sim.station.sky.observer.height_m, 250.0);
+  EXPECT_DOUBLE_EQ(store.config().sky.settings.observer.height_m, 250.0);
   ASSERT_EQ(store.notices().size(), 2U);
   EXPECT_NE(store.notices()[0].find("height_m renamed to alt_m"), std::string::npos);
   EXPECT_EQ(read(path_), v0);  // nothing written until a change is saved
@@ -208,7 +208,7 @@ TEST_F(ConfigStoreTest, CorrectionsAndTheTiltTableAreSettings) {
   write(path_, kValid + "[corrections]\naz_offset_deg = -3.4\nel_user_deg = 0.25\ntilt_el_deg = " +
                    tilt + "\n");
   ConfigStore store = ConfigStore::open(path_);
-  const auto& c = store.config().sim.setup.station.corrections;
+  const auto& c = store.config().station.corrections;
   EXPECT_DOUBLE_EQ(c.offsets.az_deg, -3.4);
   EXPECT_EQ(c.user.el_steps(), 25);
   EXPECT_DOUBLE_EQ(c.tilt.entries_deg()[7], 0.2);
@@ -222,7 +222,7 @@ TEST_F(ConfigStoreTest, CorrectionsAndTheTiltTableAreSettings) {
                   })
                   .ok());
   EXPECT_DOUBLE_EQ(
-      ConfigStore::open(path_).config().sim.setup.station.corrections.tilt.entries_deg()[3], 1.25);
+      ConfigStore::open(path_).config().station.corrections.tilt.entries_deg()[3], 1.25);
   for (const char* bad : {"[1.0, 2.0]", "6.0"}) {
     const auto r = store.set("corrections.tilt_el_deg", bad);
     ASSERT_FALSE(r.ok()) << bad;
@@ -293,7 +293,7 @@ TEST_F(ConfigStoreTest, RemovedKeysLoseTheirLine) {
   EXPECT_EQ(text.find("FN06HE"), std::string::npos) << text;
   EXPECT_NE(text.find("alt_m = 300.0\nlat_deg = 52.0\nlon_deg = 5.0\n"), std::string::npos) << text;
   EXPECT_NE(text.find("# the seed's movement window"), std::string::npos);
-  EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().sim.station.sky.observer.lat_deg, 52.0);
+  EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().sky.settings.observer.lat_deg, 52.0);
 }
 
 TEST_F(ConfigStoreTest, StartTargetsAreFoundByNameOrAlias) {
@@ -312,7 +312,7 @@ TEST_F(ConfigStoreTest, TwoWritersNeverLoseEachOthersChanges) {
   ASSERT_TRUE(a.set("control.window_deg", "0.4").ok());
   ASSERT_TRUE(b.set("target.name", "\"sun\"").ok());  // b loaded before a saved
   const ConfigStore now = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(now.config().sim.setup.station.az_control.window_deg, 0.4);
+  EXPECT_DOUBLE_EQ(now.config().station.az_control.window_deg, 0.4);
   EXPECT_EQ(now.config().start_target, "sun");
 }
 
@@ -340,7 +340,7 @@ TEST_F(ConfigStoreTest, ACorruptFileIsRebuiltFromTheLastSaveNotFromTheOlderBacku
   write(path_, "\xff\xfe garbage [[[");
   ASSERT_TRUE(store.set("target.name", "\"sun\"").ok());
   const ConfigStore again = ConfigStore::open(path_);
-  EXPECT_DOUBLE_EQ(again.config().sim.setup.station.az_control.window_deg, 0.3);
+  EXPECT_DOUBLE_EQ(again.config().station.az_control.window_deg, 0.3);
   EXPECT_EQ(again.config().start_target, "sun");
   EXPECT_EQ(read(path_ + ".corrupt"), "\xff\xfe garbage [[[");
   ASSERT_FALSE(store.notices().empty());
@@ -419,8 +419,8 @@ TEST_F(ConfigStoreTest, SchemaOneSimRatesBecomeTheMountsWithTheSameControllerSet
   const std::string v2_path = (dir_ / "v2.toml").string();
   write(v2_path, v2);
   ConfigStore now = ConfigStore::open(v2_path);
-  const auto a = sim::station_control_config(old.config().sim.setup);
-  const auto b = sim::station_control_config(now.config().sim.setup);
+  const auto a = sim::station_control_config(old.config().simulated());
+  const auto b = sim::station_control_config(now.config().simulated());
   EXPECT_DOUBLE_EQ(a.az_control.max_rate_deg_s, 3.0);
   EXPECT_DOUBLE_EQ(a.az_control.lsb_deg, 360.0 / 16384.0);
   EXPECT_DOUBLE_EQ(a.el_control.lsb_deg, 360.0 / 1024.0);
@@ -438,7 +438,7 @@ TEST_F(ConfigStoreTest, SchemaOneSimRatesBecomeTheMountsWithTheSameControllerSet
   EXPECT_DOUBLE_EQ(a.az_supervisor.max_rate_deg_s, b.az_supervisor.max_rate_deg_s);
   EXPECT_DOUBLE_EQ(a.el_supervisor.lsb_deg, b.el_supervisor.lsb_deg);
   // The simulated plant is the same too: the mount's rate and bits, its own imperfections.
-  const auto& plant = old.config().sim.setup.az_plant;
+  const auto& plant = old.config().sim.az;
   EXPECT_DOUBLE_EQ(plant.max_rate_deg_s, 3.0);
   EXPECT_EQ(plant.encoder_bits, 14);
   EXPECT_DOUBLE_EQ(plant.stiction_duty, 0.2);

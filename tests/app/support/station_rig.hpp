@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "azt/astro/erfa_ephemeris.hpp"
-#include "config/station_config.hpp"
+#include "config/sky_config.hpp"
 #include "station/station_commands.hpp"
 
 namespace azt::app::testing {
@@ -49,7 +49,7 @@ struct StationRig {
   control::ModeController modes{slots, control::OutOfRangePolicy::Hold, 0.0};
   StandingAntenna antenna;
   astro::ErfaEphemeris ephemeris;
-  StationConfig station{{}, "144", {astro::Target::sun(), astro::Target::moon()}};
+  SkyConfig station{{}, "144", {astro::Target::sun(), astro::Target::moon()}};
   SkyFollower sky{ephemeris, station};
   double now_s = 0.0;
   std::vector<std::string> accepted;

@@ -27,9 +27,9 @@ struct Rig {
     c.tick_s = setup.station.tick_s;
     return c;
   }
-  sim::AxisPlant az{setup.az_plant};
-  sim::AxisPlant el{setup.el_plant};
-  StationController station{config(), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}};
+  sim::AxisPlant az{setup.plant.az};
+  sim::AxisPlant el{setup.plant.el};
+  StationController station{config(), AzEl{setup.plant.az.start_deg, setup.plant.el.start_deg}};
   double t = 0.0;
 
   void run(const Demand& demand, double seconds) {
@@ -45,11 +45,11 @@ struct Rig {
 TEST(StationController, DrivesBothAxesToAPositionDemand) {
   Rig rig;
   Demand go;
-  go.position = AzEl{rig.setup.az_plant.start_deg + 20.0, 30.0};
+  go.position = AzEl{rig.setup.plant.az.start_deg + 20.0, 30.0};
   rig.run(go, 120.0);
   const auto sky = rig.station.sky_position(rig.t);
   ASSERT_TRUE(sky.has_value());
-  EXPECT_NEAR(sky->az_deg, wrap_360(rig.setup.az_plant.start_deg + 20.0), 0.12);
+  EXPECT_NEAR(sky->az_deg, wrap_360(rig.setup.plant.az.start_deg + 20.0), 0.12);
   EXPECT_NEAR(sky->el_deg, 30.0, 0.12);
   EXPECT_FALSE(rig.station.faulted());
 }
@@ -62,7 +62,7 @@ TEST(StationController, TargetsJumpingAroundNeverLookLikeAFault) {
   for (int i = 0; i < 200; ++i) {
     // a new target every 0.1 s, alternately further ahead and behind on both axes
     const double step = (i % 2 == 0 ? 1.0 : -1.0) * (5.0 + (i % 7));
-    go.position = AzEl{wrap_360(rig.setup.az_plant.start_deg + 10.0 + step), 30.0 + step};
+    go.position = AzEl{wrap_360(rig.setup.plant.az.start_deg + 10.0 + step), 30.0 + step};
     rig.run(go, 0.1);
     ASSERT_FALSE(rig.station.faulted()) << "after target " << i;
   }
@@ -74,7 +74,7 @@ TEST(StationController, TargetsJumpingAroundNeverLookLikeAFault) {
 TEST(StationController, CorrectionsChangedAtRuntimeMoveTheAntennaByTheChange) {
   Rig rig;
   Demand go;
-  go.position = AzEl{wrap_360(rig.setup.az_plant.start_deg + 10.0), 30.0};
+  go.position = AzEl{wrap_360(rig.setup.plant.az.start_deg + 10.0), 30.0};
   rig.run(go, 60.0);
   const double el_before = rig.el.shaft_deg();
   PositionCorrections c;
@@ -119,7 +119,7 @@ TEST(StationController, NoReadingsMeansNoPositionAndNoMotion) {
 TEST(StationController, EmergencyStopZeroesBothDutiesAndLatches) {
   Rig rig;
   Demand go;
-  go.position = AzEl{rig.setup.az_plant.start_deg + 90.0, 60.0};
+  go.position = AzEl{rig.setup.plant.az.start_deg + 90.0, 60.0};
   rig.run(go, 2.0);
   EXPECT_NE(rig.station.az().duty, 0.0);
   rig.station.emergency_stop(rig.t);
@@ -135,7 +135,7 @@ TEST(StationController, EmergencyStopZeroesBothDutiesAndLatches) {
 TEST(StationController, ATrippedLimitStopsTheDriveTowardsItAtOnceAndAllowsTheWayBack) {
   Rig rig;
   Demand cw;
-  cw.position = AzEl{rig.setup.az_plant.start_deg + 90.0, rig.setup.el_plant.start_deg};
+  cw.position = AzEl{rig.setup.plant.az.start_deg + 90.0, rig.setup.plant.el.start_deg};
   rig.run(cw, 3.0);
   ASSERT_GT(rig.station.az().duty, 0.0);
   // The clockwise switch opens between ticks: the duty is zero in the answer, not at the next tick.
@@ -149,7 +149,7 @@ TEST(StationController, ATrippedLimitStopsTheDriveTowardsItAtOnceAndAllowsTheWay
   EXPECT_FALSE(rig.station.faulted()) << "held at a switch is not a stall";
   const double held_at = rig.az.shaft_deg();
   Demand ccw;
-  ccw.position = AzEl{held_at - 30.0, rig.setup.el_plant.start_deg};
+  ccw.position = AzEl{held_at - 30.0, rig.setup.plant.el.start_deg};
   rig.run(ccw, 3.0);
   EXPECT_LT(rig.station.az().duty, 0.0) << "moving away from a tripped switch is allowed";
   EXPECT_LT(rig.az.shaft_deg(), held_at);
@@ -161,11 +161,11 @@ TEST(StationController, ElevationLimitsBlockOnlyTheirOwnDirection) {
   limits.el_down = true;
   rig.station.set_limits(limits);
   Demand down;
-  down.position = AzEl{rig.setup.az_plant.start_deg, rig.setup.el_plant.start_deg - 5.0};
+  down.position = AzEl{rig.setup.plant.az.start_deg, rig.setup.plant.el.start_deg - 5.0};
   rig.run(down, 3.0);
   EXPECT_DOUBLE_EQ(rig.station.el().duty, 0.0);
   Demand up;
-  up.position = AzEl{rig.setup.az_plant.start_deg, rig.setup.el_plant.start_deg + 20.0};
+  up.position = AzEl{rig.setup.plant.az.start_deg, rig.setup.plant.el.start_deg + 20.0};
   rig.run(up, 3.0);
   EXPECT_GT(rig.station.el().duty, 0.0);
   limits.el_up = true;
@@ -186,9 +186,9 @@ struct MixedRig {
     c.el_drive.setpoint_band_deg = 2.0;
     return c;
   }
-  sim::AxisPlant az{setup.az_plant};
-  sim::AxisPlant el{setup.el_plant};
-  StationController station{config(), AzEl{setup.az_plant.start_deg, setup.el_plant.start_deg}};
+  sim::AxisPlant az{setup.plant.az};
+  sim::AxisPlant el{setup.plant.el};
+  StationController station{config(), AzEl{setup.plant.az.start_deg, setup.plant.el.start_deg}};
   double t = 0.0;
   std::optional<double> box_setpoint;
   double last_az_duty = 0.0;
@@ -214,12 +214,12 @@ struct MixedRig {
 TEST(StationController, RelayAndSetpointAxesReachTheDemand) {
   MixedRig rig;
   Demand go;
-  go.position = AzEl{rig.setup.az_plant.start_deg + 30.0, 40.0};
+  go.position = AzEl{rig.setup.plant.az.start_deg + 30.0, 40.0};
   rig.run(go, 120.0);
   const auto sky = rig.station.sky_position(rig.t);
   ASSERT_TRUE(sky.has_value());
   // Relays stop within the window (1°) plus a step; the box within its own deadband plus coast.
-  EXPECT_NEAR(sky->az_deg, wrap_360(rig.setup.az_plant.start_deg + 30.0), 1.1);
+  EXPECT_NEAR(sky->az_deg, wrap_360(rig.setup.plant.az.start_deg + 30.0), 1.1);
   EXPECT_NEAR(sky->el_deg, 40.0, 1.0);
   ASSERT_TRUE(rig.box_setpoint.has_value());
   EXPECT_DOUBLE_EQ(*rig.box_setpoint, 40.0) << "the setpoint is the planned target itself";
@@ -234,7 +234,7 @@ TEST(StationController, RelayAndSetpointAxesReachTheDemand) {
 TEST(StationController, SetpointAxisIsSentWhereItStandsOnAnEStopOrALimit) {
   MixedRig rig;
   Demand up;
-  up.position = AzEl{rig.setup.az_plant.start_deg, 60.0};
+  up.position = AzEl{rig.setup.plant.az.start_deg, 60.0};
   rig.run(up, 3.0);
   ASSERT_TRUE(rig.box_setpoint.has_value());
   EXPECT_DOUBLE_EQ(*rig.box_setpoint, 60.0);
@@ -259,7 +259,7 @@ TEST(StationController, SetpointAxisIsSentWhereItStandsOnAnEStopOrALimit) {
 TEST(StationController, StopMidMoveSendsTheSetpointAxisWhereItStands) {
   MixedRig rig;
   Demand up;
-  up.position = AzEl{rig.setup.az_plant.start_deg, 60.0};
+  up.position = AzEl{rig.setup.plant.az.start_deg, 60.0};
   rig.run(up, 3.0);
   ASSERT_TRUE(rig.box_setpoint.has_value());
   ASSERT_DOUBLE_EQ(*rig.box_setpoint, 60.0);
@@ -275,7 +275,7 @@ TEST(StationController, StopMidMoveSendsTheSetpointAxisWhereItStands) {
 TEST(StationController, RelayAxisStopsAtATrippedLimitAndOnEStop) {
   MixedRig rig;
   Demand cw;
-  cw.position = AzEl{rig.setup.az_plant.start_deg + 60.0, rig.setup.el_plant.start_deg};
+  cw.position = AzEl{rig.setup.plant.az.start_deg + 60.0, rig.setup.plant.el.start_deg};
   rig.run(cw, 2.0);
   ASSERT_EQ(rig.station.az().duty, 1.0);
   LimitSwitches limits;

@@ -58,7 +58,7 @@ TEST_P(MoonTracking, MeetsTheReferenceTargets) {
   EXPECT_GT(r.az.travel_deg, 60.0);  // the Moon really moved across the sky
 
   StationSimSetup slew_setup = reference_station(bits, window);
-  slew_setup.az_plant.start_deg = 90.0;
+  slew_setup.plant.az.start_deg = 90.0;
   const SimResult slew = simulate_slew(slew_setup, control::AzEl{270.0, 10.0}, 600.0);
   ASSERT_TRUE(slew.slew_time_s.has_value());
   EXPECT_LE(*slew.slew_time_s, 1.10 * slew.slew_min_time_s + slew_setup.station.az_control.ramp_s);

@@ -15,8 +15,8 @@ namespace {
 /// The reference station, starting where the synthetic targets below begin.
 StationSimSetup reference(int bits, double window_deg) {
   StationSimSetup s = reference_station(bits, window_deg);
-  s.az_plant.start_deg = 100.0;
-  s.el_plant.start_deg = 20.0;
+  s.plant.az.start_deg = 100.0;
+  s.plant.el.start_deg = 20.0;
   return s;
 }
 
@@ -74,8 +74,8 @@ TEST(Slew, HalfTurnInAzimuthNearTheMinimumTimeWithoutOvershoot) {
 TEST(Slew, OverlapRotatorGoesThroughNorthTheShortWay) {
   StationSimSetup setup = reference(12, 0.0);
   setup.station.az_range = control::AzimuthRange{0.0, 450.0};
-  setup.az_plant.max_deg = 450.0;
-  setup.az_plant.start_deg = 350.0;
+  setup.plant.az.max_deg = 450.0;
+  setup.plant.az.start_deg = 350.0;
   const SimResult r = simulate_slew(setup, control::AzEl{20.0, 20.0}, 600.0);
   ASSERT_TRUE(r.slew_time_s.has_value());
   EXPECT_LT(*r.slew_time_s, 30.0);  // 30° the short way, not 330° back
@@ -83,8 +83,8 @@ TEST(Slew, OverlapRotatorGoesThroughNorthTheShortWay) {
 
 TEST(Faults, CorruptLinkWithCrcStillTracks) {
   StationSimSetup setup = reference(12, 0.1);
-  setup.link.byte_corruption = 0.05;
-  setup.link.frame_loss = 0.05;
+  setup.plant.link.byte_corruption = 0.05;
+  setup.plant.link.frame_loss = 0.05;
   const SimResult r = simulate_tracking(setup, moon_like(), 1800.0);
   EXPECT_TRUE(r.faults.empty()) << r.faults.front();
   EXPECT_LE(r.max_error_deg, 0.1 + 2.0 * 360.0 / 4096.0);
@@ -93,7 +93,7 @@ TEST(Faults, CorruptLinkWithCrcStillTracks) {
 
 TEST(Faults, LostLinkStopsTheMotorsWithoutLatching) {
   StationSimSetup setup = reference(12, 0.0);
-  setup.link.frame_loss = 1.0;
+  setup.plant.link.frame_loss = 1.0;
   const SimResult r = simulate_slew(setup, control::AzEl{280.0, 60.0}, 20.0);
   EXPECT_GT(r.max_error_deg, 100.0);  // never moved
   EXPECT_TRUE(r.faults.empty());
@@ -107,7 +107,7 @@ namespace {
 
 SimResult slew_with_fault(AxisFaultKind kind, bool azimuth, std::int32_t counts = 0) {
   StationSimSetup setup = reference(12, 0.0);
-  setup.plant_faults.push_back(ScheduledFault{5.0, azimuth, AxisFault{kind, counts}});
+  setup.plant.faults.push_back(ScheduledFault{5.0, azimuth, AxisFault{kind, counts}});
   return simulate_slew(setup, control::AzEl{280.0, 60.0}, 200.0);
 }
 
@@ -159,8 +159,8 @@ SkyTrack setting() {
 
 TEST(OutOfRange, HoldsWhereTheTargetSet) {
   StationSimSetup setup = reference(12, 0.1);
-  setup.az_plant.start_deg = 250.0;
-  setup.el_plant.start_deg = 5.0;
+  setup.plant.az.start_deg = 250.0;
+  setup.plant.el.start_deg = 5.0;
   const SimResult r = simulate_tracking(setup, setting(), 1200.0);
   EXPECT_TRUE(r.faults.empty());
   // Errors count only while the target was up: none beyond the window + 2 LSB.
@@ -171,8 +171,8 @@ TEST(OutOfRange, HoldsWhereTheTargetSet) {
 
 TEST(OutOfRange, ParksWhenConfigured) {
   StationSimSetup setup = reference(12, 0.1);
-  setup.az_plant.start_deg = 250.0;
-  setup.el_plant.start_deg = 5.0;
+  setup.plant.az.start_deg = 250.0;
+  setup.plant.el.start_deg = 5.0;
   setup.station.park_when_out_of_range = control::AzEl{180.0, 0.0};
   const SimResult r = simulate_tracking(setup, setting(), 1200.0);
   EXPECT_TRUE(r.faults.empty());

@@ -128,8 +128,8 @@ TEST(PassSimulation, TwoHundredPassesWithoutAnUnwind) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   sim::StationSimSetup setup = sim::reference_station(14, 0.1);
-  setup.az_plant.max_rate_deg_s = 6.0;
-  setup.el_plant.max_rate_deg_s = 3.0;
+  setup.plant.az.max_rate_deg_s = 6.0;
+  setup.plant.el.max_rate_deg_s = 3.0;
   setup.station.az_control.max_rate_deg_s = 6.0;
   setup.station.el_control.max_rate_deg_s = 3.0;
   setup.station.az_supervisor.max_rate_deg_s = 6.0;

@@ -30,6 +30,11 @@ struct StationSetup {
   /// nullopt holds the antenna where it is (ModeController's OutOfRangePolicy).
   std::optional<AzEl> park_when_out_of_range;
 
+  /// Where the axes are believed to be before the first reading, when nothing says otherwise: 0°
+  /// on each axis, or the nearest end of the travel. It decides only which turn a single-turn
+  /// azimuth encoder's first reading is taken on (30° is 30°, not 390°, on a 0–450° mount).
+  [[nodiscard]] AzEl believed_start() const;
+
   /// The station controller's configuration: these settings with PWM drives and single-turn
   /// sensors; a backend with other drives or sensors sets those fields.
   [[nodiscard]] StationControlConfig control_config() const;

@@ -10,6 +10,6 @@
 
 namespace azt::sim {
 
-ports::StationPorts make_sim_station_ports(const StationSimSetup& setup);
+ports::StationPorts make_sim_station_ports(const PlantSetup& plant);
 
 }  // namespace azt::sim

@@ -25,19 +25,25 @@ struct ScheduledFault {
   AxisFault fault;
 };
 
-/// One simulated station: two plants behind a simulated EncoderHub, the real controllers and
-/// supervisors, in virtual time.
-struct StationSimSetup {
-  /// The station as its controller knows it (the mount's rates and encoder steps, the travel,
-  /// the tick, the corrections): what a real station of this mount would run with.
-  control::StationSetup station;
-  AxisParams az_plant;  ///< the simulated axes: the mount's rate and encoders, their own faults
-  AxisParams el_plant;
-  int plant_substeps = 5;  ///< plant integration steps per tick
+/// The simulated antenna itself: two plants behind a simulated EncoderHub link ([sim.az],
+/// [sim.el], [sim]). What the station's controller knows of the mount is not here but in
+/// control::StationSetup: a real station runs with that alone.
+struct PlantSetup {
+  AxisParams az;  ///< the simulated axes: the mount's rate and encoders, their own faults
+  AxisParams el;
+  int substeps = 5;  ///< plant integration steps per tick
   proto::HubFrameVersion frame_version = proto::HubFrameVersion::Crc8;
   LinkFaults link;
-  std::vector<ScheduledFault> plant_faults;  ///< any order: injected in time order
-  std::uint64_t seed = 1;                    ///< for the link faults
+  std::vector<ScheduledFault> faults;  ///< any order: injected in time order
+  std::uint64_t seed = 1;              ///< for the link faults
+};
+
+/// One simulated station: the station as its controller knows it (the mount's rates and encoder
+/// steps, the travel, the tick, the corrections: what a real station of this mount would run
+/// with) and the plants it drives, in virtual time.
+struct StationSimSetup {
+  control::StationSetup station;
+  PlantSetup plant;
 };
 
 /// Plant faults injected as their times come, earliest first, each once: the virtual-time

@@ -9,9 +9,10 @@
 
 namespace azt::app {
 
-/// What `watch` reads from the configuration file (see README "Configuration").
-struct StationConfig {
-  SkySettings sky;
+/// Where the station is and what it can point at: [station], [atmosphere], [sources] and the
+/// band ([moon]); what `watch` reads (see README "Configuration").
+struct SkyConfig {
+  SkySettings settings;
   std::string band_name;               ///< the band whose Moon echo Doppler is shown
   std::vector<astro::Target> targets;  ///< Sun, Moon, then the listed sources
 };
@@ -19,15 +20,14 @@ struct StationConfig {
 class ConfigFile;
 
 /// The station, sky and atmosphere tables of a parsed configuration file.
-StationConfig station_config_from(const ConfigFile& file);
+SkyConfig sky_config_from(const ConfigFile& file);
 
 /// Reads and validates a TOML configuration file. Unknown keys, wrong types and out-of-range
 /// values are errors naming the key; throws UsageError.
-StationConfig load_station_config(const std::string& path);
+SkyConfig load_sky_config(const std::string& path);
 
 /// A target of the station by name, case-blind: "sun", "moon", a source's name or alias, with or
 /// without spaces ("casa", "Cassiopeia A").
-std::optional<astro::Target> find_station_target(const StationConfig& station,
-                                                 const std::string& name);
+std::optional<astro::Target> find_sky_target(const SkyConfig& sky, const std::string& name);
 
 }  // namespace azt::app

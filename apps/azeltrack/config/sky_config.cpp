@@ -1,4 +1,4 @@
-#include "config/station_config.hpp"
+#include "config/sky_config.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -43,7 +43,7 @@ void read_station(const ConfigSection& s, SkySettings& sky) {
   if (grid && lat) check_grid_contains(s, *grid, *lat, *lon);
 }
 
-void read_targets(const ConfigSection& s, StationConfig& config) {
+void read_targets(const ConfigSection& s, SkyConfig& config) {
   config.targets = {astro::Target::sun(), astro::Target::moon()};
   const toml::array* sources = s.array("sources");
   if (sources == nullptr) {
@@ -61,8 +61,8 @@ void read_targets(const ConfigSection& s, StationConfig& config) {
   }
 }
 
-void read_sky(const ConfigSection& s, StationConfig& config) {
-  SkySettings& sky = config.sky;
+void read_sky(const ConfigSection& s, SkyConfig& config) {
+  SkySettings& sky = config.settings;
   sky.ephemeris = s.text("ephemeris").value_or("auto");
   sky.dut1_s = s.number("dut1_s").value_or(0.0);
   try {
@@ -98,7 +98,7 @@ void read_atmosphere(const ConfigSection& s, SkySettings& sky) {
 
 /// [[spacecraft]]: bodies from JPL Horizons vector tables (seed 000's DSN page). A file that does
 /// not read or parse is refused here, naming the entry, rather than found missing mid-session.
-void read_spacecraft(const ConfigFile& file, StationConfig& config) {
+void read_spacecraft(const ConfigFile& file, SkyConfig& config) {
   for (const ConfigSection& s :
        file.section_array("spacecraft", {"name", "file", "description", "frequency_mhz"})) {
     const auto name = s.text("name");
@@ -123,23 +123,22 @@ void read_spacecraft(const ConfigFile& file, StationConfig& config) {
 
 }  // namespace
 
-StationConfig station_config_from(const ConfigFile& file) {
-  StationConfig config;
-  read_station(file.section("station", {"grid", "lat_deg", "lon_deg", "alt_m"}), config.sky);
+SkyConfig sky_config_from(const ConfigFile& file) {
+  SkyConfig config;
+  read_station(file.section("station", {"grid", "lat_deg", "lon_deg", "alt_m"}), config.settings);
   read_sky(file.section("sky", {"band", "ephemeris", "dut1_s", "dx_grid", "sources"}), config);
   read_atmosphere(file.section("atmosphere", {"refraction", "pressure_hpa", "temperature_c",
                                               "relative_humidity"}),
-                  config.sky);
+                  config.settings);
   read_spacecraft(file, config);
   return config;
 }
 
-StationConfig load_station_config(const std::string& path) {
-  return station_config_from(ConfigFile::load(path));
+SkyConfig load_sky_config(const std::string& path) {
+  return sky_config_from(ConfigFile::load(path));
 }
 
-std::optional<astro::Target> find_station_target(const StationConfig& station,
-                                                 const std::string& name) {
+std::optional<astro::Target> find_sky_target(const SkyConfig& station, const std::string& name) {
   const auto lower = [](std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
