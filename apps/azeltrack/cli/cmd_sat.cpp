@@ -56,9 +56,9 @@ std::optional<double> frequency(const std::string& option, const std::string& te
   return f;
 }
 
-void warn_age(const Satellite& sat, const astro::UtcInstant& utc) {
+void warn_age(const orbit::Satellite& sat, const astro::UtcInstant& utc) {
   const double age = element_age_days(sat.elements, utc);
-  if (std::fabs(age) > kStaleElementDays) {
+  if (std::fabs(age) > orbit::kStaleElementDays) {
     std::cerr << "azeltrack: warning: the elements of " << sat.elements.label() << " are "
               << std::fixed << std::setprecision(1) << age
               << " days from their epoch: predictions drift; fetch fresh ones\n";
@@ -69,7 +69,7 @@ int run_sat(const SatOptions& o) {
   if (o.tle.empty()) throw UsageError("sat: --tle FILE is required");
   const Station st = station_from(o);
   const SatelliteCatalogue cat = SatelliteCatalogue::load(o.tle);
-  const Satellite& sat = cat.find(o.sat);
+  const orbit::Satellite& sat = cat.find(o.sat);
   const astro::UtcInstant utc = instant("--at", o.at);
   warn_age(sat, utc);
   auto l = look(sat, utc, st.dut1_s, st.site);
@@ -123,7 +123,7 @@ int run_passes(const SatOptions& o) {
   const orbit::HorizonMask mask = o.mask.empty() ? parse_horizon_mask("--min-el", o.min_el)
                                                  : parse_horizon_mask("--mask", o.mask);
   const SatelliteCatalogue cat = SatelliteCatalogue::load(o.tle);
-  const Satellite& sat = cat.find(o.sat);
+  const orbit::Satellite& sat = cat.find(o.sat);
   const astro::UtcInstant from = instant("--from", o.from);
   warn_age(sat, from);
   auto passes = find_satellite_passes(sat, from, hours, mask, st.dut1_s, st.site);

@@ -10,6 +10,7 @@
 #include "azt/sim/pass_sim.hpp"
 #include "azt/sim/sky_track.hpp"
 #include "azt/sim/station_sim.hpp"
+#include "azt/track/satellite_pass_track.hpp"
 #include "cli/commands.hpp"
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
@@ -83,7 +84,7 @@ sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double
 int run_pass(const SimConfig& c, const SimulateOptions& o) {
   if (o.tle.empty() || o.sat.empty()) throw UsageError("pass needs --tle FILE and --sat NAME");
   const SatelliteCatalogue cat = SatelliteCatalogue::load(o.tle);
-  const Satellite& sat = cat.find(o.sat);
+  const orbit::Satellite& sat = cat.find(o.sat);
   astro::UtcInstant from = utc_now();
   if (!o.from.empty()) {
     auto parsed = astro::parse_iso8601_utc(o.from);
@@ -103,7 +104,7 @@ int run_pass(const SimConfig& c, const SimulateOptions& o) {
   }
   if (next == nullptr)
     throw std::runtime_error("no whole pass of " + sat.elements.label() + " in 48 h");
-  auto sky = sample_pass(sat, from, *next, dut1, site);
+  auto sky = track::sample_pass(sat, from, *next, dut1, site);
   if (!sky) throw std::runtime_error(sky.error().message);
   const track::MountGeometry mount = sim::mount_geometry(c.setup);
   const double prep_s = std::min(600.0, next->aos_s);

@@ -137,9 +137,9 @@ int run_sky(const SkyOptions& o) {
     utc = *parsed;
   }
   const auto ephemeris = open_ephemeris(settings.ephemeris);
-  const SkySnapshot snapshot(*ephemeris, settings, utc);
+  const astro::SkySnapshot snapshot = sky_snapshot_or_throw(*ephemeris, settings, utc);
   const nlohmann::json j =
-      report_json(snapshot.observe(*target), snapshot, settings, ephemeris->name());
+      report_json(observe_or_throw(snapshot, *target), snapshot, settings, ephemeris->name());
   if (o.json) {
     std::cout << j.dump() << '\n';
   } else {

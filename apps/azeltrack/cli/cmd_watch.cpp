@@ -28,7 +28,7 @@ struct WatchOptions {
   std::string at;  // fixed instant (for tests and screenshots), default: the clock
 };
 
-std::string row(const TargetReport& r) {
+std::string row(const astro::TargetReport& r) {
   const auto& p = r.observation.place;
   std::ostringstream out;
   out << std::left << std::setw(20) << r.target.name << std::right << std::fixed
@@ -39,7 +39,7 @@ std::string row(const TargetReport& r) {
 }
 
 /// `moon` now and `moon_later` one minute on: the Doppler drift an operator retunes for.
-std::string moon_lines(const TargetReport& moon, const TargetReport& moon_later,
+std::string moon_lines(const astro::TargetReport& moon, const astro::TargetReport& moon_later,
                        const SkyConfig& c) {
   const auto& p = moon.observation.place;
   const double f = *c.settings.freq_mhz;
@@ -64,9 +64,8 @@ std::string moon_lines(const TargetReport& moon, const TargetReport& moon_later,
   return out.str();
 }
 
-std::string frame(const astro::Ephemeris& eph, const SkyConfig& c,
-                  const astro::UtcInstant& utc) {
-  const SkySnapshot snapshot(eph, c.settings, utc);
+std::string frame(const astro::Ephemeris& eph, const SkyConfig& c, const astro::UtcInstant& utc) {
+  const astro::SkySnapshot snapshot = sky_snapshot_or_throw(eph, c.settings, utc);
   std::ostringstream out;
   out << "azeltrack  " << astro::format_iso8601_utc(utc) << "  station " << c.settings.grid << " ("
       << std::fixed << std::setprecision(4) << c.settings.observer.lat_deg << ", "
@@ -78,15 +77,16 @@ std::string frame(const astro::Ephemeris& eph, const SkyConfig& c,
       << std::left << std::setw(20) << "target" << std::right << std::setw(8) << "az°"
       << std::setw(8) << "el°" << std::setw(8) << "geom°" << std::setw(10) << "RA°" << std::setw(9)
       << "Dec°" << '\n';
-  std::optional<TargetReport> moon;
+  std::optional<astro::TargetReport> moon;
   for (const auto& target : c.targets) {
-    TargetReport r = snapshot.observe(target);
+    astro::TargetReport r = observe_or_throw(snapshot, target);
     out << row(r) << '\n';
     if (target.kind == astro::Target::Kind::Moon) moon = r;
   }
   if (moon) {
     const astro::UtcInstant later{astro::JulianDate{utc.jd.jd1, utc.jd.jd2 + 60.0 / 86400.0}};
-    out << moon_lines(*moon, SkySnapshot(eph, c.settings, later).observe(moon->target), c);
+    const astro::SkySnapshot next = sky_snapshot_or_throw(eph, c.settings, later);
+    out << moon_lines(*moon, observe_or_throw(next, moon->target), c);
   }
   return out.str();
 }

@@ -6,17 +6,11 @@
 namespace azt::app {
 namespace {
 
-astro::Epoch make_epoch_or_throw(const astro::Ephemeris& ephemeris, const astro::TimeScales& t) {
-  auto epoch = astro::make_epoch(ephemeris, t);
-  if (!epoch) throw UsageError(epoch.error().message);
-  return *epoch;
-}
-
 nlohmann::json optional_json(const std::optional<double>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
 }
 
-nlohmann::json moon_echo_json(const TargetReport& r, const SkySettings& settings) {
+nlohmann::json moon_echo_json(const astro::TargetReport& r, const SkySettings& settings) {
   nlohmann::json out;
   const double rate = *r.observation.place.range_rate_km_s;
   out["echo_delay_s"] = astro::echo_delay_s(*r.observation.place.distance_km);
@@ -45,29 +39,33 @@ nlohmann::json moon_echo_json(const TargetReport& r, const SkySettings& settings
 
 }  // namespace
 
-SkySnapshot::SkySnapshot(const astro::Ephemeris& ephemeris, const SkySettings& settings,
-                         const astro::UtcInstant& utc)
-    : ephemeris_(ephemeris),
-      settings_(settings),
-      epoch_(make_epoch_or_throw(ephemeris, time_scales_at(utc, settings.dut1_s))),
-      station_(astro::make_station(epoch_, settings.observer)) {
-  if (settings.dx) dx_station_ = astro::make_station(epoch_, *settings.dx);
+astro::SkySite sky_site(const SkySettings& settings) {
+  return astro::SkySite{settings.observer, settings.dx, settings.atmosphere};
 }
 
-TargetReport SkySnapshot::observe(const astro::Target& target) const {
-  auto obs = astro::observe(target, ephemeris_, epoch_, station_, settings_.atmosphere);
-  if (!obs) throw UsageError(obs.error().message);
-  TargetReport report{target, *obs, std::nullopt, std::nullopt};
-  if (target.kind == astro::Target::Kind::Moon && dx_station_) {
-    auto dx = astro::observe_moon(ephemeris_, epoch_, *dx_station_);
-    if (!dx) throw UsageError(dx.error().message);
-    report.dx_range_rate_km_s = dx->range_rate_km_s;
-    report.dx_place = *dx;
-  }
-  return report;
+Result<astro::SkySnapshot> sky_snapshot(const astro::Ephemeris& ephemeris,
+                                        const SkySettings& settings, const astro::UtcInstant& utc) {
+  auto time = time_scales_for(utc, settings.dut1_s);
+  if (!time) return time.error();
+  return astro::SkySnapshot::at(ephemeris, sky_site(settings), *time);
 }
 
-nlohmann::json report_json(const TargetReport& r, const SkySnapshot& snapshot,
+astro::SkySnapshot sky_snapshot_or_throw(const astro::Ephemeris& ephemeris,
+                                         const SkySettings& settings,
+                                         const astro::UtcInstant& utc) {
+  auto snapshot = sky_snapshot(ephemeris, settings, utc);
+  if (!snapshot) throw UsageError(snapshot.error().message);
+  return std::move(snapshot).value();
+}
+
+astro::TargetReport observe_or_throw(const astro::SkySnapshot& snapshot,
+                                     const astro::Target& target) {
+  auto report = snapshot.observe(target);
+  if (!report) throw UsageError(report.error().message);
+  return std::move(report).value();
+}
+
+nlohmann::json report_json(const astro::TargetReport& r, const astro::SkySnapshot& snapshot,
                            const SkySettings& settings, const std::string& ephemeris_name) {
   const astro::Place& p = r.observation.place;
   const astro::TimeScales& t = snapshot.time();

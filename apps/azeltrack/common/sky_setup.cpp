@@ -97,9 +97,9 @@ astro::UtcInstant utc_now() {
   return astro::UtcInstant::from_unix_seconds(std::chrono::duration<double>(since_epoch).count());
 }
 
-astro::TimeScales time_scales_at(const astro::UtcInstant& utc, double dut1_s) {
+Result<astro::TimeScales> time_scales_for(const astro::UtcInstant& utc, double dut1_s) {
   auto time = astro::make_time_scales(utc, dut1_s, leap_table());
-  if (!time) throw UsageError(time.error().message);
+  if (!time) return time.error();
   static bool warned = false;
   if (time->leap_table_expired && !warned) {
     warned = true;
@@ -108,6 +108,12 @@ astro::TimeScales time_scales_at(const astro::UtcInstant& utc, double dut1_s) {
         "update tzdata if a leap second has been announced since",
         time->tai_minus_utc_s);
   }
+  return time;
+}
+
+astro::TimeScales time_scales_at(const astro::UtcInstant& utc, double dut1_s) {
+  auto time = time_scales_for(utc, dut1_s);
+  if (!time) throw UsageError(time.error().message);
   return *time;
 }
 

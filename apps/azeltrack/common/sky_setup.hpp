@@ -9,6 +9,7 @@
 #include "azt/astro/observer.hpp"
 #include "azt/astro/refraction.hpp"
 #include "azt/astro/time_scales.hpp"
+#include "azt/util/result.hpp"
 
 namespace azt::app {
 
@@ -50,7 +51,10 @@ const astro::LeapSecondTable& leap_table();
 /// UTC now from the system clock.
 astro::UtcInstant utc_now();
 
-/// Time scales for `utc`, warning once when the leap-second table has expired. Throws UsageError.
+/// Time scales for `utc`, warning once when the leap-second table has expired; an error outside
+/// the table's span.
+Result<astro::TimeScales> time_scales_for(const astro::UtcInstant& utc, double dut1_s);
+/// The same for the command line: throws UsageError.
 astro::TimeScales time_scales_at(const astro::UtcInstant& utc, double dut1_s);
 
 }  // namespace azt::app

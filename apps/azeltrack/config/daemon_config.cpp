@@ -273,13 +273,10 @@ proto::TargetLimits DaemonConfig::target_limits() const {
   return l;
 }
 
-DaemonConfig daemon_config_from(const ConfigFile& file) {
-  DaemonConfig c;
-  const SimConfig sim = sim_config_from(file);
-  c.sky = sim.sky;
-  c.mount = sim.mount;
-  c.station = sim.setup.station;
-  c.sim = sim.setup.plant;
+namespace {
+
+/// [target] name: what to track at start.
+void read_start_target(const ConfigFile& file, DaemonConfig& c) {
   const ConfigSection target = file.section("target", {"name"});
   c.start_target = target.text("name").value_or("moon");
   // "sat:NAME" is looked up in the satellite catalogue when the daemon starts.
@@ -290,6 +287,10 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
                             "' is not a target of this station: sun, moon, a [sky] source, "
                             "sat:NAME, or \"stop\"");
   }
+}
+
+/// [antenna] backend and what it needs: [hub], [pwm], [hamlib], [hardware.*] (after [gpio]).
+void read_antenna(const ConfigFile& file, DaemonConfig& c) {
   const ConfigSection antenna = file.section("antenna", {"backend"});
   const auto backend = choose(kBackendKinds, antenna.text("backend").value_or("sim"));
   if (!backend) antenna.fail("backend", "must be " + choice_list(kBackendKinds));
@@ -307,6 +308,17 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   if (c.backend == BackendKind::Hamlib && !hamlib.present()) {
     antenna.fail("backend", "is \"hamlib\" but there is no [hamlib] table");
   }
+  c.hardware = read_hardware(file, c.gpio.chip);
+  if (c.backend == BackendKind::Hardware) {
+    if (c.hardware.uses_hub() && c.hub.device.empty()) {
+      antenna.fail("backend", "is \"hardware\" with a hub sensor but [hub] device is not set");
+    }
+    check_relay_lines(c, antenna);
+  }
+}
+
+/// The PC programs' servers: [rotctld], [pstrotator], [[serial]].
+void read_servers(const ConfigFile& file, DaemonConfig& c) {
   const ConfigSection rotctld = file.section("rotctld", {"bind", "port", "idle_timeout_s"});
   c.rotctld = read_net(rotctld, c.rotctld);
   if (const auto idle = rotctld.number("idle_timeout_s")) {
@@ -321,6 +333,18 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.pstrotator_reply_port =
       read_port(pst, "reply_port", c.pstrotator.port == 0 ? 0 : c.pstrotator.port + 1);
   c.serial = read_serial(file);
+}
+
+}  // namespace
+
+DaemonConfig daemon_config_from(const ConfigFile& file) {
+  DaemonConfig c;
+  const SimConfig sim = sim_config_from(file);
+  c.sky = sim.sky;
+  c.mount = sim.mount;
+  c.station = sim.setup.station;
+  c.sim = sim.setup.plant;
+  read_start_target(file, c);
   c.sequencer =
       read_sequencer(file.section("sequencer", {"outputs", "delay_ms", "delays_ms", "debounce_ms",
                                                 "tx_timeout_s", "hold_motion"}));
@@ -330,13 +354,8 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
                                       "limits_active_low", "ptt", "ptt_active_low", "sequencer",
                                       "sequencer_active_low", "estop_latch_file"}),
                 c.sequencer.outputs.size());
-  c.hardware = read_hardware(file, c.gpio.chip);
-  if (c.backend == BackendKind::Hardware) {
-    if (c.hardware.uses_hub() && c.hub.device.empty()) {
-      antenna.fail("backend", "is \"hardware\" with a hub sensor but [hub] device is not set");
-    }
-    check_relay_lines(c, antenna);
-  }
+  read_antenna(file, c);
+  read_servers(file, c);
   const ConfigSection sats = file.section("satellites", {"file", "mask"});
   c.satellites.file = sats.text("file").value_or("");
   c.satellites.mask = sats.text("mask").value_or("0");

@@ -85,61 +85,64 @@ toml::table& table_at(toml::table& root, const char* name) {
 
 }  // namespace
 
+namespace {
+
+/// One target of the console's list, where it is now: a spacecraft outside its table is listed
+/// without a position and with the reason; the others go on.
+json target_entry(const astro::Target& target, const Result<astro::TargetReport>& r) {
+  json t{{"name", target.name}, {"kind", kind_name(target.kind)}};
+  if (target.kind == astro::Target::Kind::Spacecraft) {
+    t["description"] = target.description;
+    t["frequency_mhz"] = target.frequency_mhz;
+  }
+  if (!r) {
+    t["az_deg"] = nullptr;
+    t["el_deg"] = nullptr;
+    t["error"] = r.error().message;
+    return t;
+  }
+  t["az_deg"] = r->observation.place.az_deg;
+  t["el_deg"] = r->observation.el_deg;
+  if (target.kind == astro::Target::Kind::Spacecraft) {
+    t["range_km"] = r->observation.place.distance_km.value_or(0.0);
+    t["range_rate_km_s"] = r->observation.place.range_rate_km_s.value_or(0.0);
+  }
+  return t;
+}
+
+}  // namespace
+
+json DaemonConsole::moon_json(const astro::TargetReport& r, const astro::SkySnapshot& sky) const {
+  const SkyConfig& station = p_.config.sky;
+  const json full = report_json(r, sky, station.settings, p_.ephemeris.name());
+  json doppler = json::object();
+  for (const auto& b : full["bands"]) doppler[b["band"].get<std::string>()] = b["echo_doppler_hz"];
+  return {{"az_deg", r.observation.place.az_deg},
+          {"el_deg", r.observation.el_deg},
+          {"distance_km", full["distance_km"]},
+          {"echo_delay_s", full.value("echo_delay_s", json(nullptr))},
+          {"band", station.band_name},
+          {"echo_doppler_hz", full.value("echo_doppler_hz", json(nullptr))},
+          {"dx_echo_doppler_hz", full.value("dx_echo_doppler_hz", json(nullptr))},
+          {"doppler_hz", doppler}};
+}
+
 const DaemonConsole::Snapshot& DaemonConsole::snapshot() {
   const double now = std::floor(p_.unix_s());
   if (now == snapshot_.unix_s) return snapshot_;
   Snapshot s;
   s.unix_s = now;
-  try {
-    const SkyConfig& station = p_.config.sky;
-    const SkySnapshot sky(p_.ephemeris, station.settings, astro::UtcInstant::from_unix_seconds(now));
-    for (const auto& target : station.targets) {
-      if (target.kind == astro::Target::Kind::Spacecraft) {
-        // Outside its table a spacecraft is listed without a position; the others go on.
-        json t{{"name", target.name},
-               {"kind", "spacecraft"},
-               {"description", target.description},
-               {"frequency_mhz", target.frequency_mhz},
-               {"az_deg", nullptr},
-               {"el_deg", nullptr}};
-        try {
-          const TargetReport r = sky.observe(target);
-          t["az_deg"] = r.observation.place.az_deg;
-          t["el_deg"] = r.observation.el_deg;
-          t["range_km"] = r.observation.place.distance_km.value_or(0.0);
-          t["range_rate_km_s"] = r.observation.place.range_rate_km_s.value_or(0.0);
-        } catch (const UsageError& e) {
-          t["error"] = e.what();
-        }
-        s.targets.push_back(std::move(t));
-        continue;
-      }
-      const TargetReport r = sky.observe(target);
-      json t{{"name", target.name},
-             {"kind", kind_name(target.kind)},
-             {"az_deg", r.observation.place.az_deg},
-             {"el_deg", r.observation.el_deg}};
-      if (target.kind == astro::Target::Kind::Moon) {
-        const json full = report_json(r, sky, station.settings, p_.ephemeris.name());
-        json doppler = json::object();
-        for (const auto& b : full["bands"])
-          doppler[b["band"].get<std::string>()] = b["echo_doppler_hz"];
-        s.moon = {{"az_deg", t["az_deg"]},
-                  {"el_deg", t["el_deg"]},
-                  {"distance_km", full["distance_km"]},
-                  {"echo_delay_s", full.value("echo_delay_s", json(nullptr))},
-                  {"band", station.band_name},
-                  {"echo_doppler_hz", full.value("echo_doppler_hz", json(nullptr))},
-                  {"dx_echo_doppler_hz", full.value("dx_echo_doppler_hz", json(nullptr))},
-                  {"doppler_hz", doppler}};
-      }
-      if (target.kind == astro::Target::Kind::Sun) {
-        s.sun = {{"az_deg", t["az_deg"]}, {"el_deg", t["el_deg"]}};
-      }
-      s.targets.push_back(std::move(t));
+  const SkyConfig& station = p_.config.sky;
+  const auto sky =
+      sky_snapshot(p_.ephemeris, station.settings, astro::UtcInstant::from_unix_seconds(now));
+  // Outside the ephemeris: the sky part of the state stays empty, the rest is still served.
+  for (const auto& target : sky ? station.targets : std::vector<astro::Target>{}) {
+    const auto r = sky->observe(target);
+    s.targets.push_back(target_entry(target, r));
+    if (r && target.kind == astro::Target::Kind::Moon) s.moon = moon_json(*r, *sky);
+    if (r && target.kind == astro::Target::Kind::Sun) {
+      s.sun = {{"az_deg", r->observation.place.az_deg}, {"el_deg", r->observation.el_deg}};
     }
-  } catch (const UsageError&) {
-    // Outside the ephemeris: the sky part of the state stays empty, the rest is still served.
   }
   snapshot_ = std::move(s);
   return snapshot_;
@@ -284,17 +287,17 @@ json DaemonConsole::sky(double hours) {
   const auto steps = static_cast<int>(std::floor(hours * 6.0));  // every 10 minutes
   for (int i = 0; i <= steps; ++i) {
     const double t = start + 600.0 * i;
-    try {
-      const SkySnapshot snap(p_.ephemeris, station.settings, astro::UtcInstant::from_unix_seconds(t));
-      const auto moon = snap.observe(astro::Target::moon()).observation;
-      const auto sun = snap.observe(astro::Target::sun()).observation;
-      moon_path.push_back(
-          {{"utc", utc_text(t)}, {"az_deg", moon.place.az_deg}, {"el_deg", moon.el_deg}});
-      sun_path.push_back(
-          {{"utc", utc_text(t)}, {"az_deg", sun.place.az_deg}, {"el_deg", sun.el_deg}});
-    } catch (const UsageError&) {
-      break;  // past the ephemeris or the leap-second table
-    }
+    const auto snap =
+        sky_snapshot(p_.ephemeris, station.settings, astro::UtcInstant::from_unix_seconds(t));
+    const auto moon = snap ? snap->observe(astro::Target::moon()) : snap.error();
+    const auto sun = snap ? snap->observe(astro::Target::sun()) : snap.error();
+    if (!moon || !sun) break;  // past the ephemeris or the leap-second table
+    moon_path.push_back({{"utc", utc_text(t)},
+                         {"az_deg", moon->observation.place.az_deg},
+                         {"el_deg", moon->observation.el_deg}});
+    sun_path.push_back({{"utc", utc_text(t)},
+                        {"az_deg", sun->observation.place.az_deg},
+                        {"el_deg", sun->observation.el_deg}});
   }
   out["moon_path"] = moon_path;
   out["sun_path"] = sun_path;

@@ -12,6 +12,7 @@
 
 #include "antenna/antenna_backend.hpp"
 #include "azt/astro/ephemeris.hpp"
+#include "azt/astro/sky_snapshot.hpp"
 #include "azt/control/modes.hpp"
 #include "common/off_loop.hpp"
 #include "config/config_store.hpp"
@@ -66,6 +67,8 @@ class DaemonConsole final : public ConsoleModel {
     std::vector<nlohmann::json> targets;  ///< {"name","kind","az_deg","el_deg"}
   };
   const Snapshot& snapshot();
+  /// The Moon panel: position, distance, echo delay and Doppler for the band (and DX).
+  nlohmann::json moon_json(const astro::TargetReport& r, const astro::SkySnapshot& sky) const;
   nlohmann::json target_json();
 
   /// The console's target body, parsed into the one request type (a malformed field: ApiError).

@@ -36,7 +36,7 @@ SatelliteCatalogue SatelliteCatalogue::parse(std::string_view text, const std::s
       c.errors_.push_back(source + ": " + e.label() + ": " + sgp4.error().message);
       continue;
     }
-    c.satellites_.push_back(Satellite{e, std::move(sgp4).value()});
+    c.satellites_.push_back(orbit::Satellite{e, std::move(sgp4).value()});
   }
   return c;
 }
@@ -47,7 +47,7 @@ SatelliteCatalogue SatelliteCatalogue::load(const std::string& path) {
   return parse(text.value(), path);
 }
 
-const Satellite& SatelliteCatalogue::find(const std::string& name_or_norad) const {
+const orbit::Satellite& SatelliteCatalogue::find(const std::string& name_or_norad) const {
   if (all_digits(name_or_norad)) {
     const std::string wanted = name_or_norad.substr(
         std::min(name_or_norad.find_first_not_of('0'), name_or_norad.size() - 1));
@@ -58,7 +58,7 @@ const Satellite& SatelliteCatalogue::find(const std::string& name_or_norad) cons
     }
   }
   const std::string key = lower(name_or_norad);
-  const Satellite* prefix = nullptr;
+  const orbit::Satellite* prefix = nullptr;
   int prefixes = 0;
   for (const auto& s : satellites_) {
     const std::string name = lower(s.elements.name);
@@ -75,52 +75,6 @@ const Satellite& SatelliteCatalogue::find(const std::string& name_or_norad) cons
     if (lower(e).find(key) != std::string::npos) why += "; its entry was refused: " + e;
   }
   throw UsageError(why);
-}
-
-double element_age_days(const orbit::Elements& e, const astro::UtcInstant& utc) {
-  return (utc.jd.jd1 - e.epoch_jd) + (utc.jd.jd2 - e.epoch_jd_frac);
-}
-
-astro::UtcInstant utc_plus(const astro::UtcInstant& from, double seconds) {
-  astro::UtcInstant t = from;
-  t.jd.jd2 += seconds / 86400.0;
-  return t;
-}
-
-Result<orbit::LookAngles> look(const Satellite& sat, const astro::UtcInstant& utc, double dut1_s,
-                               const astro::Observer& site) {
-  auto state = sat.sgp4.at_jd(utc.jd.jd1, utc.jd.jd2);
-  if (!state) return fail(sat.elements.label() + ": " + state.error().message);
-  const astro::JulianDate ut1{utc.jd.jd1, utc.jd.jd2 + dut1_s / 86400.0};
-  return orbit::look_angles(state->r_km, state->v_km_s, ut1, site);
-}
-
-Result<std::vector<orbit::Pass>> find_satellite_passes(const Satellite& sat,
-                                                       const astro::UtcInstant& from, double hours,
-                                                       const orbit::HorizonMask& mask,
-                                                       double dut1_s, const astro::Observer& site) {
-  const orbit::PassSearch search = orbit::orbit_pass_search(
-      sat.elements.mean_motion_rev_day, sat.elements.eccentricity, 0.0, hours * 3600.0, mask);
-  const orbit::LookFunction at = [&](double t) {
-    return look(sat, utc_plus(from, t), dut1_s, site);
-  };
-  return orbit::find_passes(at, search);
-}
-
-Result<std::vector<track::SkyPoint>> sample_pass(const Satellite& sat,
-                                                 const astro::UtcInstant& from,
-                                                 const orbit::Pass& pass, double dut1_s,
-                                                 const astro::Observer& site,
-                                                 double time_offset_s) {
-  std::vector<track::SkyPoint> sky;
-  const auto seconds = static_cast<long>(std::floor(pass.los_s - pass.aos_s));
-  for (long i = 0; i <= seconds; ++i) {
-    const double t = pass.aos_s + static_cast<double>(i);
-    auto l = look(sat, utc_plus(from, t), dut1_s, site);
-    if (!l) return l.error();
-    sky.push_back({time_offset_s + t, l->az_deg, l->el_deg});
-  }
-  return sky;
 }
 
 }  // namespace azt::app

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <memory>
 
+#include "azt/track/satellite_pass_track.hpp"
+
 namespace azt::app {
 namespace {
 
@@ -88,7 +90,7 @@ void SatelliteTracker::adopt(Loaded loaded, double unix_s) {
   next_plan_s_ = -1e9;
 }
 
-const Satellite* SatelliteTracker::current() const {
+const orbit::Satellite* SatelliteTracker::current() const {
   if (!following_) return nullptr;
   for (const auto& s : catalogue_.satellites()) {
     if (s.elements.catalog == *following_) return &s;
@@ -98,7 +100,7 @@ const Satellite* SatelliteTracker::current() const {
 
 Result<std::string> SatelliteTracker::follow(const std::string& name_or_norad, double unix_s,
                                              double mount_az_deg) {
-  const Satellite* sat = nullptr;
+  const orbit::Satellite* sat = nullptr;
   try {
     sat = &catalogue_.find(name_or_norad);
   } catch (const std::exception& e) {
@@ -113,7 +115,7 @@ Result<std::string> SatelliteTracker::follow(const std::string& name_or_norad, d
 }
 
 void SatelliteTracker::plan_next(double unix_s, double mount_az_deg) {
-  const Satellite* sat = current();
+  const orbit::Satellite* sat = current();
   if (sat == nullptr || unix_s < next_plan_s_) return;
   const astro::UtcInstant from = astro::UtcInstant::from_unix_seconds(unix_s);
   auto passes = find_satellite_passes(*sat, from, kSearchHours, s_.mask, s_.dut1_s, s_.site);
@@ -126,7 +128,7 @@ void SatelliteTracker::plan_next(double unix_s, double mount_az_deg) {
   Planned next;
   next.pass = p;
   // Sampled every second from AOS (or now, mid-pass) to LOS, in Unix seconds.
-  auto sky = sample_pass(*sat, from, p, s_.dut1_s, s_.site, unix_s);
+  auto sky = track::sample_pass(*sat, from, p, s_.dut1_s, s_.site, unix_s);
   if (!sky) {
     problem_ = sky.error().message;
     return;
@@ -173,14 +175,14 @@ control::Demand SatelliteTracker::demand(double unix_s, double mount_az_deg, con
 }
 
 nlohmann::json SatelliteTracker::status(double unix_s) const {
-  const Satellite* sat = current();
+  const orbit::Satellite* sat = current();
   if (sat == nullptr) return nullptr;
   const double age = element_age_days(sat->elements, astro::UtcInstant::from_unix_seconds(unix_s));
   nlohmann::json j{
       {"sat", sat->elements.label()},
       {"norad", sat->elements.catalog},
       {"element_age_days", age},
-      {"stale", std::fabs(age) > kStaleElementDays},
+      {"stale", std::fabs(age) > orbit::kStaleElementDays},
       {"problem", problem_.empty() ? nlohmann::json(nullptr) : nlohmann::json(problem_)}};
   if (auto l = look(*sat, astro::UtcInstant::from_unix_seconds(unix_s), s_.dut1_s, s_.site)) {
     j["az_deg"] = l->az_deg;
@@ -213,7 +215,7 @@ void SatelliteTracker::refresh_passes(double unix_s) {
   if (upcoming_.size() != sats.size()) upcoming_.assign(sats.size(), Upcoming{});
   next_refresh_ %= sats.size();
   Upcoming& u = upcoming_[next_refresh_];
-  const Satellite& sat = sats[next_refresh_];
+  const orbit::Satellite& sat = sats[next_refresh_];
   next_refresh_ = (next_refresh_ + 1) % sats.size();
   if (unix_s - u.at_s < 60.0) return;  // each satellite's list at most once a minute
   u.at_s = unix_s;
@@ -236,7 +238,7 @@ nlohmann::json SatelliteTracker::list(double unix_s) const {
   const astro::UtcInstant now = astro::UtcInstant::from_unix_seconds(unix_s);
   const auto& sats = catalogue_.satellites();
   for (std::size_t i = 0; i < sats.size(); ++i) {
-    const Satellite& sat = sats[i];
+    const orbit::Satellite& sat = sats[i];
     // Where it is now costs one propagation; the passes come from refresh_passes().
     nlohmann::json j{{"name", sat.elements.label()},
                      {"norad", sat.elements.catalog},

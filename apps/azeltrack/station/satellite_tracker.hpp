@@ -74,7 +74,7 @@ class SatelliteTracker {
   static Loaded load_catalogue(const std::string& file);
   void adopt(Loaded loaded, double unix_s);
   void plan_next(double unix_s, double mount_az_deg);
-  [[nodiscard]] const Satellite* current() const;
+  [[nodiscard]] const orbit::Satellite* current() const;
 
   SatelliteSettings s_;
   std::function<void(const std::string&)> log_;

@@ -30,14 +30,13 @@ void SkyFollower::follow(const astro::Target& target) {
 }
 
 std::optional<control::AzEl> SkyFollower::compute(double utc_unix_s) {
-  try {
-    const SkySnapshot snapshot(ephemeris_, station_.settings, utc_from_unix(utc_unix_s));
-    const TargetReport r = snapshot.observe(*target_);
-    return control::AzEl{r.observation.place.az_deg, r.observation.el_deg};
-  } catch (const UsageError& e) {
-    last_error_ = e.what();
+  const auto snapshot = sky_snapshot(ephemeris_, station_.settings, utc_from_unix(utc_unix_s));
+  const auto r = snapshot ? snapshot->observe(*target_) : snapshot.error();
+  if (!r) {
+    last_error_ = r.error().message;
     return std::nullopt;
   }
+  return control::AzEl{r->observation.place.az_deg, r->observation.el_deg};
 }
 
 std::optional<SkyFix> SkyFollower::at(double utc_unix_s) {

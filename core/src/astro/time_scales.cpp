@@ -77,6 +77,12 @@ UtcInstant UtcInstant::from_unix_seconds(double unix_s) {
       JulianDate{kMjdZeroJd + kUnixEpochMjd + whole_days, seconds_of_day / kSecondsPerDay}};
 }
 
+UtcInstant utc_plus(const UtcInstant& from, double seconds) {
+  UtcInstant t = from;
+  t.jd.jd2 += seconds / kSecondsPerDay;
+  return t;
+}
+
 double UtcInstant::mjd() const { return (jd.jd1 - kMjdZeroJd) + jd.jd2; }
 
 Result<TimeScales> make_time_scales(const UtcInstant& utc, double dut1_s,

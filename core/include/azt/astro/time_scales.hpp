@@ -37,6 +37,9 @@ struct UtcInstant {
 /// error naming the problem.
 Result<UtcInstant> parse_iso8601_utc(std::string_view text);
 
+/// The UTC instant `seconds` after `from` (two-part Julian date arithmetic, no rounding to ms).
+UtcInstant utc_plus(const UtcInstant& from, double seconds);
+
 /// Formats as `YYYY-MM-DDTHH:MM:SS.sssZ` (milliseconds, rounded; 23:59:59.9996 carries into the
 /// next day). A non-finite instant, or one ERFA's calendar cannot hold, formats as
 /// "(invalid UTC instant)", which the parser rejects.

@@ -1,0 +1,56 @@
+// The sky at one instant (issue 13 §3: moved from the app to the core, errors as Results): the
+// snapshot observes each target as the reduction chain does on its own, and adds what a DX
+// station sees of the Moon only when there is one.
+#include "azt/astro/sky_snapshot.hpp"
+
+#include <gtest/gtest.h>
+
+#include "azt/astro/erfa_ephemeris.hpp"
+
+namespace azt::astro {
+namespace {
+
+constexpr double kArcsecDeg = 1.0 / 3600.0;
+
+TimeScales oracle_time() {
+  // ../shared/oracles/README.md §2: 2025-03-14 06:00:00 UTC, UT1 = UTC + 0.203387 s.
+  const auto utc = UtcInstant::from_calendar(2025, 3, 14, 6, 0, 0.0);
+  EXPECT_TRUE(utc.ok());
+  return make_time_scales(*utc, 69.184 - 68.980613, LeapSecondTable::builtin()).value();
+}
+
+TEST(SkySnapshot, ObservesTheMoonAsTheOracleChainDoes) {
+  const ErfaEphemeris eph;
+  SkySite site;
+  site.observer = Observer{46.189, -79.393, 300.0};
+  site.atmosphere.model = RefractionModel::None;
+  const auto sky = SkySnapshot::at(eph, site, oracle_time());
+  ASSERT_TRUE(sky.ok()) << sky.error().message;
+  const auto moon = sky->observe(Target::moon());
+  ASSERT_TRUE(moon.ok()) << moon.error().message;
+  EXPECT_NEAR(moon->observation.place.az_deg, 192.3769552, 0.02 * kArcsecDeg);
+  EXPECT_NEAR(moon->observation.place.el_geometric_deg, 45.4544030, 0.02 * kArcsecDeg);
+  EXPECT_FALSE(moon->dx_range_rate_km_s.has_value()) << "a DX figure without a DX station";
+  EXPECT_NEAR(sky->time().dut1_s, 0.203387, 1e-9);
+}
+
+TEST(SkySnapshot, TheDxStationSeesTheMoonFromItsOwnPlace) {
+  const ErfaEphemeris eph;
+  SkySite site;
+  site.observer = Observer{46.189, -79.393, 300.0};
+  site.dx = Observer{-33.9, 18.4, 0.0};  // Cape Town: the Moon is low or set there
+  const auto sky = SkySnapshot::at(eph, site, oracle_time());
+  ASSERT_TRUE(sky.ok());
+  const auto moon = sky->observe(Target::moon());
+  ASSERT_TRUE(moon.ok());
+  ASSERT_TRUE(moon->dx_range_rate_km_s.has_value());
+  ASSERT_TRUE(moon->dx_place.has_value());
+  EXPECT_GT(std::abs(moon->dx_place->el_geometric_deg - moon->observation.place.el_geometric_deg),
+            10.0);
+  const auto sun = sky->observe(Target::sun());
+  ASSERT_TRUE(sun.ok());
+  EXPECT_FALSE(sun->dx_place.has_value()) << "DX figures are the Moon's alone";
+}
+
+}  // namespace
+}  // namespace azt::astro
