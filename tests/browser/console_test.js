@@ -257,7 +257,19 @@ async function main() {
     await scenario('a bad locator shows an error and changes nothing', page, async () => {
       const before = (await api('GET', '/api/config')).json.station.grid;
       await page.click('#nav-setup');
+      // The other representation comes from the controller's Maidenhead (GET /api/locator).
+      await page.fill('#grid', 'FN06HE');
+      await until('the square of FN06HE', async () =>
+        (await text(page, '#grid-other')).includes('46.1875° N, 79.3750° W'), 3000);
+      await page.fill('#lat', '46.189');
+      await page.fill('#lon', '-79.393');
+      await until('the locator of the position', async () =>
+        (await text(page, '#latlon-other')) === 'Locator FN06he', 3000);
+      const band2m = await page.$eval('#band option[value="144"]', (o) => o.textContent);
+      if (band2m !== '144 MHz (2 m)') throw new Error(`band label: ${band2m}`);
       await page.fill('#grid', 'ZZ99');
+      await until('the hint that ZZ99 is not a locator', async () =>
+        (await text(page, '#grid-other')).startsWith('Not a valid locator'), 3000);
       await page.click('#grid-save');
       await until('the error next to the field', async () =>
         (await page.isVisible('#grid-error')) && (await text(page, '#grid-error')).length > 5, 3000);
@@ -295,7 +307,9 @@ async function main() {
     await login(page);
     await page.click('#nav-main');
     let bytes = 0;
-    for (const f of ['/', '/app.css', '/app.js']) bytes += (await (await fetch(base + f)).arrayBuffer()).byteLength;
+    const files = await page.evaluate(() => performance.getEntriesByType('resource')
+      .map((e) => new URL(e.name).pathname).filter((p) => p.endsWith('.js') || p.endsWith('.css')));
+    for (const f of ['/', ...new Set(files)]) bytes += (await (await fetch(base + f)).arrayBuffer()).byteLength;
     const latencies = await page.evaluate(async () => {
       const csrf = (await (await fetch('/api/session')).json()).csrf;
       const el = document.getElementById('target-name');

@@ -270,7 +270,11 @@ json DaemonConsole::config() {
 
 json DaemonConsole::targets() {
   json bands = json::array();
-  for (const auto& b : astro::eme_bands()) bands.push_back(std::string(b.name));
+  for (const auto& b : astro::eme_bands()) {
+    bands.push_back({{"band", std::string(b.name)},
+                     {"freq_mhz", b.freq_mhz},
+                     {"wavelength", std::string(b.wavelength)}});
+  }
   return {
       {"targets", snapshot().targets},
       {"satellites", p_.satellites != nullptr ? p_.satellites->list(p_.unix_s()) : json::array()},

@@ -6,6 +6,8 @@
 #include <memory>
 
 #include "azt/linux/asio.hpp"
+#include "console/locator_api.hpp"
+#include "console/query_string.hpp"
 #include "console/web_assets.hpp"
 
 namespace azt::app {
@@ -44,22 +46,14 @@ std::string lower(std::string s) {
 }
 
 double query_number(const std::string& query, const std::string& key, double fallback) {
-  const std::string wanted = key + "=";
-  std::size_t start = 0;
-  while (start <= query.size()) {
-    const auto end = std::min(query.find('&', start), query.size());
-    const std::string_view item(query.data() + start, end - start);
-    if (item.substr(0, wanted.size()) == wanted) {
-      try {
-        const double v = std::stod(std::string(item.substr(wanted.size())));
-        return std::isfinite(v) ? v : fallback;
-      } catch (const std::exception&) {
-        return fallback;
-      }
-    }
-    start = end + 1;
+  const auto text = query_value(query, key);
+  if (!text) return fallback;
+  try {
+    const double v = std::stod(*text);
+    return std::isfinite(v) ? v : fallback;
+  } catch (const std::exception&) {
+    return fallback;
   }
-  return fallback;
 }
 
 }  // namespace
@@ -135,6 +129,7 @@ linux_os::HttpReply WebApi::handle_get(const linux_os::HttpRequest& request) {
     return json_reply(
         200, model_.sky(std::clamp(query_number(request.query, "hours", 12.0), 0.0, 24.0)));
   }
+  if (p == "/api/locator") return json_reply(200, locator_json(request.query));
   if (p == "/api/session") {
     const auto csrf = auth_.csrf_of(cookie_value(request.cookie, "azt_session"), now_());
     json body{{"logged_in", csrf.has_value()}, {"password_set", auth_.has_password()}};

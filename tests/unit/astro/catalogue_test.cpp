@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "azt/astro/bands.hpp"
 
 namespace azt::astro {
@@ -81,6 +83,24 @@ TEST(Bands, CoverSixMetresToFourMillimetres) {
   EXPECT_EQ(find_band("2M"), find_band("144"));
   EXPECT_EQ(find_band("47088")->freq_mhz, 47088.1);
   EXPECT_EQ(find_band("11g"), nullptr);
+}
+
+// The console shows each band by its wavelength (from /api/targets); an operator may type it.
+TEST(Bands, EachWavelengthNamesItsBand) {
+  for (const AmateurBand& b : eme_bands()) {
+    ASSERT_FALSE(b.wavelength.empty()) << b.name;
+    std::string typed(b.wavelength);
+    std::erase(typed, ' ');
+    const AmateurBand* found = find_band(typed);
+    ASSERT_NE(found, nullptr) << typed;
+    EXPECT_EQ(found->name, b.name) << typed;
+    // The wavelength is c / f to within the band names' rounding (1.25 m is 240 MHz, 6 mm 50 GHz).
+    const double metres = 299.792458 / b.freq_mhz;
+    const double named = std::stod(typed) * (typed.ends_with("cm")   ? 0.01
+                                             : typed.ends_with("mm") ? 0.001
+                                                                     : 1.0);
+    EXPECT_NEAR(named / metres, 1.0, 0.2) << typed;
+  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@ namespace azt::astro {
 struct AmateurBand {
   std::string_view name;  ///< "144", "10g" …
   double freq_mhz = 0.0;  ///< typical EME frequency in the band
+  std::string_view wavelength;  ///< what operators call it: "2 m", "23 cm" …
 };
 
 /// 50 MHz to 24 GHz, plus 47 and 76 GHz, in frequency order.

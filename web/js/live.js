@@ -1,0 +1,182 @@
+// The main screen from each state message: position, target, faults, who moved the antenna,
+// station I/O and the Moon panel.
+
+import { S } from './state.js';
+import { $, h, setText } from './dom.js';
+import { deg, fix, hz, isNum, pad, sdeg } from './format.js';
+import { bandList, wavelength } from './bands.js';
+import { drawTrend, TREND_S } from './trend.js';
+import { drawSky } from './sky.js';
+import { markActiveTarget } from './targets.js';
+
+export function parkSlotAt(az, el) {
+  const park = (S.config && S.config.park) || (S.targets && S.targets.park) || [];
+  return park.find((p) => isNum(az) && Math.abs(p.az_deg - az) < 0.01 && Math.abs(p.el_deg - el) < 0.01);
+}
+function targetLabel(st) {
+  const t = st.target || {};
+  switch (st.mode) {
+    case 'TRACK': return t.name || '—';
+    case 'PARK': { const p = parkSlotAt(t.az_deg, t.el_deg); return p ? `Park ${p.slot} · ${p.name}` : 'Park'; }
+    case 'MAN': return 'Manual position';
+    case 'EXT': return 'PC program';
+    default: return t.name || (S.sel ? S.sel.label : '—');
+  }
+}
+export const sameName = (a, b) => a != null && b != null && String(a).toLowerCase() === String(b).toLowerCase();
+
+export function onState(st) {
+  S.state = st;
+  const t = st.target || {};
+  // TRACK starts the selected target: the one chosen here last, or the one the controller last
+  // switched to (a change of the tracked target, by anyone, becomes the selection).
+  if (st.mode === 'TRACK' && t.name && !sameName(t.name, S.lastTracked)) {
+    S.lastTracked = t.name;
+    const mine = S.sel && (sameName(S.sel.serverName, t.name) || sameName(S.sel.label, t.name) || (S.sel.body.ra_deg !== undefined && !S.sel.serverName));
+    if (mine) S.sel.serverName = t.name; else S.sel = { body: { name: t.name }, label: t.name, serverName: t.name };
+  }
+  // A: target
+  setText('target-name', targetLabel(st));
+  setText('target-az', deg(t.az_deg));
+  setText('target-el', deg(t.el_deg));
+  const m = st.moon;
+  setText('doppler', m ? hz(m.echo_doppler_hz) : '—');
+  setText('doppler-band', m && m.band ? `${m.band} MHz` : '');
+  $('doppler').parentElement.classList.toggle('off', !(st.mode === 'TRACK' && sameName(t.name, 'moon')));
+  const dx = m && isNum(m.dx_echo_doppler_hz);
+  $('dx-row').hidden = !dx;
+  if (dx) setText('dx-doppler', hz(m.dx_echo_doppler_hz));
+  const clk = st.clock || {};
+  setText('clock-source', clk.source || '—');
+  setText('clock-status', Object.entries(clk).filter(([k]) => k !== 'source').map(([k, v]) => `${k}: ${typeof v === 'object' ? JSON.stringify(v) : v}`).join(' · '));
+  // B: corrections
+  const c = st.corrections || {};
+  setText('az-corr', sdeg(c.az_user_deg));
+  setText('el-corr', sdeg(c.el_user_deg));
+  // C: antenna
+  const a = st.antenna || {};
+  const known = a.known !== false && isNum(a.az_deg);
+  setText('ant-az', known ? deg(a.az_deg) : '—');
+  setText('ant-el', known ? deg(a.el_deg) : '—');
+  const e = st.error_deg;
+  setText('err-az', e ? sdeg(e.az) : '—');
+  setText('err-el', e ? sdeg(e.el) : '—');
+  const pe = $('pointing-error');
+  if (e && isNum(e.az) && isNum(e.el)) {
+    const tot = Math.hypot(e.az * Math.cos(((isNum(a.el_deg) ? a.el_deg : 0) * Math.PI) / 180), e.el);
+    setText(pe, deg(tot));
+    const win = S.config && S.config.control ? S.config.control.window_deg : 0.1;
+    pe.className = `perr ${tot <= Math.max(win, 0.02) + 0.01 ? 'good' : tot > 3 ? 'far' : ''}`;
+  } else { setText(pe, '—'); pe.className = 'perr'; }
+  const mv = $('ant-moving');
+  setText(mv, !known ? 'position unknown' : a.moving ? 'moving' : 'still');
+  mv.className = `moving${known && a.moving ? ' on' : ''}`;
+  const showMount = known && isNum(a.az_mount_deg) && Math.abs(a.az_mount_deg - a.az_deg) > 0.005;
+  $('mount-row').hidden = !showMount;
+  if (showMount) setText('ant-mount', deg(a.az_mount_deg));
+  // D: mode, time
+  const mode = st.mode || '—';
+  setText('mode', mode);
+  $('mode').className = `mode m-${mode}`;
+  setText('mode-who', st.who ? `by ${st.who}${st.pc_locked_out ? ' · PC programs locked out' : ''}` : '');
+  setText('track-name', S.sel ? S.sel.label : 'choose a target');
+  const d = st.utc ? new Date(st.utc) : null;
+  if (d && !Number.isNaN(d.getTime())) {
+    setText('utc', `${pad(d.getUTCHours())}:${pad(d.getUTCMinutes())}:${pad(d.getUTCSeconds())}`);
+    setText('date', `${['Sun', 'Mon', 'Tue', 'Wed', 'Thu', 'Fri', 'Sat'][d.getUTCDay()]}, ${pad(d.getUTCDate())} ${
+      ['Jan', 'Feb', 'Mar', 'Apr', 'May', 'Jun', 'Jul', 'Aug', 'Sep', 'Oct', 'Nov', 'Dec'][d.getUTCMonth()]} ${d.getUTCFullYear()}`);
+  }
+  // header
+  setText('mini-az', known ? `${fix(a.az_deg, 2)}°` : '—');
+  setText('mini-el', known ? `${fix(a.el_deg, 2)}°` : '—');
+  setText('mini-mode', mode);
+  $('mini-mode').className = `mini-mode m-${mode}`;
+  renderFaults(Array.isArray(st.faults) ? st.faults : []);
+  renderIo(st.station_io);
+  renderLog('event-list', 'eventsKey', Array.isArray(st.events) ? st.events : [], 10);
+  renderLog('command-list', 'commandsKey', Array.isArray(st.commands) ? st.commands : [], 6);
+  renderMoon(m);
+  // trend
+  const now = performance.now() / 1000;
+  S.trend.push([now, e && isNum(e.az) ? e.az : null, e && isNum(e.el) ? e.el : null]);
+  while (S.trend.length && S.trend[0][0] < now - TREND_S - 5) S.trend.shift();
+  if (S.screen === 'main') drawTrend();
+  if (S.screen === 'sky') drawSky();
+  if (S.screen === 'manual') {
+    setText('man-cur-az', known ? deg(a.az_deg) : '—');
+    setText('man-cur-el', known ? deg(a.el_deg) : '—');
+    setText('man-cur-mode', `${mode}${st.who ? ` (${st.who})` : ''}`);
+  }
+  if (S.screen === 'targets') markActiveTarget();
+}
+
+function renderFaults(list) {
+  const key = JSON.stringify(list);
+  if (key === S.faultsKey) return;
+  S.faultsKey = key;
+  $('faults').hidden = list.length === 0;
+  $('faults-plural').hidden = list.length === 1;
+  $('fault-list').replaceChildren(...list.map((f) => h('li', { text: String(f) })));
+}
+
+// A newest-first list of {utc, text, count}: the refusals any source was given ("events") and
+// the accepted motion commands with their sources ("commands"), docs/web-api.md.
+function renderLog(listId, keyName, list, max) {
+  const key = JSON.stringify(list);
+  if (key === S[keyName]) return;
+  S[keyName] = key;
+  if (!list.length) { $(listId).replaceChildren(h('li', { class: 'dimtxt', text: 'none yet' })); return; }
+  $(listId).replaceChildren(...list.slice(0, max).map((e) => h('li', {
+    text: `${String(e.utc || '').slice(11, 19)}  ${String(e.text)}${e.count > 1 ? ` (×${e.count})` : ''}`,
+  })));
+}
+
+// E-stop, limit switches and the T/R chain (docs/web-api.md "station_io").
+function renderIo(io) {
+  const key = JSON.stringify(io || null);
+  if (key === S.ioKey) return;
+  S.ioKey = key;
+  const es = io && io.estop ? io.estop : null;
+  const estop = $('io-estop');
+  if (!es || (!es.wired && !es.latched)) { setText(estop, 'not wired'); estop.className = ''; } else {
+    setText(estop, es.latched ? (es.input ? 'PRESSED · latched' : 'latched · clear faults to resume') : 'ready');
+    estop.className = es.latched ? 'io-bad' : '';
+  }
+  const lim = io && io.limits ? io.limits : null;
+  const names = { az_ccw: 'AZ CCW', az_cw: 'AZ CW', el_down: 'EL DOWN', el_up: 'EL UP' };
+  const tripped = lim ? Object.keys(names).filter((k) => lim[k]).map((k) => names[k]) : [];
+  setText('io-limits', !lim ? 'not wired' : tripped.length ? `tripped: ${tripped.join(', ')}` : 'all clear');
+  $('io-limits').className = tripped.length ? 'io-bad' : '';
+  const seq = io && io.sequencer ? io.sequencer : null;
+  let ptt = '—';
+  if (seq) {
+    ptt = seq.timed_out ? 'time-out: release PTT' : seq.inhibited ? 'inhibited' : seq.transmitting ? 'TRANSMIT'
+      : seq.ptt ? 'keying…' : 'receive';
+    if (!seq.wired) ptt += ' (no GPIO lines)';
+  }
+  setText('io-ptt', ptt);
+  $('io-ptt').className = seq && (seq.transmitting || seq.timed_out) ? 'io-bad' : '';
+  const outs = seq && Array.isArray(seq.outputs) ? seq.outputs : [];
+  $('io-seq').replaceChildren(...outs.map((o) => h('span', { class: `out${o.on ? ' on' : ''}`, text: String(o.name) })));
+}
+
+function renderMoon(m) {
+  if (!m) {
+    setText('moon-azel', 'not available'); setText('moon-dist', '—'); setText('moon-delay', '—');
+    if (S.dopKey) { $('moon-doppler').replaceChildren(); S.dopKey = ''; }
+    return;
+  }
+  setText('moon-azel', `${deg(m.az_deg)} / ${deg(m.el_deg)}${isNum(m.el_deg) && m.el_deg < 0 ? ' (below horizon)' : ''}`);
+  setText('moon-dist', isNum(m.distance_km) ? `${Math.round(m.distance_km).toLocaleString('en-US')} km` : '—');
+  setText('moon-delay', isNum(m.echo_delay_s) ? `${m.echo_delay_s.toFixed(3)} s` : '—');
+  const dop = m.doppler_hz && typeof m.doppler_hz === 'object' ? m.doppler_hz : {};
+  const bands = Object.keys(dop).sort((x, y) => Number(x) - Number(y));
+  const key = `${bands.join(',')}|${m.band}|${bandList().length}`;  // names once /api/targets is in
+  if (key !== S.dopKey) {
+    S.dopKey = key;
+    $('moon-doppler').replaceChildren(h('div', { class: 'dophead', text: 'Self-echo Doppler by band (MHz)' }),
+      ...bands.map((b) => h('div', { class: `dop${String(b) === String(m.band) ? ' sel' : ''}` },
+        h('span', {}, String(b), ' ', h('small', { text: wavelength(b) })), h('b', { 'data-band': b }))));
+  }
+  for (const el of $('moon-doppler').querySelectorAll('b[data-band]')) setText(el, hz(dop[el.dataset.band]));
+}

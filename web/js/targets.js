@@ -1,0 +1,136 @@
+// The targets screen: sources, spacecraft, satellites and their passes, RA/Dec.
+
+import { S } from './state.js';
+import { $, h, setText } from './dom.js';
+import { deg, fix, isNum, pad, parseNum } from './format.js';
+import { toast } from './toast.js';
+import { act, loadJSON } from './api.js';
+import { parkSlotAt, sameName } from './live.js';
+import { fillBands } from './setup.js';
+
+export async function loadTargets() {
+  const j = await loadJSON('/api/targets');
+  if (!j) { setText('targets-error', S.targets ? '' : 'Could not read the target list.'); return; }
+  setText('targets-error', '');
+  S.targets = j;
+  renderTargets();
+  fillBands();
+}
+const posText = (o) => (isNum(o.el_deg) ? `az ${deg(o.az_deg, 1)} · el ${deg(o.el_deg, 1)}${o.el_deg < 0 ? ' · below' : ''}` : '');
+function renderTargets() {
+  const list = (S.targets && S.targets.targets) || [];
+  for (const kind of ['sun', 'moon']) {
+    const o = list.find((x) => x.kind === kind);
+    const b = $(`tgt-${kind}`);
+    if (o) { b.dataset.tname = o.name; setText(`tgt-${kind}-pos`, posText(o)); b.classList.toggle('down', o.el_deg < 0); }
+  }
+  const box = $('sources');
+  const srcs = list.filter((x) => x.kind === 'source');
+  const names = srcs.map((x) => x.name).join('\n');
+  if (box.dataset.names !== names) {
+    box.dataset.names = names;
+    box.replaceChildren(...srcs.map((o) => h('button', { type: 'button', class: 'tgt src', 'data-name': o.name },
+      h('span', { class: 'tn', text: o.name }), h('span', { class: 'tp' }))));
+    if (!srcs.length) box.append(h('p', { class: 'dimtxt', text: 'No radio sources configured.' }));
+  }
+  for (const o of srcs) {
+    const b = [...box.children].find((x) => x.dataset.name === o.name);
+    if (b) { setText(b.lastChild, posText(o)); b.classList.toggle('down', o.el_deg < 0); }
+  }
+  renderSatellites();
+  renderSpacecraft(list.filter((x) => x.kind === 'spacecraft'));
+  const park = (S.targets && S.targets.park) || [];
+  for (let n = 1; n <= 4; n++) {
+    const p = park.find((x) => x.slot === n);
+    const b = $(`park-${n}`);
+    setText(b.firstChild, p ? `${n} · ${p.name}` : `Park ${n}`);
+    setText(b.lastChild, p ? `az ${deg(p.az_deg, 1)} · el ${deg(p.el_deg, 1)}` : 'not set');
+  }
+  markActiveTarget();
+}
+function renderSpacecraft(crafts) {
+  const box = $('spacecraft');
+  const key = JSON.stringify(crafts.map((o) => [o.name, o.description, o.frequency_mhz, o.error || '',
+    isNum(o.el_deg) ? Math.round(o.el_deg * 10) : null]));
+  if (box.dataset.key === key) return;
+  box.dataset.key = key;
+  if (!crafts.length) { box.replaceChildren(h('p', { class: 'dimtxt', text: 'None configured.' })); return; }
+  box.replaceChildren(...crafts.map((o) => {
+    const f = isNum(o.frequency_mhz) && o.frequency_mhz > 0 ? ` · ${o.frequency_mhz} MHz` : '';
+    const where = o.error ? 'outside its table' : posText(o);
+    return h('button', { type: 'button', class: 'tgt src', 'data-name': o.name, title: o.description || '' },
+      h('span', { class: 'tn', text: o.name }),
+      h('span', { class: 'tp', text: `${o.description ? `${o.description}${f} · ` : f ? `${f.slice(3)} · ` : ''}${where}` }));
+  }));
+}
+// Every satellite's passes in the next 24 h, merged in time order (the first 15).
+function renderPasses(sats) {
+  const rows = [];
+  for (const o of sats) for (const p of (Array.isArray(o.passes) ? o.passes : [])) rows.push({ name: o.name, ...p });
+  rows.sort((a, b) => (a.aos < b.aos ? -1 : a.aos > b.aos ? 1 : 0));
+  const hm = (iso) => { const t = new Date(iso); return Number.isNaN(t.getTime()) ? '—' : `${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())}`; };
+  const table = $('sat-passes');
+  table.hidden = rows.length === 0;
+  table.tBodies[0].replaceChildren(...rows.slice(0, 15).map((r) => h('tr', {},
+    h('td', { text: r.name }), h('td', { text: hm(r.aos) }), h('td', { text: deg(r.aos_az_deg, 0) }),
+    h('td', { text: deg(r.max_el_deg, 0) }), h('td', { text: hm(r.los) }), h('td', { text: deg(r.los_az_deg, 0) }))));
+}
+function renderSatellites() {
+  const sats = (S.targets && Array.isArray(S.targets.satellites)) ? S.targets.satellites : [];
+  const box = $('satellites');
+  const key = JSON.stringify(sats.map((o) => [o.norad, o.name, o.next_pass, o.el_deg && Math.round(o.el_deg)]));
+  if (box.dataset.key === key) return;
+  box.dataset.key = key;
+  renderPasses(sats);
+  if (!sats.length) { box.replaceChildren(h('p', { class: 'dimtxt', text: 'No satellite catalogue ([satellites] file).' })); return; }
+  box.replaceChildren(...sats.map((o) => {
+    const np = o.next_pass;
+    const t = np ? new Date(np.aos) : null;
+    let info = np && t && !Number.isNaN(t.getTime())
+      ? `AOS ${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())} · max ${deg(np.max_el_deg, 0)}` : 'no pass in 24 h';
+    if (isNum(o.el_deg) && o.el_deg >= 0) info = `up now · el ${deg(o.el_deg, 1)}`;
+    const stale = isNum(o.element_age_days) && Math.abs(o.element_age_days) > 7;
+    return h('button', { type: 'button', class: 'tgt sat', 'data-name': `sat:${o.name}`, 'data-norad': o.norad },
+      h('span', { class: 'tn', text: o.name }),
+      h('span', { class: `tp${stale ? ' stale' : ''}`, text: stale ? `${info} · elements ${Math.round(o.element_age_days)} d old` : info }));
+  }));
+}
+export function markActiveTarget() {
+  const st = S.state || {};
+  const tn = st.mode === 'TRACK' && st.target ? st.target.name : null;
+  document.querySelectorAll('#screen-targets .tgt[data-name], #screen-targets .tgt[data-tname]').forEach((b) => b.classList.toggle('active', sameName(b.dataset.name || b.dataset.tname, tn)));
+  const pk = st.mode === 'PARK' && st.target ? parkSlotAt(st.target.az_deg, st.target.el_deg) : null;
+  for (let n = 1; n <= 4; n++) $(`park-${n}`).classList.toggle('active', !!pk && pk.slot === n);
+}
+export async function track(body, label, btn) {
+  const r = await act(`track ${label}`, 'POST', '/api/target', body, { btn });
+  if (r.ok || r.status === 401) { // chosen: TRACK starts it after logging in
+    S.sel = { body, label, serverName: r.data.target || null };
+    setText('track-name', label);
+  }
+  if (r.ok) toast(`TRACK ${label}`);
+  return r;
+}
+
+// RA as degrees or h:m:s (also "5h34m31.9s"); Dec as degrees or d:m:s.
+export function parseAngle(str, hours) {
+  const s = String(str).trim().replace(/,/g, '.');
+  if (!s) return NaN;
+  const sign = s.startsWith('-') || s.startsWith('−') ? -1 : 1;
+  const body = s.replace(/^[-+−]/, '').trim();
+  if (/[:hms°'"\s]/i.test(body)) {
+    const parts = body.split(/[:hms°'"\s]+/i).filter(Boolean).map(parseNum);
+    if (!parts.length || parts.length > 3 || parts.some(Number.isNaN)) return NaN;
+    const v = parts[0] + (parts[1] || 0) / 60 + (parts[2] || 0) / 3600;
+    return sign * v * (hours ? 15 : 1);
+  }
+  const v = parseNum(body);
+  return sign * v;
+}
+export function radecHint() {
+  const ra = parseAngle($('ra').value, true); const dec = parseAngle($('dec').value, false);
+  const parts = [];
+  if (isNum(ra)) { const hh = ra / 15; const H = Math.floor(hh); const M = Math.floor((hh - H) * 60); parts.push(`RA ${fix(ra, 4)}° = ${pad(H)}h${pad(M)}m${fix(((hh - H) * 60 - M) * 60, 1).padStart(4, '0')}s`); }
+  if (isNum(dec)) parts.push(`Dec ${dec >= 0 ? '+' : ''}${fix(dec, 4)}°`);
+  setText('radec-hint', parts.join(' · '));
+}
