@@ -78,3 +78,31 @@ def rotctld(port, lines, timeout=3.0):
                 reply += " " + f.readline().decode().strip()
             replies.append(reply)
     return replies
+
+
+def station_toml(web_port=0, rotctld_port=0, mount_rate_deg_s=None):
+    """The start of the integration tests' configurations: a schema-2 station at FN06HE that
+    tracks nothing at start, with its servers on the given ports (0: off); a mount rate makes
+    moves take seconds instead of minutes. Tests append their own tables."""
+    text = ('schema_version = 2\n[station]\ngrid = "FN06HE"\n[target]\nname = "stop"\n'
+            f'[rotctld]\nport = {rotctld_port}\n[pstrotator]\nport = 0\n[web]\nport = {web_port}\n')
+    if mount_rate_deg_s is not None:
+        text += (f"[mount.az]\nmax_rate_deg_s = {mount_rate_deg_s}\n"
+                 f"[mount.el]\nmax_rate_deg_s = {mount_rate_deg_s}\n")
+    return text
+
+
+def tle_with_epoch_now(name_line=b"ISS (ZARYA)"):
+    """An ISS element set whose epoch is now (its passes are the next hours', issue 7), as bytes
+    under `name_line` (which may be any bytes: a test of a name that is not UTF-8)."""
+    import datetime
+
+    def checksum(line):
+        s = sum(int(c) if c.isdigit() else (1 if c == "-" else 0) for c in line[:68])
+        return line[:68] + str(s % 10)
+    now = datetime.datetime.now(datetime.timezone.utc)
+    day = (now - datetime.datetime(now.year, 1, 1, tzinfo=datetime.timezone.utc)).total_seconds()
+    epoch = "%02d%012.8f" % (now.year % 100, day / 86400 + 1)
+    l1 = "1 25544U 98067A   %s  .00016717  00000-0  30119-3 0  999" % epoch
+    l2 = "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110"
+    return name_line + b"\n" + checksum(l1).encode() + b"\n" + checksum(l2).encode() + b"\n"

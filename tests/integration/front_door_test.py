@@ -11,7 +11,7 @@ import subprocess
 import sys
 import tempfile
 
-from daemon_harness import Checks, free_port, http_json, rotctld, wait_until
+from daemon_harness import Checks, free_port, http_json, rotctld, station_toml, wait_until
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-front-door-")
@@ -21,24 +21,9 @@ check = Checks()
 def config(path, web_port, rot_port, fault):
     with open(path, "w") as f:
         # A 0–450° mount; the jammed station's azimuth shaft never turns (the stall latches).
-        f.write(f"""schema_version = 2
-[web]
-port = {web_port}
-[rotctld]
-port = {rot_port}
-[pstrotator]
-port = 0
-[geometry]
+        f.write(station_toml(web_port, rot_port, mount_rate_deg_s=10.0) + f"""[geometry]
 az_min_deg = 0.0
 az_max_deg = 450.0
-[station]
-grid = "FN06HE"
-[target]
-name = "stop"
-[mount.az]
-max_rate_deg_s = 10.0
-[mount.el]
-max_rate_deg_s = 10.0
 [sim.az]
 {'fault = "frozen_shaft"' if fault else ''}
 """)

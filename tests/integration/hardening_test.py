@@ -39,7 +39,7 @@ import tempfile
 import threading
 import time
 
-from daemon_harness import Checks, free_port, wait_until
+from daemon_harness import Checks, free_port, station_toml, tle_with_epoch_now, wait_until
 
 BIN = os.path.realpath(sys.argv[1])
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
@@ -351,21 +351,6 @@ def poll_state_while(busy, at_least=20):
 
 
 # ---- The configuration: examples/sim.toml with free ports and private pseudo-terminals ---------
-
-def tle_with_epoch_now(name_line):
-    """An ISS element set whose epoch is now (its passes are the next hours'), named name_line."""
-    import datetime
-
-    def checksum(line):
-        s = sum(int(c) if c.isdigit() else (1 if c == "-" else 0) for c in line[:68])
-        return line[:68] + str(s % 10)
-    now = datetime.datetime.now(datetime.timezone.utc)
-    day = (now - datetime.datetime(now.year, 1, 1, tzinfo=datetime.timezone.utc)).total_seconds()
-    epoch = "%02d%012.8f" % (now.year % 100, day / 86400 + 1)
-    l1 = "1 25544U 98067A   %s  .00016717  00000-0  30119-3 0  999" % epoch
-    l2 = "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110"
-    return name_line + b"\n" + checksum(l1).encode() + b"\n" + checksum(l2).encode() + b"\n"
-
 
 # Row 2's catalogue: the name line is Latin-1 (0xE9 alone is not UTF-8).
 with open(os.path.join(TMP, "sats.tle"), "wb") as f:
@@ -695,6 +680,11 @@ try:
               f"{sats[0]['name'] if sats else None!r})")
 
     # ---- Row 5: a flood of anonymous live views, then of idle rotctld connections -----------
+    # A login costs its password hash (Argon2id, on the worker thread): how long it takes here,
+    # with no view held, is the yardstick for the login with the views held (a loaded machine
+    # hashes slower; the views must not add to it).
+    login_alone = request("POST", "/api/login", {"password": PASSWORD}, timeout=5)
+    check(login_alone.status == 200, f"row 5: a login with no view held: {login_alone.status}")
     socks = []
     for _ in range(200):
         try:
@@ -720,16 +710,18 @@ try:
           f"row 5: the rest are 503 or refused: {dict(outcomes)}")
     r_state = request("GET", "/api/state", timeout=2)
     r_stop = request("POST", "/api/stop", None, TOKEN, timeout=2)
-    r_login = request("POST", "/api/login", {"password": PASSWORD}, timeout=2)
-    for name, r in [("GET /api/state", r_state), ("POST /api/stop (bearer)", r_stop),
-                    ("POST /api/login", r_login)]:
-        check(r.status == 200 and r.seconds < 1.0,
-              f"row 5: {name} with the views held: {r.status} in {r.seconds:.3f} s {r.raw[:200]!r}")
+    r_login = request("POST", "/api/login", {"password": PASSWORD}, timeout=5)
+    for name, r, limit_s in [("GET /api/state", r_state, 1.0),
+                             ("POST /api/stop (bearer)", r_stop, 1.0),
+                             ("POST /api/login", r_login, login_alone.seconds + 1.0)]:
+        check(r.status == 200 and r.seconds < limit_s,
+              f"row 5: {name} with the views held: {r.status} in {r.seconds:.3f} s "
+              f"(limit {limit_s:.3f} s) {r.raw[:200]!r}")
     check(state()["mode"] == "STOP", "row 5: the stop took effect")
     figure(5, f"200 anonymous upgrades: {dict(outcomes)}; with {len(held)} held: state "
               f"{r_state.status} {r_state.seconds * 1000:.1f} ms, stop {r_stop.status} "
               f"{r_stop.seconds * 1000:.1f} ms, login {r_login.status} "
-              f"{r_login.seconds * 1000:.1f} ms")
+              f"{r_login.seconds * 1000:.1f} ms (alone {login_alone.seconds * 1000:.1f} ms)")
     for s in held:
         s.close()
 
@@ -913,9 +905,7 @@ try:
     def pty_config(name, directory):
         path = os.path.join(TMP, f"{name}.toml")
         with open(path, "w") as f:
-            f.write('schema_version = 2\n[station]\ngrid = "FN06HE"\n[target]\nname = "stop"\n'
-                    '[rotctld]\nport = 0\n[pstrotator]\nport = 0\n[web]\nport = 0\n'
-                    f'[[serial]]\nprotocol = "gs232b"\ndevice = "pty:{directory}/gs232b"\n')
+            f.write(station_toml() + f'[[serial]]\nprotocol = "gs232b"\ndevice = "pty:{directory}/gs232b"\n')
         return path
 
     def serve(path):

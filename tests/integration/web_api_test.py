@@ -14,7 +14,7 @@ import tempfile
 import time
 import urllib.request
 
-from daemon_harness import Checks, free_port, http_json, wait_until
+from daemon_harness import Checks, free_port, http_json, station_toml, tle_with_epoch_now, wait_until
 
 BIN = os.path.realpath(sys.argv[1])
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
@@ -39,41 +39,11 @@ def wait_for(what, probe, seconds=10.0):
     return check(wait_until(probe, seconds), f"timed out waiting for {what}")
 
 
-def tle_with_epoch_now():
-    """An ISS element set whose epoch is now, so its passes are the next hours' (issue 7)."""
-    import datetime
-    def checksum(line):
-        s = sum(int(c) if c.isdigit() else (1 if c == "-" else 0) for c in line[:68])
-        return line[:68] + str(s % 10)
-    now = datetime.datetime.now(datetime.timezone.utc)
-    day = (now - datetime.datetime(now.year, 1, 1, tzinfo=datetime.timezone.utc)).total_seconds()
-    epoch = "%02d%012.8f" % (now.year % 100, day / 86400 + 1)
-    l1 = "1 25544U 98067A   %s  .00016717  00000-0  30119-3 0  999" % epoch
-    l2 = "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110"
-    return "ISS (ZARYA)\n%s\n%s\n" % (checksum(l1), checksum(l2))
-
-
-with open(os.path.join(TMP, "sats.tle"), "w") as f:
+with open(os.path.join(TMP, "sats.tle"), "wb") as f:
     f.write(tle_with_epoch_now())
 
 with open(CONFIG, "w") as f:
-    f.write(f"""schema_version = 2
-# a comment that every save must keep
-[station]
-grid = "FN06HE"
-[target]
-name = "stop"
-[mount.az]
-max_rate_deg_s = 10.0
-[mount.el]
-max_rate_deg_s = 10.0
-[rotctld]
-port = 0
-[pstrotator]
-port = 0
-[web]
-port = {PORT}
-[satellites]
+    f.write("# a comment that every save must keep\n" + station_toml(PORT, mount_rate_deg_s=10.0) + f"""[satellites]
 file = "sats.tle"
 [[spacecraft]]
 name = "Moon table"

@@ -71,13 +71,7 @@ std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& a, c
     return linux_os::make_mcp41010_drive(std::move(bus).value(), a.wiper,
                                          "MCP41010 on " + a.spi_device);
   }
-  linux_os::PwmHBridgeConfig c;
-  c.chip_dir = pwm.chip_dir;
-  c.rpwm_channel = a.name == "az" ? pwm.az_rpwm : pwm.el_rpwm;
-  c.lpwm_channel = a.name == "az" ? pwm.az_lpwm : pwm.el_lpwm;
-  c.frequency_hz = pwm.frequency_hz;
-  c.dead_time_s = pwm.dead_time_s;
-  auto bridge = linux_os::PwmHBridge::open(c);
+  auto bridge = linux_os::PwmHBridge::open(pwm.of(a.name));
   if (!bridge) {
     throw UsageError(std::string("[pwm] ") + (a.name == "az" ? "azimuth" : "elevation") + ": " +
                      bridge.error().message);

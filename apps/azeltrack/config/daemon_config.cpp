@@ -194,8 +194,8 @@ GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
 
 PwmConfig read_pwm(const ConfigSection& s) {
   PwmConfig p;
-  p.chip_dir = s.text("chip").value_or(p.chip_dir);
-  unsigned* channels[] = {&p.az_rpwm, &p.az_lpwm, &p.el_rpwm, &p.el_lpwm};
+  unsigned* channels[] = {&p.az.rpwm_channel, &p.az.lpwm_channel, &p.el.rpwm_channel,
+                          &p.el.lpwm_channel};
   const char* keys[] = {"az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm"};
   for (std::size_t i = 0; i < 4; ++i) {
     const auto v = s.integer(keys[i]).value_or(*channels[i]);
@@ -206,11 +206,16 @@ PwmConfig read_pwm(const ConfigSection& s) {
         s.fail(keys[i], std::string("is the same channel as ") + keys[j]);
     }
   }
-  p.frequency_hz = s.number("frequency_hz").value_or(p.frequency_hz);
-  if (p.frequency_hz < 10.0 || p.frequency_hz > 100000.0)
+  const double frequency_hz = s.number("frequency_hz").value_or(p.az.frequency_hz);
+  if (frequency_hz < 10.0 || frequency_hz > 100000.0)
     s.fail("frequency_hz", "must be 10 to 100000");
-  p.dead_time_s = s.number("dead_time_s").value_or(p.dead_time_s);
-  if (p.dead_time_s < 0.01 || p.dead_time_s > 3.0) s.fail("dead_time_s", "must be 0.01 to 3 s");
+  const double dead_time_s = s.number("dead_time_s").value_or(p.az.dead_time_s);
+  if (dead_time_s < 0.01 || dead_time_s > 3.0) s.fail("dead_time_s", "must be 0.01 to 3 s");
+  for (linux_os::PwmHBridgeConfig* bridge : {&p.az, &p.el}) {
+    bridge->chip_dir = s.text("chip").value_or(bridge->chip_dir);
+    bridge->frequency_hz = frequency_hz;
+    bridge->dead_time_s = dead_time_s;
+  }
   return p;
 }
 

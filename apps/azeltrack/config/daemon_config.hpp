@@ -10,6 +10,7 @@
 #include "azt/linux/gpio.hpp"
 #include "azt/linux/hamlib_rotator.hpp"
 #include "azt/linux/hub_serial_link.hpp"
+#include "azt/linux/pwm_hbridge.hpp"
 #include "azt/proto/target_limits.hpp"
 #include "azt/sequencer/tr_sequencer.hpp"
 #include "azt/sim/station_sim.hpp"
@@ -52,15 +53,14 @@ struct NetServerConfig {
   unsigned short port = 0;  ///< 0: disabled
 };
 
-/// [pwm]: two IBT-2 H-bridges on one sysfs PWM chip (the `pwm` backend; docs/hardware.md).
+/// [pwm]: two IBT-2 H-bridges on one sysfs PWM chip (the `pwm` backend; docs/hardware.md), with
+/// the chip, frequency and dead time shared and two channels each.
 struct PwmConfig {
-  std::string chip_dir = "/sys/class/pwm/pwmchip0";
-  unsigned az_rpwm = 0;
-  unsigned az_lpwm = 1;
-  unsigned el_rpwm = 2;
-  unsigned el_lpwm = 3;
-  double frequency_hz = 1000.0;
-  double dead_time_s = 0.1;
+  linux_os::PwmHBridgeConfig az;
+  linux_os::PwmHBridgeConfig el{"/sys/class/pwm/pwmchip0", 2, 3, 1000.0, 0.1};
+  [[nodiscard]] const linux_os::PwmHBridgeConfig& of(const std::string& axis) const {
+    return axis == "az" ? az : el;
+  }
 };
 
 /// [gpio]: the station's GPIO lines (docs/hardware.md). Absent lines are not wired.

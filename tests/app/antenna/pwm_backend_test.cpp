@@ -209,7 +209,8 @@ TEST_F(PwmBackendTest, TheEnableLineFollowsTheDriveAndDropsOnAStop) {
 TEST_F(PwmBackendTest, AMissingChipOrHubIsAClearErrorAndNothingIsDriven) {
   boost::asio::io_context io;
   DaemonConfig c = config();
-  c.pwm.chip_dir = (station_.dir() / "pwmchip9").string();
+  c.pwm.az.chip_dir = (station_.dir() / "pwmchip9").string();
+  c.pwm.el.chip_dir = c.pwm.az.chip_dir;
   try {
     (void)make_pwm_backend(io, c);
     FAIL() << "opened a missing PWM chip";
