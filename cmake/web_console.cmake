@@ -1,9 +1,11 @@
 # The console's files (web/), embedded into one generated source by cmake/embed_web.cmake, for
 # the program and for the web request fuzzer alike: editing a file under web/ rebuilds it.
-set(AZT_WEB_FILES index.html app.css
-  js/main.js js/state.js js/dom.js js/format.js js/bands.js js/toast.js js/api.js js/session.js
-  js/navigation.js js/socket.js js/live.js js/trend.js js/sky.js js/targets.js js/setup.js
-  js/wire.js)
+# Every module under web/js/ is served (a new one needs no edit here; CONFIGURE_DEPENDS re-globs
+# at the next build).
+file(GLOB AZT_WEB_MODULES RELATIVE ${PROJECT_SOURCE_DIR}/web CONFIGURE_DEPENDS
+     ${PROJECT_SOURCE_DIR}/web/js/*.js)
+list(SORT AZT_WEB_MODULES)
+set(AZT_WEB_FILES index.html app.css ${AZT_WEB_MODULES})
 
 # Defines the custom command that writes OUT_CPP (a web_assets.cpp holding AZT_WEB_FILES).
 function(azt_embed_web_console out_cpp)

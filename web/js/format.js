@@ -13,3 +13,5 @@ export function parseNum(s) {
 export const pad = (n, w = 2) => String(n).padStart(w, '0');
 export const upper1 = (s) => (s ? s[0].toUpperCase() + s.slice(1) : s);
 export const fmtLatLon = (lat, lon) => `${fix(Math.abs(lat), 4)}° ${lat < 0 ? 'S' : 'N'}, ${fix(Math.abs(lon), 4)}° ${lon < 0 ? 'W' : 'E'}`;
+// Names as the operator and the controller write them compare case-blind ("moon", "Moon").
+export const sameName = (a, b) => a != null && b != null && String(a).toLowerCase() === String(b).toLowerCase();

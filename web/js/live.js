@@ -1,18 +1,14 @@
 // The main screen from each state message: position, target, faults, who moved the antenna,
 // station I/O and the Moon panel.
 
-import { S } from './state.js';
+import { parkSlotAt, S } from './state.js';
 import { $, h, setText } from './dom.js';
-import { deg, fix, hz, isNum, pad, sdeg } from './format.js';
+import { deg, fix, hz, isNum, pad, sameName, sdeg } from './format.js';
 import { bandList, wavelength } from './bands.js';
 import { drawTrend, TREND_S } from './trend.js';
 import { drawSky } from './sky.js';
 import { markActiveTarget } from './targets.js';
 
-export function parkSlotAt(az, el) {
-  const park = (S.config && S.config.park) || (S.targets && S.targets.park) || [];
-  return park.find((p) => isNum(az) && Math.abs(p.az_deg - az) < 0.01 && Math.abs(p.el_deg - el) < 0.01);
-}
 function targetLabel(st) {
   const t = st.target || {};
   switch (st.mode) {
@@ -23,7 +19,6 @@ function targetLabel(st) {
     default: return t.name || (S.sel ? S.sel.label : '—');
   }
 }
-export const sameName = (a, b) => a != null && b != null && String(a).toLowerCase() === String(b).toLowerCase();
 
 export function onState(st) {
   S.state = st;

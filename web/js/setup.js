@@ -4,8 +4,9 @@ import { S } from './state.js';
 import { $, h, setText, sv } from './dom.js';
 import { deg, fix, fmtLatLon, isNum, pad, parseNum } from './format.js';
 import { toast } from './toast.js';
-import { act, loadJSON } from './api.js';
-import { bandLabel, bandList } from './bands.js';
+import { loadJSON } from './api.js';
+import { act } from './actions.js';
+import { fillBands } from './bands.js';
 import { fitWidth, niceScale } from './trend.js';
 import { loadTargets } from './targets.js';
 
@@ -75,18 +76,6 @@ export async function showOther() {
   setText('grid-other', square ? `Centre of the square: ${fmtLatLon(square.lat_deg, square.lon_deg)}` : grid ? 'Not a valid locator: 2 letters A–R, 2 digits, then optional pairs (like FN06HE).' : '');
   const g = locator ? locator.grid : '';
   setText('latlon-other', g ? `Locator ${g.slice(0, 4).toUpperCase()}${g.slice(4)}` : '');
-}
-export function fillBands() {
-  const sel = $('band');
-  if (document.activeElement === sel) return;
-  const bands = bandList().map((b) => String(b.band));
-  const cur = S.config ? String(S.config.band) : (S.state && S.state.moon ? String(S.state.moon.band) : '');
-  const all = cur && !bands.includes(cur) ? [...bands, cur] : bands;
-  if (sel.dataset.bands !== all.join(',')) {
-    sel.dataset.bands = all.join(',');
-    sel.replaceChildren(...all.map((b) => h('option', { value: b, text: bandLabel(b) })));
-  }
-  if (cur) sel.value = cur;
 }
 
 export function buildPark() {

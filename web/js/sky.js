@@ -2,9 +2,8 @@
 
 import { S } from './state.js';
 import { $, h, setText, sv } from './dom.js';
-import { deg, isNum, pad } from './format.js';
+import { deg, isNum, pad, sameName } from './format.js';
 import { loadJSON } from './api.js';
-import { sameName } from './live.js';
 
 let skyEls = null;
 function proj(az, el) {

@@ -8,3 +8,9 @@ export const S = {
   ws: null, connected: false, backoff: 250, attempts: 0, lastMsg: 0, openedAt: 0, retryTimer: 0,
   trend: [], trendDrawn: 0, skyDrawn: 0, skyListDrawn: 0, faultsKey: '', eventsKey: '', commandsKey: '', ioKey: '', dopKey: '',
 };
+
+// The park slot at this position, if one is (the target line says "Park 2 · Stow").
+export function parkSlotAt(az, el) {
+  const park = (S.config && S.config.park) || (S.targets && S.targets.park) || [];
+  return park.find((p) => Number.isFinite(az) && Math.abs(p.az_deg - az) < 0.01 && Math.abs(p.el_deg - el) < 0.01);
+}

@@ -1,12 +1,12 @@
 // The targets screen: sources, spacecraft, satellites and their passes, RA/Dec.
 
-import { S } from './state.js';
+import { parkSlotAt, S } from './state.js';
 import { $, h, setText } from './dom.js';
-import { deg, fix, isNum, pad, parseNum } from './format.js';
+import { deg, fix, isNum, pad, parseNum, sameName } from './format.js';
 import { toast } from './toast.js';
-import { act, loadJSON } from './api.js';
-import { parkSlotAt, sameName } from './live.js';
-import { fillBands } from './setup.js';
+import { loadJSON } from './api.js';
+import { act } from './actions.js';
+import { fillBands } from './bands.js';
 
 export async function loadTargets() {
   const j = await loadJSON('/api/targets');

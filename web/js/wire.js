@@ -4,7 +4,7 @@ import { S } from './state.js';
 import { $, setText } from './dom.js';
 import { deg, fix, isNum, parseNum, sdeg } from './format.js';
 import { toast } from './toast.js';
-import { act } from './api.js';
+import { act } from './actions.js';
 import { bandLabel } from './bands.js';
 import { login, logout, showLogin } from './session.js';
 import { go, SCREENS, show } from './navigation.js';

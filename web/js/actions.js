@@ -1,0 +1,47 @@
+// Actions (POST/PUT): a 401 opens the login form, a stale CSRF token is renewed once, and a
+// refusal is shown beside the form's field or as a toast.
+
+import { S } from './state.js';
+import { $, setText } from './dom.js';
+import { toast } from './toast.js';
+import { request } from './api.js';
+import { refreshSession, setLoggedIn, showLogin } from './session.js';
+
+// An action (POST/PUT). 401 opens the login form; a 403 (stale CSRF token) re-reads the session
+// once and retries. errEl: the form's .error element that shows a refusal instead of a toast.
+export async function act(label, method, path, body, opts = {}) {
+  const btn = opts.btn;
+  if (btn) btn.classList.add('busy');
+  let r = await request(method, path, body);
+  if (r.status === 403 && /csrf/i.test(r.data.error || '')) {
+    await refreshSession(); // the session may have been renewed elsewhere: take its token, retry once
+    if (S.csrf) r = await request(method, path, body);
+    else r = { ok: false, status: 401, data: { error: 'login required (the session has ended)' } };
+  }
+  if (btn) btn.classList.remove('busy');
+  if (r.status === 401) {
+    setLoggedIn(false, null);
+    showLogin(`Log in to ${label.toLowerCase()} — the controller answered: “${r.data.error || 'login required'}”.`);
+    if (opts.errEl) setText(opts.errEl, 'Not saved: log in first.');
+    return r;
+  }
+  if (!r.ok) {
+    const msg = r.data.error || (r.status ? `HTTP ${r.status}` : 'no answer from the controller');
+    if (opts.errEl) { setText(opts.errEl, msg); markField(opts.form, r.data.field); } else toast(`${label}: ${msg}`, 'err');
+    return r;
+  }
+  if (opts.errEl) setText(opts.errEl, '');
+  if (opts.form) opts.form.querySelectorAll('.bad').forEach((e) => e.classList.remove('bad'));
+  return r;
+}
+function markField(form, field) {
+  if (!form) return;
+  form.querySelectorAll('.bad').forEach((e) => e.classList.remove('bad'));
+  const map = { grid: 'grid', lat_deg: 'lat', lon_deg: 'lon', alt_m: 'alt', az_offset_deg: 'az-offset',
+    el_offset_deg: 'el-offset', window_deg: 'window', ramp_s: 'ramp', tracking_speed: 'tracking-speed',
+    ra_deg: 'ra', dec_deg: 'dec', band: 'band' };
+  let el = field && map[field] ? $(map[field]) : null;
+  if (form.id === 'man-form') el = field === 'el_deg' ? $('man-el') : field === 'az_deg' ? $('man-az') : null;
+  if (form.classList.contains('park-row') && field) el = form.querySelector(`[data-f="${field}"]`);
+  if (el && form.contains(el)) el.classList.add('bad');
+}
