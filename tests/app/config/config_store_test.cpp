@@ -148,8 +148,7 @@ TEST_F(ConfigStoreTest, CorruptPrimaryFallsBackToTheBackupLoudly) {
     ASSERT_TRUE(store.set("control.window_deg", "0.3").ok());
     EXPECT_EQ(read(path_ + ".corrupt"), corrupt);
     EXPECT_EQ(read(path_ + ".bak"), kValid);
-    EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().station.az_control.window_deg,
-                     0.3);
+    EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().station.az_control.window_deg, 0.3);
     fs::remove(path_ + ".corrupt");
   }
 }
@@ -221,8 +220,8 @@ TEST_F(ConfigStoreTest, CorrectionsAndTheTiltTableAreSettings) {
                         .replace(root["corrections"]["tilt_el_deg"].as_array()->begin() + 3, 1.25);
                   })
                   .ok());
-  EXPECT_DOUBLE_EQ(
-      ConfigStore::open(path_).config().station.corrections.tilt.entries_deg()[3], 1.25);
+  EXPECT_DOUBLE_EQ(ConfigStore::open(path_).config().station.corrections.tilt.entries_deg()[3],
+                   1.25);
   for (const char* bad : {"[1.0, 2.0]", "6.0"}) {
     const auto r = store.set("corrections.tilt_el_deg", bad);
     ASSERT_FALSE(r.ok()) << bad;

@@ -7,8 +7,8 @@ namespace azt::astro {
 
 /// An amateur band with the frequency at which EME activity concentrates, for per-band Doppler.
 struct AmateurBand {
-  std::string_view name;  ///< "144", "10g" …
-  double freq_mhz = 0.0;  ///< typical EME frequency in the band
+  std::string_view name;        ///< "144", "10g" …
+  double freq_mhz = 0.0;        ///< typical EME frequency in the band
   std::string_view wavelength;  ///< what operators call it: "2 m", "23 cm" …
 };
 
