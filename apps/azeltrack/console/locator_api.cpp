@@ -1,6 +1,7 @@
 #include "console/locator_api.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "azt/astro/maidenhead.hpp"
 #include "console/console_model.hpp"
@@ -13,7 +14,7 @@ double number(const std::string& query, const std::string& key) {
   const auto text = query_value(query, key);
   if (!text) throw ApiError(400, key, "give grid=LOCATOR, or lat= and lon=");
   std::size_t used = 0;
-  double v = NAN;
+  double v = std::numeric_limits<double>::quiet_NaN();
   try {
     v = std::stod(*text, &used);
   } catch (const std::exception&) {
