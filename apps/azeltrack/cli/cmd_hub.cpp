@@ -95,13 +95,25 @@ int run_encode(const HubEncodeOptions& o) {
 
 nlohmann::ordered_json frame_json(const proto::HubFrame& f) {
   const proto::HubReading& r = f.reading;
-  return {{"az_deg", proto::hub_raw_to_deg(r.az_raw, r.az_bits)},
-          {"el_deg", proto::hub_raw_to_deg(r.el_raw, r.el_bits)},
-          {"az_bits", r.az_bits},
-          {"el_bits", r.el_bits},
-          {"az_raw", r.az_raw},
-          {"el_raw", r.el_raw},
-          {"version", f.version == proto::HubFrameVersion::Crc8 ? "crc8" : "seed"}};
+  // An axis the hub has no position for (CRC-8 frames, issue 14) has no angle and says why.
+  const auto angle = [](uint16_t raw, uint8_t bits, proto::HubAxisError error) {
+    return error == proto::HubAxisError::None
+               ? nlohmann::ordered_json(proto::hub_raw_to_deg(raw, bits))
+               : nlohmann::ordered_json(nullptr);
+  };
+  nlohmann::ordered_json j{
+      {"az_deg", angle(r.az_raw, r.az_bits, r.az_error)},
+      {"el_deg", angle(r.el_raw, r.el_bits, r.el_error)},
+      {"az_bits", r.az_bits},
+      {"el_bits", r.el_bits},
+      {"az_raw", r.az_raw},
+      {"el_raw", r.el_raw},
+      {"version", f.version == proto::HubFrameVersion::Crc8 ? "crc8" : "seed"}};
+  if (r.az_error != proto::HubAxisError::None)
+    j["az_error"] = proto::hub_axis_error_name(r.az_error);
+  if (r.el_error != proto::HubAxisError::None)
+    j["el_error"] = proto::hub_axis_error_name(r.el_error);
+  return j;
 }
 
 nlohmann::ordered_json counters_json(const proto::HubCounters& c) {

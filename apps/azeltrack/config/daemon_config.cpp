@@ -128,7 +128,8 @@ sequencer::SequencerConfig read_sequencer(const ConfigSection& s) {
 linux_os::HubSerialConfig read_hub(const ConfigSection& s) {
   linux_os::HubSerialConfig h;
   h.device = s.text("device").value_or("");
-  const auto baud = s.integer("baud").value_or(9600);
+  // 38400: what azeltrack's own hub firmware sends with no baud jumper (docs/encoder-hub.md).
+  const auto baud = s.integer("baud").value_or(38400);
   if (baud < 600 || baud > 115200) s.fail("baud", "must be 600 to 115200");
   h.baud = static_cast<unsigned>(baud);
   const std::string accept = s.text("accept").value_or("crc8");

@@ -424,6 +424,45 @@ TEST(HubDecoderRejects, EveryEncBitsValue) {
   EXPECT_EQ(d.counters().bad_nibble, 192U);
 }
 
+// Issue 14: our CRC-8 frames say why an axis has no position (nibble 1, the code as its raw);
+// the other axis still travels. The seed version cannot carry it: the encoder refuses.
+TEST(HubAxisErrors, TravelInCrcFramesWithTheOtherAxisIntact) {
+  for (uint8_t code = 1; code <= kHubAxisErrorLast; ++code) {
+    HubReading r{12, 0, 1234, 0};
+    r.el_error = static_cast<HubAxisError>(code);
+    const Bytes frame = encode(r, HubFrameVersion::Crc8);
+    ASSERT_EQ(frame.size(), kHubCrc8FrameBytes) << int(code);
+    HubDecoder d(HubAccept::Crc8Only, HubSync::InSync);
+    const Fed fed = feed(d, frame);
+    ASSERT_EQ(fed.frames.size(), 1U) << int(code);
+    EXPECT_EQ(fed.frames[0].reading, r);
+    EXPECT_TRUE(hub_reading_has_error(fed.frames[0].reading));
+    EXPECT_STRNE(hub_axis_error_name(r.el_error), "unknown error");
+    EXPECT_TRUE(encode(r, HubFrameVersion::Seed).empty()) << "a seed frame cannot say it";
+  }
+  HubReading both{0, 0, 0, 0, HubAxisError::NoEncoder, HubAxisError::Parity};
+  EXPECT_EQ(status_of(encode(both, HubFrameVersion::Crc8)), HubFrameStatus::Ok);
+}
+
+TEST(HubAxisErrors, MalformedErrorAxesAreRejected) {
+  // Nibble 1 in a seed frame stays a bad nibble, as the seed's format has it.
+  EXPECT_EQ(status_of(frame_of({0x1C, 0x00, 0x01, 0x00, 0x02})), HubFrameStatus::BadNibble);
+  // In a CRC frame: code 0 means no error, so nibble 1 with it names no resolution; a code
+  // past the last is out of range.
+  const auto crc_frame = [](Bytes payload) {
+    payload.push_back(hub_crc8(payload.data(), payload.size()));
+    return frame_of(payload);
+  };
+  EXPECT_EQ(status_of(crc_frame({0x1C, 0x00, 0x01, 0x00, 0x00})), HubFrameStatus::BadNibble);
+  EXPECT_EQ(status_of(crc_frame({0x1C, 0x00, 0x01, 0x00, kHubAxisErrorLast + 1})),
+            HubFrameStatus::OutOfRange);
+  EXPECT_EQ(status_of(crc_frame({0x1C, 0x00, 0x01, 0x00, 0x02})), HubFrameStatus::Ok);
+  // An error axis with a resolution or a count is not a reading the encoder makes.
+  HubReading mixed{12, 12, 0, 5};
+  mixed.az_error = HubAxisError::Parity;
+  EXPECT_TRUE(encode(mixed, HubFrameVersion::Crc8).empty());
+}
+
 TEST(HubDecoderRejects, RawsAtOrAbove2PowBits) {
   HubDecoder d(HubAccept::Any, HubSync::InSync);
   for (unsigned bits = 9; bits <= 15; ++bits) {

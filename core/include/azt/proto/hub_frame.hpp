@@ -11,7 +11,8 @@
 //   CRC-8 version (6 bytes): the same five bytes, then CRC-8/AUTOSAR over them
 //
 // EncBITS = AZ nibble << 4 | EL nibble; a nibble holds the resolution in bits, 9..15 as is and 16
-// as 0 (16 does not fit in a nibble; 1..8 are invalid). Raw values are big-endian, right-aligned,
+// as 0 (16 does not fit in a nibble; 2..8 are invalid, and 1 is an axis error in CRC-8 frames,
+// see HubAxisError). Raw values are big-endian, right-aligned,
 // and must be < 2^bits. Angle = raw * 360 / 2^bits degrees: the seed's "65535" for 16 bits is a
 // slip (it would put raw 65535 at 360°, the same direction as raw 0).
 //
@@ -29,17 +30,38 @@
 namespace azt {
 namespace proto {
 
-/// One reading of both encoders as the hub reports it.
+/// Why the hub has no position for an axis at this instant (issue 14). Only the CRC-8 frame
+/// version (ours) carries it: the axis's nibble is kHubErrorNibble (1, which the seed's format
+/// never uses) and its raw field holds this code. The seed version cannot say it; a hub sending
+/// seed frames skips the frame instead.
+enum class HubAxisError : uint8_t {
+  None = 0,
+  NoEncoder = 1,       ///< the data line was not idle-high, or did not drop after the word
+  Parity = 2,          ///< the encoder's even parity failed (AS5045-class)
+  NotReady = 3,        ///< OCF low: the encoder's offset compensation has not finished
+  CordicOverflow = 4,  ///< COF high: the angle is invalid (magnet out of its tolerances)
+  Linearity = 5,       ///< LIN high: the angle may be wrong (magnet out of its tolerances)
+  MagnetRange = 6,     ///< MagINC and MagDEC both high: the field is out of range
+  Disagree = 7,        ///< two readings of one instant differ by more than allowed
+  BadJumpers = 8,      ///< the axis's jumpers select no encoder type the firmware knows
+};
+constexpr uint8_t kHubAxisErrorLast = 8;
+constexpr uint8_t kHubErrorNibble = 1;
+
+/// One reading of both encoders as the hub reports it. An axis with an error has bits 0 and
+/// raw 0: there is no position for it in this frame.
 struct HubReading {
   uint8_t az_bits;  ///< azimuth encoder resolution, 9..16 bits
   uint8_t el_bits;  ///< elevation encoder resolution, 9..16 bits
   uint16_t az_raw;  ///< azimuth count, < 2^az_bits
   uint16_t el_raw;  ///< elevation count, < 2^el_bits
+  HubAxisError az_error = HubAxisError::None;
+  HubAxisError el_error = HubAxisError::None;
 };
 
 inline bool operator==(const HubReading& a, const HubReading& b) {
   return a.az_bits == b.az_bits && a.el_bits == b.el_bits && a.az_raw == b.az_raw &&
-         a.el_raw == b.el_raw;
+         a.el_raw == b.el_raw && a.az_error == b.az_error && a.el_error == b.el_error;
 }
 inline bool operator!=(const HubReading& a, const HubReading& b) { return !(a == b); }
 
@@ -98,9 +120,45 @@ constexpr uint32_t hub_raw_limit(uint8_t bits) {
   return bits <= kHubMaxBits ? uint32_t{1} << bits : uint32_t{0};
 }
 
+/// One axis of a reading: a position (bits 9..16, raw < 2^bits), or an error with nothing else.
+constexpr bool hub_axis_valid(uint8_t bits, uint16_t raw, HubAxisError error) {
+  return error == HubAxisError::None
+             ? hub_bits_valid(bits) && raw < hub_raw_limit(bits)
+             : bits == 0 && raw == 0 && static_cast<uint8_t>(error) <= kHubAxisErrorLast;
+}
+
 constexpr bool hub_reading_valid(const HubReading& r) {
-  return hub_bits_valid(r.az_bits) && hub_bits_valid(r.el_bits) &&
-         r.az_raw < hub_raw_limit(r.az_bits) && r.el_raw < hub_raw_limit(r.el_bits);
+  return hub_axis_valid(r.az_bits, r.az_raw, r.az_error) &&
+         hub_axis_valid(r.el_bits, r.el_raw, r.el_error);
+}
+
+constexpr bool hub_reading_has_error(const HubReading& r) {
+  return r.az_error != HubAxisError::None || r.el_error != HubAxisError::None;
+}
+
+/// The error in words, for logs and faults ("parity").
+inline const char* hub_axis_error_name(HubAxisError error) {
+  switch (error) {
+    case HubAxisError::None:
+      return "none";
+    case HubAxisError::NoEncoder:
+      return "no encoder answers";
+    case HubAxisError::Parity:
+      return "parity error";
+    case HubAxisError::NotReady:
+      return "encoder not ready (OCF low)";
+    case HubAxisError::CordicOverflow:
+      return "CORDIC overflow (COF): magnet out of tolerance";
+    case HubAxisError::Linearity:
+      return "linearity alarm (LIN): magnet out of tolerance";
+    case HubAxisError::MagnetRange:
+      return "magnetic field out of range (MagINC and MagDEC)";
+    case HubAxisError::Disagree:
+      return "two readings disagree";
+    case HubAxisError::BadJumpers:
+      return "the jumpers select no known encoder";
+  }
+  return "unknown error";
 }
 
 /// Resolution in bits -> nibble (16 -> 0). Precondition: hub_bits_valid(bits).
@@ -211,10 +269,20 @@ inline bool hub_cobs_decode(const uint8_t* chunk, size_t size, uint8_t* out, siz
 inline size_t encode_hub_frame(const HubReading& r, HubFrameVersion version, uint8_t* out,
                                size_t capacity) {
   if (out == nullptr || !hub_reading_valid(r)) return 0;
-  uint8_t payload[kHubCrc8PayloadBytes] = {
-      hub_enc_bits(r.az_bits, r.el_bits),     static_cast<uint8_t>(r.el_raw >> 8U),
-      static_cast<uint8_t>(r.el_raw & 0xFFU), static_cast<uint8_t>(r.az_raw >> 8U),
-      static_cast<uint8_t>(r.az_raw & 0xFFU), 0};
+  // An axis error is said only in CRC-8 frames: nibble 1, the code as the raw value.
+  if (version == HubFrameVersion::Seed && hub_reading_has_error(r)) return 0;
+  const bool az_bad = r.az_error != HubAxisError::None;
+  const bool el_bad = r.el_error != HubAxisError::None;
+  const uint8_t az_nibble = az_bad ? kHubErrorNibble : hub_bits_to_nibble(r.az_bits);
+  const uint8_t el_nibble = el_bad ? kHubErrorNibble : hub_bits_to_nibble(r.el_bits);
+  const uint16_t az_raw = az_bad ? static_cast<uint8_t>(r.az_error) : r.az_raw;
+  const uint16_t el_raw = el_bad ? static_cast<uint8_t>(r.el_error) : r.el_raw;
+  uint8_t payload[kHubCrc8PayloadBytes] = {static_cast<uint8_t>(az_nibble << 4U | el_nibble),
+                                           static_cast<uint8_t>(el_raw >> 8U),
+                                           static_cast<uint8_t>(el_raw & 0xFFU),
+                                           static_cast<uint8_t>(az_raw >> 8U),
+                                           static_cast<uint8_t>(az_raw & 0xFFU),
+                                           0};
   size_t payload_bytes = kHubSeedPayloadBytes;
   if (version == HubFrameVersion::Crc8) {
     payload[kHubSeedPayloadBytes] = hub_crc8(payload, kHubSeedPayloadBytes);
@@ -247,11 +315,24 @@ inline HubFrameStatus hub_check_payload(const uint8_t* payload, HubFrameVersion 
       hub_crc8(payload, kHubSeedPayloadBytes) != payload[kHubSeedPayloadBytes]) {
     return HubFrameStatus::BadCrc;
   }
-  const uint8_t az_bits = hub_nibble_to_bits(static_cast<uint8_t>(payload[0] >> 4U));
-  const uint8_t el_bits = hub_nibble_to_bits(static_cast<uint8_t>(payload[0] & 0x0FU));
-  if (az_bits == 0 || el_bits == 0) return HubFrameStatus::BadNibble;
-  const HubReading r{az_bits, el_bits, hub_be16(payload[3], payload[4]),
-                     hub_be16(payload[1], payload[2])};
+  const uint8_t az_nibble = static_cast<uint8_t>(payload[0] >> 4U);
+  const uint8_t el_nibble = static_cast<uint8_t>(payload[0] & 0x0FU);
+  HubReading r{hub_nibble_to_bits(az_nibble), hub_nibble_to_bits(el_nibble),
+               hub_be16(payload[3], payload[4]), hub_be16(payload[1], payload[2])};
+  // Ours: in a CRC-8 frame, nibble 1 says the axis has an error, coded in its raw field.
+  const bool errors_allowed = version == HubFrameVersion::Crc8;
+  if (errors_allowed && az_nibble == kHubErrorNibble) {
+    r.az_error = static_cast<HubAxisError>(r.az_raw > kHubAxisErrorLast ? 0xFFU : r.az_raw);
+    r.az_raw = 0;
+  }
+  if (errors_allowed && el_nibble == kHubErrorNibble) {
+    r.el_error = static_cast<HubAxisError>(r.el_raw > kHubAxisErrorLast ? 0xFFU : r.el_raw);
+    r.el_raw = 0;
+  }
+  if ((r.az_bits == 0 && r.az_error == HubAxisError::None) ||
+      (r.el_bits == 0 && r.el_error == HubAxisError::None)) {
+    return HubFrameStatus::BadNibble;
+  }
   if (!hub_reading_valid(r)) return HubFrameStatus::OutOfRange;
   reading = r;
   return HubFrameStatus::Ok;

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# hub-sim | azeltrack hub decode (issue 14 §2): the real firmware on a simulated ATmega328P, its
+# bytes through a pipe into the daemon's decoder, as `hub-sim … --seconds 1 | azeltrack hub
+# decode` is documented to print the positions given; then through a pseudo-terminal, as a hub
+# on a serial port is read.
+# Usage: hub_sim_test.sh path/to/azeltrack path/to/hub-sim path/to/encoder-hub.elf
+set -uo pipefail
+bin=${1:?usage: hub_sim_test.sh AZELTRACK HUB_SIM ELF}
+sim=${2:?}
+elf=${3:?}
+py=/usr/bin/python3
+tmp=$(mktemp -d)
+pids=()
+trap 'kill "${pids[@]}" 2>/dev/null; rm -rf "$tmp"' EXIT
+# shellcheck source=lib.sh
+source "$(dirname "$0")/lib.sh"
+
+# check DESCRIPTION PYTHON_EXPR FILE: `j` is the decoder's JSON lines, `f` the frames among them.
+check() {
+  if "$py" -c "import json,sys; j=[json.loads(l) for l in open(sys.argv[1])]; f=[x for x in j if 'version' in x]; sys.exit(0 if ($2) else 1)" "$3"; then
+    ok
+  else
+    bad "$1: $2 is false for $(head -c 400 "$3")"
+  fi
+}
+
+# AS5045-class on both axes (no jumpers): 1024 and 512 of 4096 are 90° and 45°.
+"$sim" --elf "$elf" --az-raw 1024 --el-raw 512 --seconds 1 | "$bin" hub decode >"$tmp/a.json"
+check "one second of frames" "len(f) >= 48" "$tmp/a.json"
+check "90° and 45°, every frame" "all(x['az_deg'] == 90.0 and x['el_deg'] == 45.0 for x in f)" "$tmp/a.json"
+check "nothing rejected" "j[-1]['counters']['rejected'] == 0" "$tmp/a.json"
+
+# Generic SSI, 16-bit Gray and 9-bit binary, at their largest counts.
+"$sim" --elf "$elf" --az-code gray --az-bits 16 --az-raw 65535 --el-code binary --el-bits 9 \
+  --el-raw 511 --seconds 0.2 | "$bin" hub decode >"$tmp/b.json"
+check "16-bit Gray and 9-bit binary" "f and all(x['az_raw'] == 65535 and x['az_bits'] == 16 and x['el_raw'] == 511 and x['el_bits'] == 9 for x in f)" "$tmp/b.json"
+
+# A disconnected encoder: no angle for that axis, the reason instead, the other axis intact.
+"$sim" --elf "$elf" --az-raw 1024 --el-raw 512 --fault open --fault-axis el --seconds 0.2 |
+  "$bin" hub decode >"$tmp/c.json"
+check "open encoder reported" "f and all(x['el_deg'] is None and x['el_error'] == 'no encoder answers' and x['az_deg'] == 90.0 for x in f)" "$tmp/c.json"
+
+# Bad arguments are one-line usage errors.
+"$sim" --elf "$tmp/nothing.elf" --az-raw 1 --el-raw 1 --seconds 0.1 >/dev/null 2>"$tmp/err"
+[ $? -eq 2 ] && grep -q "nothing.elf" "$tmp/err" && ok || bad "a missing ELF: $(cat "$tmp/err")"
+"$sim" --elf "$elf" --az-code gray --az-bits 9 --az-raw 512 --el-raw 1 >/dev/null 2>"$tmp/err"
+[ $? -eq 2 ] && ok || bad "a count past 2^bits: $(cat "$tmp/err")"
+
+# Through a pseudo-terminal, in real time, read as a serial port is.
+"$sim" --elf "$elf" --az-raw 2048 --el-raw 1024 --seconds 8 --pty "$tmp/hub" &
+pids+=($!)
+for _ in $(seq 50); do [ -e "$tmp/hub" ] && break; sleep 0.1; done
+timeout 4 "$bin" hub decode --await-delimiter <"$tmp/hub" >"$tmp/d.json" 2>/dev/null
+check "frames from the pty" "len(f) >= 5 and all(x['az_deg'] == 180.0 and x['el_deg'] == 90.0 for x in f)" "$tmp/d.json"
+
+finish
