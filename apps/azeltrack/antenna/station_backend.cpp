@@ -48,8 +48,9 @@ class StationBackend final : public AntennaBackend {
   StationBackend& operator=(StationBackend&&) = delete;
 
   void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) override {
-    if (latched_sensor()) {
-      stop_now(now_s);  // e.g. never drive on angles read at the wrong resolution
+    if (const auto held = latched_sensor()) {
+      // Never drive on angles read at the wrong resolution: stopped, and saying why.
+      stop_with(now_s, "held by the sensor fault (" + *held + ")");
       return;
     }
     read_sensors(now_s);
@@ -71,8 +72,11 @@ class StationBackend final : public AntennaBackend {
     return station_position(station_, now_s);
   }
 
-  void stop_now(double now_s) override {
-    station_.emergency_stop(now_s);
+  void stop_now(double now_s) override { stop_with(now_s, "stopped by the daemon"); }
+
+  /// Both drives off now, the station latched with `reason` until the faults are cleared.
+  void stop_with(double now_s, std::string_view reason) {
+    station_.emergency_stop(now_s, reason);
     const control::Duties d = station_.duties();
     const std::array<std::optional<double>, 2> setpoint{d.az_setpoint_deg, d.el_setpoint_deg};
     for (std::size_t i = 0; i < 2; ++i) {
@@ -110,9 +114,12 @@ class StationBackend final : public AntennaBackend {
   [[nodiscard]] std::string describe() const override { return describe_; }
 
  private:
-  [[nodiscard]] bool latched_sensor() const {
-    return std::any_of(ports_.sensors.begin(), ports_.sensors.end(),
-                       [](const auto& s) { return s->latched_fault().has_value(); });
+  /// The first latched sensor fault, if any.
+  [[nodiscard]] std::optional<std::string> latched_sensor() const {
+    for (const auto& sensor : ports_.sensors) {
+      if (auto fault = sensor->latched_fault()) return fault;
+    }
+    return std::nullopt;
   }
 
   void read_sensors(double now_s) {

@@ -259,9 +259,9 @@ std::uint64_t StationController::starts(const Axis& axis) {
   return axis.drive.kind == DriveKind::Relay ? axis.relay.starts() : axis.controller.starts();
 }
 
-void StationController::emergency_stop(double now_s) {
+void StationController::emergency_stop(double now_s, std::string_view reason) {
   for (Axis* axis : {&az_, &el_}) {
-    axis->supervisor.emergency_stop(now_s);
+    axis->supervisor.emergency_stop(now_s, reason);
     axis->halt(now_s);
   }
 }

@@ -128,8 +128,8 @@ void AxisSupervisor::rebase(double delta_deg) {
   driven_start_deg_ += delta_deg;
 }
 
-void AxisSupervisor::emergency_stop(double /*now_s*/) {
-  latch(FaultKind::EStop, "emergency stop input active");
+void AxisSupervisor::emergency_stop(double /*now_s*/, std::string_view reason) {
+  latch(FaultKind::EStop, std::string(reason));
 }
 
 void AxisSupervisor::clear() {

@@ -24,8 +24,18 @@ class HubReadings {
     const std::array<std::pair<std::uint16_t, std::uint8_t>, 2> raw{
         std::pair{f.reading.az_raw, f.reading.az_bits},
         std::pair{f.reading.el_raw, f.reading.el_bits}};
+    const std::array<proto::HubAxisError, 2> error{f.reading.az_error, f.reading.el_error};
     for (std::size_t i = 0; i < 2; ++i) {
-      if (!used_.at(i) || !bits_agree(i, raw.at(i).second)) continue;
+      if (!used_.at(i)) continue;
+      if (error.at(i) != proto::HubAxisError::None) {
+        // The hub says it has no position for this axis: a fault naming it until a good frame.
+        fresh_.at(i).reset();
+        axis_error_.at(i) = std::string(kAxisNames.at(i)) +
+                            " encoder (EncoderHub): " + proto::hub_axis_error_name(error.at(i));
+        continue;
+      }
+      if (!bits_agree(i, raw.at(i).second)) continue;
+      axis_error_.at(i).reset();
       fresh_.at(i) =
           ports::AxisSample{proto::hub_raw_to_deg(raw.at(i).first, raw.at(i).second), at};
     }
@@ -36,6 +46,7 @@ class HubReadings {
     last_tick_s_ = now_s;
     last_tick_wall_ = std::chrono::steady_clock::now();
     if (link_ && !link_->connected()) return fail("hub: " + event_);
+    if (axis_error_.at(axis)) return fail(*axis_error_.at(axis));
     return std::exchange(fresh_.at(axis), std::nullopt);
   }
 
@@ -72,6 +83,7 @@ class HubReadings {
   std::unique_ptr<HubSerialLink> link_;
   std::array<std::optional<ports::AxisSample>, 2> fresh_;
   std::array<std::optional<std::string>, 2> bits_fault_;
+  std::array<std::optional<std::string>, 2> axis_error_;  ///< the hub's own reason, until good
   std::string event_;
   double last_tick_s_ = 0.0;
   std::chrono::steady_clock::time_point last_tick_wall_ = std::chrono::steady_clock::now();

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <filesystem>
@@ -106,6 +107,50 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
 
 // Issue 13 §2: the hub's frames carry its jumpers' bits. Frames whose bits are not [mount.az]'s
 // are never read as angles: a fault names both values and the bridge is never driven.
+// Issue 14: the hub firmware says when it has no position for an axis (a parity error here).
+// The daemon shows the reason as that axis's fault and drives nothing until good frames return.
+TEST_F(PwmBackendTest, AnAxisErrorFromTheHubIsAFaultNamingItAndNothingIsDriven) {
+  boost::asio::io_context io;
+  auto backend = make_pwm_backend(io, config());
+  const auto start = Clock::now();
+  const auto seconds = [&start] {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  control::Demand go;
+  go.position = control::AzEl{200.0, 10.0};
+  ::write(station_.master(), "\0", 1);
+  proto::HubReading bad{12, 0, static_cast<std::uint16_t>(2048), 0};
+  bad.el_error = proto::HubAxisError::Parity;
+  while (seconds() < 0.5) {
+    station_.send_reading(bad);
+    io.run_for(std::chrono::milliseconds(25));
+    io.restart();
+    backend->tick(seconds(), go, control::AzEl{});
+    EXPECT_EQ(duty(0), 0U) << "driven while the elevation encoder has no position";
+  }
+  const auto faults = backend->faults();
+  ASSERT_FALSE(faults.empty());
+  std::string all;
+  for (const auto& f : faults) all += f + " | ";
+  EXPECT_NE(std::find(faults.begin(), faults.end(), "el encoder (EncoderHub): parity error"),
+            faults.end())
+      << all;
+  EXPECT_FALSE(backend->position(seconds()).has_value());
+  // Good frames again: the fault clears by itself (nothing was latched) and the antenna moves.
+  bool driven = false;
+  while (seconds() < 1.5 && !driven) {
+    send_frame(180.0, 10.0);
+    io.run_for(std::chrono::milliseconds(25));
+    io.restart();
+    backend->tick(seconds(), go, control::AzEl{});
+    driven = duty(0) > 0;
+  }
+  EXPECT_TRUE(driven);
+  std::string after;
+  for (const auto& f : backend->faults()) after += f + " | ";
+  EXPECT_TRUE(backend->faults().empty()) << after;
+}
+
 TEST_F(PwmBackendTest, AHubFrameWhoseBitsAreNotTheMountsIsAFaultNamingBoth) {
   boost::asio::io_context io;
   auto backend = make_pwm_backend(io, config(14));

@@ -59,10 +59,14 @@ class FakePwmStation {
   }
   /// One CRC frame with 12-bit readings of these angles.
   void send_frame(double az_deg, double el_deg) const {
+    send_reading(proto::HubReading{12, 12, static_cast<std::uint16_t>(az_deg / 360.0 * 4096.0),
+                                   static_cast<std::uint16_t>(el_deg / 360.0 * 4096.0)});
+  }
+  /// Any reading, an axis error among them, as a CRC-8 frame.
+  void send_reading(const proto::HubReading& r) const {
     std::array<std::uint8_t, 32> out{};
-    const proto::HubReading r{12, 12, static_cast<std::uint16_t>(az_deg / 360.0 * 4096.0),
-                              static_cast<std::uint16_t>(el_deg / 360.0 * 4096.0)};
     const auto n = proto::encode_hub_frame(r, proto::HubFrameVersion::Crc8, out.data(), out.size());
+    ASSERT_GT(n, 0U);
     ASSERT_EQ(::write(master_, out.data(), n), static_cast<ssize_t>(n));
   }
   /// A channel's attribute as text ("0", "1", a duty in ns).

@@ -121,7 +121,7 @@ class StationController {
   [[nodiscard]] const StationControlConfig& config() const { return config_; }
 
   /// Stops both motors now (E-stop or shutdown) and latches an E-stop fault.
-  void emergency_stop(double now_s);
+  void emergency_stop(double now_s, std::string_view reason = "emergency stop input active");
   /// Clears latched faults (the operator's explicit reset).
   void clear_faults();
 

@@ -57,8 +57,9 @@ class AxisSupervisor {
   /// remembered of past readings so the change is not taken for a jump or for motion.
   void rebase(double delta_deg);
 
-  /// The E-stop input went active: latches.
-  void emergency_stop(double now_s);
+  /// The E-stop input went active (or the station stops for another reason, given in words):
+  /// latches.
+  void emergency_stop(double now_s, std::string_view reason = "emergency stop input active");
 
   /// Clears a latched fault (an operator's decision); the motion history restarts. A cause that
   /// persists (E-stop input still active, shaft still stuck) latches again on its next detection.
