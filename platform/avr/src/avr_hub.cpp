@@ -168,6 +168,9 @@ Result<std::unique_ptr<AvrHub>> AvrHub::load(const AvrHubSetup& setup) {
   avr_init(impl->avr);
   avr_load_firmware(impl->avr, &impl->firmware);
   impl->avr->log = 0;
+  // A sleeping AVR is paced to the wall clock by simavr; ours never sleeps, and our time is its
+  // own cycles, so no wait may cost wall time.
+  impl->avr->sleep = [](avr_t* /*avr*/, avr_cycle_count_t /*how_long*/) {};
   // The board's supply: 5 V, and AVcc (the ADC's reference for the BAUD jumpers) with it.
   impl->avr->vcc = 5000;
   impl->avr->avcc = 5000;
@@ -176,7 +179,9 @@ Result<std::unique_ptr<AvrHub>> AvrHub::load(const AvrHubSetup& setup) {
   // The USART's bytes come to us, not to simavr's console.
   std::uint32_t flags = 0;
   avr_ioctl(raw->avr, AVR_IOCTL_UART_GET_FLAGS('0'), &flags);
-  flags &= ~static_cast<std::uint32_t>(AVR_UART_FLAG_STDIO);
+  // Nor does simavr sleep 1 µs of wall time at each poll of the status register (the firmware
+  // polls UDRE and TXC): that made a simulated second cost 8 s.
+  flags &= ~static_cast<std::uint32_t>(AVR_UART_FLAG_STDIO | AVR_UART_FLAG_POLL_SLEEP);
   avr_ioctl(raw->avr, AVR_IOCTL_UART_SET_FLAGS('0'), &flags);
   avr_irq_register_notify(avr_io_getirq(raw->avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUTPUT),
                           Impl::uart_hook, raw);
