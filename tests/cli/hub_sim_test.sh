@@ -53,4 +53,38 @@ for _ in $(seq 50); do [ -e "$tmp/hub" ] && break; sleep 0.1; done
 timeout 4 "$bin" hub decode --await-delimiter <"$tmp/hub" >"$tmp/d.json" 2>/dev/null
 check "frames from the pty" "len(f) >= 5 and all(x['az_deg'] == 180.0 and x['el_deg'] == 90.0 for x in f)" "$tmp/d.json"
 
+# The firmware in the loop of the daemon: [sim] hub = "firmware" reads the simulated antenna
+# through the ELF beside the program (build/firmware/), and rotctld reports its angles.
+port=$("$py" -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1",0)); print(s.getsockname()[1])')
+cat >"$tmp/fw.toml" <<TOML
+schema_version = 2
+[station]
+grid = "FN06HE"
+[target]
+name = "stop"
+[rotctld]
+port = $port
+[pstrotator]
+port = 0
+[web]
+port = 0
+[sim]
+hub = "firmware"
+[sim.az]
+start_deg = 100.0
+[sim.el]
+start_deg = 20.0
+TOML
+"$bin" serve --config "$tmp/fw.toml" --run-for 6 >"$tmp/fw.log" 2>&1 &
+pids+=($!)
+got=""
+for _ in $(seq 40); do
+  got=$(rotctl -m 2 -r "127.0.0.1:$port" p 2>/dev/null | tr '\n' ' ')
+  [ -n "$got" ] && break
+  sleep 0.1
+done
+grep -q "read by the EncoderHub firmware" "$tmp/fw.log" && ok || bad "serve did not say it reads the firmware: $(cat "$tmp/fw.log")"
+"$py" -c "import sys; a, e = map(float, sys.argv[1].split()[:2]); sys.exit(0 if abs(a - 100) < 0.1 and abs(e - 20) < 0.1 else 1)" "$got" &&
+  ok || bad "rotctld through the firmware: '$got'"
+
 finish

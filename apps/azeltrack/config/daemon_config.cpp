@@ -350,6 +350,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.mount = sim.mount;
   c.station = sim.setup.station;
   c.sim = sim.setup.plant;
+  c.sim_hub = sim.hub;
   read_start_target(file, c);
   c.sequencer =
       read_sequencer(file.section("sequencer", {"outputs", "delay_ms", "delays_ms", "debounce_ms",

@@ -17,6 +17,7 @@
 #include "config/config_choice.hpp"
 #include "config/hardware_config.hpp"
 #include "config/mount_config.hpp"
+#include "config/sim_config.hpp"
 #include "config/sky_config.hpp"
 
 namespace azt::app {
@@ -101,6 +102,7 @@ struct DaemonConfig {
   MountConfig mount;                  ///< [mount.az] / [mount.el]
   control::StationSetup station;      ///< what the controller knows, for every backend
   sim::PlantSetup sim;                ///< [sim.*]: the simulated plants (the `sim` backend only)
+  SimHubConfig sim_hub;               ///< [sim] hub: the plain model or the hub firmware
   std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
   BackendKind backend = BackendKind::Sim;  ///< [antenna] backend
   linux_os::HamlibConfig hamlib;

@@ -69,7 +69,8 @@ sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& moun
                                  const control::StationSetup& station) {
   sim::PlantSetup plant;
   const ConfigSection sim_section =
-      file.section("sim", {"az", "el", "frame_version", "frame_loss", "byte_corruption", "seed"});
+      file.section("sim", {"az", "el", "frame_version", "frame_loss", "byte_corruption", "seed",
+                           "hub", "hub_firmware"});
   const std::initializer_list<std::string_view> plant_keys = {
       "time_constant_s", "backlash_deg", "stiction_duty", "start_deg",   "min_deg",
       "max_deg",         "fault",        "fault_at_s",    "fault_counts"};
@@ -88,12 +89,24 @@ sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& moun
   return plant;
 }
 
+SimHubConfig sim_hub_from(const ConfigFile& file) {
+  const ConfigSection s = file.section("sim", {"az", "el", "frame_version", "frame_loss",
+                                               "byte_corruption", "seed", "hub", "hub_firmware"});
+  SimHubConfig hub;
+  const std::string kind = s.text("hub").value_or("model");
+  if (kind != "model" && kind != "firmware") s.fail("hub", "must be \"model\" or \"firmware\"");
+  hub.firmware = kind == "firmware";
+  hub.elf = s.text("hub_firmware").value_or("");
+  return hub;
+}
+
 SimConfig sim_config_from(const ConfigFile& file) {
   SimConfig config;
   config.sky = sky_config_from(file);
   config.mount = mount_config_from(file);
   config.setup.station = station_setup_from(file, config.mount);
   config.setup.plant = plant_setup_from(file, config.mount, config.setup.station);
+  config.hub = sim_hub_from(file);
   return config;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 #include "azt/sim/station_sim.hpp"
 #include "config/mount_config.hpp"
 #include "config/sky_config.hpp"
@@ -12,11 +14,23 @@ class ConfigFile;
 /// the station as its controller knows it (station_setup_config.hpp) and the simulated plants
 /// ([sim.az], [sim.el], [sim]). The controller's settings come from the mount, never from the
 /// plants.
+/// [sim] hub: what reads the simulated encoders. `model` encodes the plants' counts directly;
+/// `firmware` runs the EncoderHub firmware's ELF on a simulated ATmega328P and reads its frames
+/// through the daemon's decoder (docs/encoder-hub.md).
+struct SimHubConfig {
+  bool firmware = false;
+  std::string elf;  ///< [sim] hub_firmware; empty: firmware/encoder-hub.elf beside the program
+};
+
 struct SimConfig {
   SkyConfig sky;
   MountConfig mount;
   sim::StationSimSetup setup;
+  SimHubConfig hub;
 };
+
+/// [sim] hub and hub_firmware. Throws UsageError naming the key.
+SimHubConfig sim_hub_from(const ConfigFile& file);
 
 /// The simulated plants of [sim.az], [sim.el] and [sim]: the mount's rate and encoders with their
 /// own imperfections, start angles, end stops (the travel's by default) and faults. Throws
