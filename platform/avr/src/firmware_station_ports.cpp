@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -59,8 +60,9 @@ class FirmwareRig {
     const double dt = last_s_ ? std::clamp(now_s - *last_s_, 0.0, 1.0) : 0.0;
     last_s_ = now_s;
     const double before_us = frame_at_us_;
-    for (double done = 0.0; done < dt; done += kStepS) {
-      const double step = std::min(kStepS, dt - done);
+    const auto steps = static_cast<int>(std::ceil(dt / kStepS));
+    for (int i = 0; i < steps; ++i) {
+      const double step = std::min(kStepS, dt - i * kStepS);
       antenna_.step(duty_[0], duty_[1], step, 1);
       faults_.inject_due(now_s - *first_s_, antenna_);
       hub_->set_counts(antenna_.az().encoder_raw(), antenna_.el().encoder_raw());

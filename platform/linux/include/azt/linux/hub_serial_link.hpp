@@ -16,7 +16,7 @@
 namespace azt::linux_os {
 
 struct HubSerialConfig {
-  std::string device;  ///< e.g. /dev/ttyUSB0, or a stable /dev/serial/by-id/… link
+  std::string device;     ///< e.g. /dev/ttyUSB0, or a stable /dev/serial/by-id/… link
   unsigned baud = 38400;  ///< azeltrack's hub firmware without a baud jumper
   proto::HubAccept accept = proto::HubAccept::Crc8Only;
   double retry_s = 0.5;
