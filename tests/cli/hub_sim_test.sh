@@ -77,10 +77,11 @@ start_deg = 20.0
 TOML
 "$bin" serve --config "$tmp/fw.toml" --run-for 6 >"$tmp/fw.log" 2>&1 &
 pids+=($!)
+# Until the daemon answers with a position (it has none before the first frames): at most 5 s.
 got=""
-for _ in $(seq 40); do
+for _ in $(seq 50); do
   got=$(rotctl -m 2 -r "127.0.0.1:$port" p 2>/dev/null | tr '\n' ' ')
-  [ -n "$got" ] && break
+  [[ "$got" =~ ^-?[0-9.]+\ -?[0-9.]+ ]] && break
   sleep 0.1
 done
 grep -q "read by the EncoderHub firmware" "$tmp/fw.log" && ok || bad "serve did not say it reads the firmware: $(cat "$tmp/fw.log")"
