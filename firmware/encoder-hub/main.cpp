@@ -1,8 +1,11 @@
 // The EncoderHub firmware (issue 14): reads two absolute encoders and sends both counts to the
 // controller over RS-485, 50 times a second, in the CRC-8 frame version of
 // azt/proto/hub_frame.hpp (the daemon's own decoder header). ATmega328P at 16 MHz, no Arduino
-// core: registers, Timer1 for the frame period, the watchdog for a hung loop.
+// core: registers, Timer1 for the frame period, the watchdog for a hung loop. Between frames,
+// and while a frame is on the wire, the CPU sleeps (idle mode: the timer and USART run on).
+#include <avr/interrupt.h>
 #include <avr/io.h>
+#include <avr/sleep.h>
 #include <avr/wdt.h>
 #include <util/delay.h>
 
@@ -62,19 +65,38 @@ SsiCount read_twice(const azt::hub::board::SsiPins& pins, const AxisJumpers& j) 
   return azt::hub::agreed_count(first, second, j.bits, kAgreeCounts);
 }
 
-void wait_for_frame_time() {
-  while ((TIFR1 & (1U << OCF1A)) == 0) {
+volatile bool g_frame_due = false;
+
+/// Sleeps until an interrupt has made `done()` true. Interrupts are off between the test and
+/// the sleep instruction (sei takes effect after the next one), so no wake-up is missed.
+template <typename Done>
+void sleep_until(Done done) {
+  cli();
+  while (!done()) {
+    sleep_enable();
+    sei();
+    sleep_cpu();
+    sleep_disable();
+    cli();
   }
-  TIFR1 = static_cast<uint8_t>(1U << OCF1A);
+  sei();
+}
+
+void wait_for_frame_time() {
+  sleep_until([] { return g_frame_due; });
+  g_frame_due = false;
 }
 
 void start_frame_timer() {
   TCCR1A = 0;
   TCCR1B = static_cast<uint8_t>((1U << WGM12) | (1U << CS11) | (1U << CS10));  // CTC, /64
   OCR1A = kFramePeriodTicks - 1U;
+  TIMSK1 = static_cast<uint8_t>(1U << OCIE1A);
 }
 
 }  // namespace
+
+ISR(TIMER1_COMPA_vect) { g_frame_due = true; }
 
 int main() {
   // A watchdog reset leaves the watchdog running at its shortest period: stop it first.
@@ -86,6 +108,9 @@ int main() {
   azt::hub::init_rs485(jumpers.baud);
   DDRB = static_cast<uint8_t>(DDRB | (1U << azt::hub::board::kLedBit));
   start_frame_timer();
+  // set_sleep_mode() trips -Wconversion in avr-libc's macro: the same, written out.
+  SMCR = static_cast<uint8_t>(SMCR & ~((1U << SM0) | (1U << SM1) | (1U << SM2)));  // idle
+  sei();
   // 120 ms nominal (the watchdog oscillator may run slow at low voltage): a loop that stops
   // sending is reset well inside 250 ms.
   wdt_enable(WDTO_120MS);
@@ -98,7 +123,9 @@ int main() {
                                                            read_twice(kElPins, jumpers.el));
     const size_t n =
         azt::proto::encode_hub_frame(r, azt::proto::HubFrameVersion::Crc8, frame, sizeof frame);
-    if (n != 0) azt::hub::send_rs485(frame, n);
+    // At 9600 baud a frame takes 8 ms on the wire: the last one has long gone, but wait anyway.
+    sleep_until([] { return !azt::hub::rs485_sending(); });
+    if (n != 0) azt::hub::start_rs485(frame, n);
     // The LED blinks while any axis reports an error, and is off otherwise.
     if (azt::proto::hub_reading_has_error(r)) {
       if (++in_error >= kLedToggleFrames) {

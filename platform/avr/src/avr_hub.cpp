@@ -1,6 +1,7 @@
 #include "azt/avr/avr_hub.hpp"
 
 #include <simavr/avr_adc.h>
+#include <simavr/avr_extint.h>
 #include <simavr/avr_ioport.h>
 #include <simavr/avr_uart.h>
 #include <simavr/sim_avr.h>
@@ -59,10 +60,11 @@ struct AvrHub::Impl {
   AvrHub* owner = nullptr;
   std::uint32_t resets = 0;
   std::optional<std::pair<avr_flashaddr_t, std::array<std::uint8_t, 2>>> patched;
-  // busy time: from the first clock edge after the driver was released to its next release
-  std::optional<double> busy_since_us;
-  double busy_us = 0.0;
-  double busy_window_start_us = -1.0;
+  // the CPU's load: cycles spent asleep since its first sleep (the setup before it is not the
+  // steady state)
+  avr_cycle_count_t asleep_cycles = 0;
+  avr_cycle_count_t load_since_cycle = 0;
+  bool load_started = false;
 
   unsigned az_fitted = 0;  ///< the axes' five jumpers, bit set = fitted (jumpers.hpp)
   unsigned el_fitted = 0;
@@ -101,6 +103,15 @@ struct AvrHub::Impl {
     avr_cycle_timer_register_usec(self->avr, 5, &Impl::redrive_jumpers, self);
   }
 
+  /// simavr polls INT0 / INT1 at every cycle while their pins (DE and the azimuth clock) are
+  /// low, as a level-triggered interrupt would need, even with the interrupts disabled: a
+  /// sleeping hub then costs as much as a busy one. The firmware enables neither, so the poll
+  /// is switched off; each reset switches it on again.
+  void stop_level_polling() {
+    avr_extint_set_strict_lvl_trig(avr, 0, 0);
+    avr_extint_set_strict_lvl_trig(avr, 1, 0);
+  }
+
   [[nodiscard]] double now_us() const { return static_cast<double>(avr->cycle) / kCpuHz * 1e6; }
 
   avr_irq_t* pin_irq(Pin p) const {
@@ -123,7 +134,6 @@ struct AvrHub::Impl {
     const double t = now_us();
     if (clock) {
       encoders.at(axis).on_clock(high, t);
-      if (!busy_since_us) busy_since_us = t;
     } else {
       encoders.at(axis).on_chip_select(high, t);
     }
@@ -132,20 +142,24 @@ struct AvrHub::Impl {
                                   &Impl::recheck, this);
   }
 
-  void on_driver(bool high) {
-    if (high || !busy_since_us) return;
-    if (busy_window_start_us < 0) busy_window_start_us = *busy_since_us;
-    busy_us += now_us() - *busy_since_us;
-    busy_since_us.reset();
-  }
-
   template <std::size_t Axis, bool Clock>
   static void edge_hook(avr_irq_t* /*irq*/, std::uint32_t value, void* param) {
     static_cast<Impl*>(param)->on_edge(Axis, Clock, value != 0);
   }
 
+  /// simavr's sleep hook: it skips the cycles itself (and would wait as long in wall time).
+  static void on_sleep(avr_t* avr, avr_cycle_count_t how_long) {
+    auto* self = static_cast<Impl*>(avr->custom.data);
+    if (!self->load_started) {
+      self->load_started = true;
+      self->load_since_cycle = avr->cycle;
+    }
+    self->asleep_cycles += 1 + how_long;
+  }
+
   static void driver_hook(avr_irq_t* /*irq*/, std::uint32_t value, void* param) {
-    static_cast<Impl*>(param)->on_driver(value != 0);
+    auto* self = static_cast<Impl*>(param);
+    if (self->owner->on_driver) self->owner->on_driver(value != 0, self->now_us());
   }
 
   static void uart_hook(avr_irq_t* /*irq*/, std::uint32_t value, void* param) {
@@ -168,9 +182,11 @@ Result<std::unique_ptr<AvrHub>> AvrHub::load(const AvrHubSetup& setup) {
   avr_init(impl->avr);
   avr_load_firmware(impl->avr, &impl->firmware);
   impl->avr->log = 0;
-  // A sleeping AVR is paced to the wall clock by simavr; ours never sleeps, and our time is its
-  // own cycles, so no wait may cost wall time.
-  impl->avr->sleep = [](avr_t* /*avr*/, avr_cycle_count_t /*how_long*/) {};
+  impl->stop_level_polling();
+  // A sleeping AVR is paced to the wall clock by simavr; our time is its own cycles, so a sleep
+  // costs no wall time, and is counted for the load.
+  impl->avr->custom.data = impl.get();
+  impl->avr->sleep = &Impl::on_sleep;
   // The board's supply: 5 V, and AVcc (the ADC's reference for the BAUD jumpers) with it.
   impl->avr->vcc = 5000;
   impl->avr->avcc = 5000;
@@ -242,6 +258,7 @@ void AvrHub::run_for(double seconds) {
     if (avr->pc == 0 && before != 0) {
       ++impl_->resets;  // the watchdog (or a jump to the reset vector) restarted the firmware
       // A reset clears simavr's pin states; the jumpers and encoders are still wired.
+      impl_->stop_level_polling();
       impl_->drive_jumpers();
       for (std::size_t axis = 0; axis < 2; ++axis) {
         Impl::force(impl_->data_irq.at(axis),
@@ -267,9 +284,12 @@ void AvrHub::hang() {
 
 std::uint32_t AvrHub::resets() const { return impl_->resets; }
 
-double AvrHub::busy_fraction() const {
-  const double span = impl_->now_us() - impl_->busy_window_start_us;
-  return impl_->busy_window_start_us < 0 || span <= 0 ? 0.0 : impl_->busy_us / span;
+double AvrHub::cpu_load() const {
+  const Impl& i = *impl_;
+  const avr_cycle_count_t span = i.avr->cycle - i.load_since_cycle;
+  return !i.load_started || span == 0
+             ? 0.0
+             : 1.0 - static_cast<double>(i.asleep_cycles) / static_cast<double>(span);
 }
 
 }  // namespace azt::avr

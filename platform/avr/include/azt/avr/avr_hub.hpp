@@ -42,6 +42,8 @@ class AvrHub {
 
   /// Every byte the USART sends, with the simulated time it was sent (µs since power-up).
   std::function<void(std::uint8_t byte, double at_us)> on_byte;
+  /// Every change of the RS-485 driver enable (DE, high = sending), with its simulated time.
+  std::function<void(bool high, double at_us)> on_driver;
 
   /// Runs the firmware until `seconds` more of simulated time have passed.
   void run_for(double seconds);
@@ -52,9 +54,9 @@ class AvrHub {
   void hang();
   /// Watchdog resets so far.
   [[nodiscard]] std::uint32_t resets() const;
-  /// The fraction of time from the first encoder clock of a frame to the release of the RS-485
-  /// driver after it: the share of each frame period the firmware is busy.
-  [[nodiscard]] double busy_fraction() const;
+  /// The CPU's load: the share of cycles it was awake (not in its sleep instruction), counted
+  /// from the first time the firmware slept.
+  [[nodiscard]] double cpu_load() const;
 
  private:
   struct Impl;
