@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "antenna/sim_hub.hpp"
 #include "azt/sim/pass_sim.hpp"
 #include "azt/sim/sky_track.hpp"
 #include "azt/sim/station_sim.hpp"
@@ -39,7 +40,8 @@ nlohmann::json axis_json(const sim::AxisMetrics& m) {
           {"travel_deg", m.travel_deg}};
 }
 
-nlohmann::json result_json(const sim::SimResult& r, const std::string& scenario, double cpu_s) {
+nlohmann::json result_json(const sim::SimResult& r, const std::string& scenario, double cpu_s,
+                           const std::string& hub_kind) {
   auto opt = [](const std::optional<double>& v) {
     return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
   };
@@ -56,7 +58,8 @@ nlohmann::json result_json(const sim::SimResult& r, const std::string& scenario,
           {"cpu_s", cpu_s},
           {"az", axis_json(r.az)},
           {"el", axis_json(r.el)},
-          {"hub", {{"frames_ok", r.hub.frames_ok()}, {"rejected", r.hub.rejected()}}}};
+          {"hub",
+           {{"kind", hub_kind}, {"frames_ok", r.hub.frames_ok()}, {"rejected", r.hub.rejected()}}}};
 }
 
 sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double hours) {
@@ -76,7 +79,8 @@ sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double
   track.start = start;
   track.dut1_s = c.sky.settings.dut1_s;
   track.leap_table = &leap_table();
-  return sim::simulate_tracking(c.setup, sim::make_sky_track(track), hours * 3600.0);
+  return sim::simulate_tracking(c.setup, sim::make_sky_track(track), hours * 3600.0,
+                                make_sim_hub(c.setup.plant, c.hub));
 }
 
 /// The next pass of --sat after --from, flown by the real controller on the simulated plant
@@ -152,12 +156,14 @@ int run_simulate(const SimulateOptions& o) {
         !control::plan_elevation(to.el_deg, config.setup.station.el_range)) {
       throw UsageError("--to-az must be 0..360 and --to-el inside the elevation range");
     }
-    result = sim::simulate_slew(config.setup, to, 3600.0);
+    result =
+        sim::simulate_slew(config.setup, to, 3600.0, make_sim_hub(config.setup.plant, config.hub));
   } else {
     result = run_tracking(config, o, hours);
   }
   const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  const nlohmann::json j = result_json(result, o.scenario, cpu_s);
+  const nlohmann::json j =
+      result_json(result, o.scenario, cpu_s, config.hub.firmware ? "firmware" : "model");
   std::cout << (o.json ? j.dump() : j.dump(2)) << '\n';
   return 0;
 }

@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "azt/proto/hub_axis.hpp"
+
 namespace azt::linux_os {
 namespace {
 
@@ -21,23 +23,18 @@ class HubReadings {
   void on_frame(const proto::HubFrame& f) {
     // Stamped with when the frame arrived, not with the next tick: staleness counts from it.
     const double at = clock_s();
-    const std::array<std::pair<std::uint16_t, std::uint8_t>, 2> raw{
-        std::pair{f.reading.az_raw, f.reading.az_bits},
-        std::pair{f.reading.el_raw, f.reading.el_bits}};
-    const std::array<proto::HubAxisError, 2> error{f.reading.az_error, f.reading.el_error};
     for (std::size_t i = 0; i < 2; ++i) {
       if (!used_.at(i)) continue;
-      if (error.at(i) != proto::HubAxisError::None) {
+      const proto::HubAxis axis = proto::hub_axis(f.reading, i);
+      if (axis.error != proto::HubAxisError::None) {
         // The hub says it has no position for this axis: a fault naming it until a good frame.
         fresh_.at(i).reset();
-        axis_error_.at(i) = std::string(kAxisNames.at(i)) +
-                            " encoder (EncoderHub): " + proto::hub_axis_error_name(error.at(i));
+        axis_error_.at(i) = proto::hub_axis_fault(i, axis.error);
         continue;
       }
-      if (!bits_agree(i, raw.at(i).second)) continue;
+      if (!bits_agree(i, axis.bits)) continue;
       axis_error_.at(i).reset();
-      fresh_.at(i) =
-          ports::AxisSample{proto::hub_raw_to_deg(raw.at(i).first, raw.at(i).second), at};
+      fresh_.at(i) = ports::AxisSample{proto::hub_raw_to_deg(axis.raw, axis.bits), at};
     }
   }
   void on_event(const std::string& event) { event_ = event; }

@@ -1,12 +1,16 @@
-// The real controllers and supervisors driving simulated plants through a simulated EncoderHub
-// link, in virtual time: readings travel as encoded frames (with injected loss and corruption)
-// through the same decoder the daemon uses.
+// The daemon's own station (control::PortedStation: the controllers and supervisors over the
+// ports) driving simulated plants in virtual time: readings travel as encoded frames, from the
+// hub model (with injected loss and corruption) or the hub firmware on a simulated AVR, through
+// the same decoder the daemon uses.
 #include "azt/sim/station_sim.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <random>
+#include <utility>
+
+#include "azt/control/ported_station.hpp"
+#include "azt/sim/simulated_station.hpp"
 
 namespace azt::sim {
 namespace {
@@ -34,45 +38,37 @@ struct Accumulator {
   }
 };
 
-/// The station's own controller driving two plants through a simulated EncoderHub link.
+/// The daemon's station (PortedStation) over a simulated station's ports, and the plants' truth.
 class StationLoop {
  public:
-  explicit StationLoop(const StationSimSetup& setup)
-      : setup_(setup),
-        faults_(setup.plant.faults),
-        antenna_(setup.plant.az, setup.plant.el, setup.plant.frame_version, setup.plant.link,
-                 setup.plant.seed),
-        station_(station_control_config(setup),
-                 AzEl{setup.plant.az.start_deg, setup.plant.el.start_deg}) {
-    station_.set_corrections(setup.station.corrections);
-  }
+  StationLoop(const StationSimSetup& setup, std::unique_ptr<SimulatedHub> hub)
+      : StationLoop(setup, make_simulated_station(
+                               setup.plant, hub ? std::move(hub) : make_model_hub(setup.plant))) {}
 
   /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
   void tick(double t_s, const std::optional<AzEl>& demand, const AzEl& rate_deg_s) {
-    faults_.inject_due(t_s, antenna_);
-    if (const auto reading = antenna_.transmit_frame()) {
-      station_.on_encoder_reading(t_s, reading->az_deg, reading->el_deg);
-    }
     control::Demand d;
     d.position = demand;
-    const control::Duties duties = station_.tick(t_s, d, rate_deg_s);
-    for (const auto& axis : {station_.az(), station_.el()}) {
-      if (axis.fault != control::FaultKind::None) {
-        max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(axis.duty));
+    station_.tick(t_s, d, rate_deg_s);
+    const control::Duties duties = station().duties();
+    const std::array<double, 2> duty{duties.az, duties.el};
+    const std::array<control::AxisStatus, 2> axes{station().az(), station().el()};
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (axes.at(i).fault != control::FaultKind::None) {
+        max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(duty.at(i)));
       }
     }
-    antenna_.step(duties.az, duties.el, setup_.station.tick_s, setup_.plant.substeps);
   }
 
   [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
-  [[nodiscard]] const AxisPlant& az_plant() const { return antenna_.az(); }
-  [[nodiscard]] const AxisPlant& el_plant() const { return antenna_.el(); }
-  [[nodiscard]] const control::StationController& station() const { return station_; }
-  [[nodiscard]] const proto::HubDecoder& decoder() const { return antenna_.decoder(); }
+  [[nodiscard]] const AxisPlant& az_plant() const { return rig_->plants().az(); }
+  [[nodiscard]] const AxisPlant& el_plant() const { return rig_->plants().el(); }
+  [[nodiscard]] const control::StationController& station() const { return station_.station(); }
+  [[nodiscard]] proto::HubCounters hub_counters() const { return rig_->hub().counters(); }
 
   void collect_faults(std::vector<std::string>& out, double t_s) {
-    const std::pair<const char*, control::AxisStatus> axes[] = {{"az", station_.az()},
-                                                                {"el", station_.el()}};
+    const std::pair<const char*, control::AxisStatus> axes[] = {{"az", station().az()},
+                                                                {"el", station().el()}};
     for (std::size_t i = 0; i < 2; ++i) {
       const auto& [name, axis] = axes[i];
       if (axis.fault != control::FaultKind::None && !fault_reported_[i]) {
@@ -84,10 +80,14 @@ class StationLoop {
   }
 
  private:
-  const StationSimSetup& setup_;
-  FaultSchedule faults_;
-  SimAntenna antenna_;
-  control::StationController station_;
+  StationLoop(const StationSimSetup& setup, SimulatedStation sim)
+      : rig_(std::move(sim.rig)),
+        station_(station_control_config(setup),
+                 AzEl{setup.plant.az.start_deg, setup.plant.el.start_deg},
+                 setup.station.corrections, std::move(sim.ports)) {}
+
+  std::shared_ptr<const PlantRig> rig_;
+  control::PortedStation station_;
   std::array<bool, 2> fault_reported_{};
   double max_duty_after_fault_ = 0.0;
 };
@@ -104,18 +104,6 @@ AxisMetrics finish_axis(const Accumulator& acc, std::uint64_t starts, double hou
 
 }  // namespace
 
-FaultSchedule::FaultSchedule(std::vector<ScheduledFault> faults) : faults_(std::move(faults)) {
-  std::stable_sort(
-      faults_.begin(), faults_.end(),
-      [](const ScheduledFault& a, const ScheduledFault& b) { return a.at_s < b.at_s; });
-}
-
-void FaultSchedule::inject_due(double t_s, SimAntenna& antenna) {
-  for (; next_ < faults_.size() && faults_[next_].at_s <= t_s; ++next_) {
-    antenna.inject(faults_[next_].azimuth, faults_[next_].fault);
-  }
-}
-
 control::StationControlConfig station_control_config(const StationSimSetup& setup) {
   control::StationControlConfig c = setup.station.control_config();
   // The simulated station reads the plants' encoders (the same as the mount's when the setup
@@ -125,8 +113,9 @@ control::StationControlConfig station_control_config(const StationSimSetup& setu
   return c;
 }
 
-SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, double duration_s) {
-  StationLoop loop(setup);
+SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, double duration_s,
+                            std::unique_ptr<SimulatedHub> hub) {
+  StationLoop loop(setup, std::move(hub));
   SimResult result;
   Accumulator az_err, el_err;
   double tracked_s = 0.0, az_travel = 0.0, el_travel = 0.0;
@@ -178,15 +167,16 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
   result.rms_error_deg = pooled.rms();
   result.max_error_deg = pooled.max_abs;
   result.simulated_s = static_cast<double>(ticks) * setup.station.tick_s;
-  result.hub = loop.decoder().counters();
+  result.hub = loop.hub_counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
   result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),
                            loop.el_plant().shaft_deg()};
   return result;
 }
 
-SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_duration_s) {
-  StationLoop loop(setup);
+SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_duration_s,
+                        std::unique_ptr<SimulatedHub> hub) {
+  StationLoop loop(setup, std::move(hub));
   SimResult result;
   const double az_target =
       control::plan_azimuth(setup.plant.az.start_deg, to.az_deg, setup.station.az_range);
@@ -222,7 +212,7 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
   result.az.starts = loop.station().starts_az();
   result.el.starts = loop.station().starts_el();
   result.simulated_s = static_cast<double>(k) * setup.station.tick_s;
-  result.hub = loop.decoder().counters();
+  result.hub = loop.hub_counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
   result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),
                            loop.el_plant().shaft_deg()};

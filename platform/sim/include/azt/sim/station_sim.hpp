@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,29 +15,10 @@
 #include "azt/control/supervisor.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "azt/sim/axis_plant.hpp"
-#include "azt/sim/sim_antenna.hpp"
+#include "azt/sim/plant_setup.hpp"
+#include "azt/sim/simulated_hub.hpp"
 
 namespace azt::sim {
-
-/// A plant fault that starts at a given simulated time.
-struct ScheduledFault {
-  double at_s = 0.0;
-  bool azimuth = true;  ///< false: the elevation axis
-  AxisFault fault;
-};
-
-/// The simulated antenna itself: two plants behind a simulated EncoderHub link ([sim.az],
-/// [sim.el], [sim]). What the station's controller knows of the mount is not here but in
-/// control::StationSetup: a real station runs with that alone.
-struct PlantSetup {
-  AxisParams az;  ///< the simulated axes: the mount's rate and encoders, their own faults
-  AxisParams el;
-  int substeps = 5;  ///< plant integration steps per tick
-  proto::HubFrameVersion frame_version = proto::HubFrameVersion::Crc8;
-  LinkFaults link;
-  std::vector<ScheduledFault> faults;  ///< any order: injected in time order
-  std::uint64_t seed = 1;              ///< for the link faults
-};
 
 /// One simulated station: the station as its controller knows it (the mount's rates and encoder
 /// steps, the travel, the tick, the corrections: what a real station of this mount would run
@@ -44,19 +26,6 @@ struct PlantSetup {
 struct StationSimSetup {
   control::StationSetup station;
   PlantSetup plant;
-};
-
-/// Plant faults injected as their times come, earliest first, each once: the virtual-time
-/// simulations and the daemon's simulated antenna share it.
-class FaultSchedule {
- public:
-  explicit FaultSchedule(std::vector<ScheduledFault> faults);
-  /// Injects into `antenna` every fault due at `t_s` (seconds from the start) not yet injected.
-  void inject_due(double t_s, SimAntenna& antenna);
-
- private:
-  std::vector<ScheduledFault> faults_;  ///< sorted by at_s
-  std::size_t next_ = 0;
 };
 
 /// The simulated station controller's configuration: the station setup's, with the encoder steps
@@ -94,9 +63,13 @@ struct SimResult {
 
 /// Tracks `sky` for `duration_s`. Errors are the true shaft positions against the target, counted
 /// from acquisition on, and not while the target is below the elevation range (the axes hold).
-SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, double duration_s);
+/// The station is the daemon's (control::PortedStation) over the simulated station's ports, read
+/// through `hub` (nullptr: the plain model of setup.plant, simulated_station.hpp).
+SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, double duration_s,
+                            std::unique_ptr<SimulatedHub> hub = nullptr);
 
 /// Slews from the plants' start positions to `to` and measures time and overshoot.
-SimResult simulate_slew(const StationSimSetup& setup, control::AzEl to, double max_duration_s);
+SimResult simulate_slew(const StationSimSetup& setup, control::AzEl to, double max_duration_s,
+                        std::unique_ptr<SimulatedHub> hub = nullptr);
 
 }  // namespace azt::sim

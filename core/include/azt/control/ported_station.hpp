@@ -1,0 +1,60 @@
+#pragma once
+// The station controller over its ports (issue 13 §2, issue 14): each tick reads both axes'
+// sensors, hands the controller a reading when both have a new one, and applies its duties to
+// both drives. The daemon's one station backend and the virtual-time simulations both run it,
+// so a simulated hour exercises exactly the code a station runs; what differs is the ports (the
+// plants read by the hub model or by the hub firmware, the Linux devices, a Hamlib box).
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "azt/control/corrections.hpp"
+#include "azt/control/station_controller.hpp"
+#include "azt/ports/station_ports.hpp"
+
+namespace azt::control {
+
+class PortedStation {
+ public:
+  /// `start_mount` is where the axes are believed to be before the first reading.
+  PortedStation(const StationControlConfig& control, AzEl start_mount,
+                const PositionCorrections& corrections, ports::StationPorts ports);
+  ~PortedStation();
+  PortedStation(const PortedStation&) = delete;
+  PortedStation& operator=(const PortedStation&) = delete;
+  PortedStation(PortedStation&&) = delete;
+  PortedStation& operator=(PortedStation&&) = delete;
+
+  /// One control tick: read, decide, drive. A latched sensor fault stops both drives instead.
+  void tick(double now_s, const Demand& demand, const AzEl& rate);
+  void set_limits(double now_s, const LimitSwitches& limits);
+  /// Both drives off now, the station latched with `reason` until the faults are cleared.
+  void stop_with(double now_s, std::string_view reason);
+
+  /// One line per fault: latched axis faults, a drive's write error, each sensor's error (a
+  /// link two axes share is named once).
+  [[nodiscard]] std::vector<std::string> faults() const;
+  void clear_faults();
+  void set_corrections(const PositionCorrections& corrections) {
+    station_.set_corrections(corrections);
+  }
+
+  /// The controller: its axes, position and the duties it last gave the drives.
+  [[nodiscard]] const StationController& station() const { return station_; }
+
+ private:
+  [[nodiscard]] std::optional<std::string> latched_sensor() const;
+  void read_sensors(double now_s);
+  void apply(double now_s, const Duties& d);
+
+  ports::StationPorts ports_;
+  StationController station_;
+  std::array<ports::SensorReading, 2> fresh_;
+  std::array<std::optional<std::string>, 2> sensor_fault_;
+  std::string drive_fault_;
+};
+
+}  // namespace azt::control

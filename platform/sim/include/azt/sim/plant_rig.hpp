@@ -1,0 +1,47 @@
+#pragma once
+// What a simulated station's four ports share: the plants, the faults due to them, the hub
+// reading their encoders, and the duties the drives last set. The first sensor read at a new
+// time runs the plants and the hub for the time since the last one (capped at 1 s, after a
+// suspend), in the hub's steps, with the duties then applied (a late tick is simulated exactly
+// as long as it was late); then both axes report the hub's newest frame, each once.
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "azt/sim/fault_schedule.hpp"
+#include "azt/sim/plant_setup.hpp"
+#include "azt/sim/sim_antenna.hpp"
+#include "azt/sim/simulated_hub.hpp"
+
+namespace azt::sim {
+
+class PlantRig {
+ public:
+  PlantRig(const PlantSetup& plant, std::unique_ptr<SimulatedHub> hub);
+
+  void set_duty(std::size_t axis, double duty) { duty_.at(axis) = duty; }
+  /// The duty the drive last set on `axis`.
+  [[nodiscard]] double duty(std::size_t axis) const { return duty_.at(axis); }
+  /// The frame that is new to `axis` at `now_s`, if any.
+  std::optional<HubArrival> frame_for(std::size_t axis, double now_s);
+
+  /// The plants' truth (shaft angles, motor rates): what a simulation measures the station by.
+  [[nodiscard]] const SimAntenna& plants() const { return plants_; }
+  [[nodiscard]] const SimulatedHub& hub() const { return *hub_; }
+
+ private:
+  void advance(double now_s);
+
+  FaultSchedule faults_;
+  SimAntenna plants_;
+  std::unique_ptr<SimulatedHub> hub_;
+  std::array<double, 2> duty_{};
+  std::optional<double> first_s_;  ///< the configured faults are timed from the first read
+  std::optional<double> last_s_;
+  std::optional<HubArrival> frame_;
+  std::array<bool, 2> fresh_{};
+};
+
+}  // namespace azt::sim

@@ -1,0 +1,33 @@
+#pragma once
+// The simulated antenna itself ([sim.az], [sim.el], [sim]): two plants behind a simulated
+// EncoderHub link, and the faults to inject. What the station's controller knows of the mount is
+// not here but in control::StationSetup: a real station runs with that alone.
+
+#include <cstdint>
+#include <vector>
+
+#include "azt/proto/hub_frame.hpp"
+#include "azt/sim/axis_plant.hpp"
+#include "azt/sim/model_hub.hpp"
+
+namespace azt::sim {
+
+/// A plant fault that starts at a given simulated time.
+struct ScheduledFault {
+  double at_s = 0.0;
+  bool azimuth = true;  ///< false: the elevation axis
+  AxisFault fault;
+};
+
+struct PlantSetup {
+  AxisParams az;  ///< the simulated axes: the mount's rate and encoders, their own faults
+  AxisParams el;
+  /// The plain hub model's frames and link faults (the hub firmware sends CRC-8 frames over a
+  /// clean link).
+  proto::HubFrameVersion frame_version = proto::HubFrameVersion::Crc8;
+  LinkFaults link;
+  std::vector<ScheduledFault> faults;  ///< any order: injected in time order
+  std::uint64_t seed = 1;              ///< for the link faults
+};
+
+}  // namespace azt::sim

@@ -1,0 +1,39 @@
+#include "azt/sim/plant_rig.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace azt::sim {
+
+PlantRig::PlantRig(const PlantSetup& plant, std::unique_ptr<SimulatedHub> hub)
+    : faults_(plant.faults), plants_(plant.az, plant.el), hub_(std::move(hub)) {}
+
+std::optional<HubArrival> PlantRig::frame_for(std::size_t axis, double now_s) {
+  advance(now_s);
+  if (!std::exchange(fresh_.at(axis), false)) return std::nullopt;
+  return frame_;
+}
+
+void PlantRig::advance(double now_s) {
+  if (last_s_ && *last_s_ == now_s) return;
+  if (!first_s_) first_s_ = now_s;
+  const double dt = last_s_ ? std::clamp(now_s - *last_s_, 0.0, 1.0) : 0.0;
+  const double from_s = now_s - dt - *first_s_;
+  last_s_ = now_s;
+  const double step_s = hub_->step_s();
+  const auto steps = static_cast<int>(std::ceil(dt / step_s - 1e-9));
+  for (int i = 0; i < steps; ++i) {
+    const double step = std::min(step_s, dt - i * step_s);
+    plants_.step(duty_[0], duty_[1], step);
+    faults_.inject_due(from_s + std::min(dt, (i + 1) * step_s), plants_);
+    hub_->run(plants_, step);
+  }
+  faults_.inject_due(now_s - *first_s_, plants_);
+  if (auto f = hub_->take_frame(plants_, now_s)) {
+    frame_ = f;
+    fresh_ = {true, true};
+  }
+}
+
+}  // namespace azt::sim

@@ -1,0 +1,65 @@
+#include "azt/sim/simulated_station.hpp"
+
+#include <string>
+#include <utility>
+
+#include "azt/proto/hub_axis.hpp"
+#include "azt/sim/model_hub.hpp"
+
+namespace azt::sim {
+namespace {
+
+class SimDrive final : public ports::AxisDrive {
+ public:
+  SimDrive(std::shared_ptr<PlantRig> rig, std::size_t axis) : rig_(std::move(rig)), axis_(axis) {}
+  Result<bool> apply(double /*now_s*/, double duty, std::optional<double> /*setpoint*/) override {
+    rig_->set_duty(axis_, duty);
+    return true;
+  }
+  void off(double /*now_s*/) override { rig_->set_duty(axis_, 0.0); }
+  [[nodiscard]] std::string describe() const override { return rig_->hub().describe(); }
+
+ private:
+  std::shared_ptr<PlantRig> rig_;
+  std::size_t axis_;
+};
+
+class SimSensor final : public ports::AxisSensor {
+ public:
+  SimSensor(std::shared_ptr<PlantRig> rig, std::size_t axis) : rig_(std::move(rig)), axis_(axis) {}
+  Result<ports::SensorReading> read(double now_s) override {
+    const auto frame = rig_->frame_for(axis_, now_s);
+    if (!frame) return ports::SensorReading{};  // between frames, or a frame lost on the link
+    const proto::HubAxis axis = proto::hub_axis(frame->reading, axis_);
+    if (axis.error != proto::HubAxisError::None)
+      return fail(proto::hub_axis_fault(axis_, axis.error));
+    return ports::SensorReading{
+        ports::AxisSample{proto::hub_raw_to_deg(axis.raw, axis.bits), frame->at_s}};
+  }
+  [[nodiscard]] std::string describe() const override { return rig_->hub().describe(); }
+
+ private:
+  std::shared_ptr<PlantRig> rig_;
+  std::size_t axis_;
+};
+
+}  // namespace
+
+std::unique_ptr<SimulatedHub> make_model_hub(const PlantSetup& plant) {
+  return std::make_unique<ModelHub>(plant.az.encoder_bits, plant.el.encoder_bits,
+                                    plant.frame_version, plant.link, plant.seed);
+}
+
+SimulatedStation make_simulated_station(const PlantSetup& plant,
+                                        std::unique_ptr<SimulatedHub> hub) {
+  auto rig = std::make_shared<PlantRig>(plant, std::move(hub));
+  SimulatedStation station;
+  for (std::size_t i = 0; i < 2; ++i) {
+    station.ports.drives.at(i) = std::make_unique<SimDrive>(rig, i);
+    station.ports.sensors.at(i) = std::make_unique<SimSensor>(rig, i);
+  }
+  station.rig = rig;
+  return station;
+}
+
+}  // namespace azt::sim
