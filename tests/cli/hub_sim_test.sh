@@ -9,6 +9,7 @@ bin=${1:?usage: hub_sim_test.sh AZELTRACK HUB_SIM ELF}
 sim=${2:?}
 elf=${3:?}
 py=/usr/bin/python3
+root=$(cd "$(dirname "$0")/../.." && pwd)
 tmp=$(mktemp -d)
 pids=()
 trap 'kill "${pids[@]}" 2>/dev/null; rm -rf "$tmp"' EXIT
@@ -87,5 +88,26 @@ done
 grep -q "read by the EncoderHub firmware" "$tmp/fw.log" && ok || bad "serve did not say it reads the firmware: $(cat "$tmp/fw.log")"
 "$py" -c "import sys; a, e = map(float, sys.argv[1].split()[:2]); sys.exit(0 if abs(a - 100) < 0.1 and abs(e - 20) < 0.1 else 1)" "$got" &&
   ok || bad "rotctld through the firmware: '$got'"
+
+# azeltrack simulate with the firmware in the loop: the same slew and Moon as the plain model,
+# 50 frames a second from the AVR, the same accuracy within an encoder step (360/4096°).
+sed 's/^hub = "model"/hub = "firmware"/' "$root/examples/sim.toml" >"$tmp/simfw.toml"
+for kind in model firmware; do
+  cfg="$root/examples/sim.toml"
+  [ "$kind" = firmware ] && cfg="$tmp/simfw.toml"
+  "$bin" simulate --config "$cfg" --scenario slew --to-az 300 --to-el 30 --json >"$tmp/slew-$kind.json" ||
+    bad "simulate slew ($kind) failed"
+  "$bin" simulate --config "$cfg" --scenario moon --from 2025-03-14T02:00:00Z --hours 0.1 --json \
+    >"$tmp/moon-$kind.json" || bad "simulate moon ($kind) failed"
+done
+compare() {
+  "$py" - "$tmp/$1-model.json" "$tmp/$1-firmware.json" "$2" <<'PY' && ok || bad "simulate $1 with the firmware: $(cat "$tmp/$1-firmware.json")"
+import json, sys
+m, f = (json.load(open(p)) for p in sys.argv[1:3])
+sys.exit(0 if eval(sys.argv[3]) else 1)
+PY
+}
+compare slew "f['hub']['kind'] == 'firmware' and m['hub']['kind'] == 'model' and f['faults'] == [] and f['slew_time_s'] is not None and abs(f['slew_time_s'] - m['slew_time_s']) < 1.0"
+compare moon "f['faults'] == [] and f['hub']['rejected'] == 0 and f['hub']['frames_ok'] >= 0.1*3600*49.9 and f['max_error_deg'] <= m['max_error_deg'] + 360/4096"
 
 finish

@@ -7,7 +7,9 @@
 #include <simavr/sim_avr.h>
 #include <simavr/sim_elf.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
@@ -63,6 +65,7 @@ struct AvrHub::Impl {
   // the CPU's load: cycles spent asleep since its first sleep (the setup before it is not the
   // steady state)
   avr_cycle_count_t asleep_cycles = 0;
+  double until_cycle = 0.0;  ///< where run_for has been asked to run to, in cycles
   avr_cycle_count_t load_since_cycle = 0;
   bool load_started = false;
 
@@ -145,6 +148,12 @@ struct AvrHub::Impl {
   template <std::size_t Axis, bool Clock>
   static void edge_hook(avr_irq_t* /*irq*/, std::uint32_t value, void* param) {
     static_cast<Impl*>(param)->on_edge(Axis, Clock, value != 0);
+  }
+
+  /// A cycle timer that only ends a sleep (run_for's end).
+  static avr_cycle_count_t wake_at_end(avr_t* /*avr*/, avr_cycle_count_t /*when*/,
+                                       void* /*param*/) {
+    return 0;
   }
 
   /// simavr's sleep hook: it skips the cycles itself (and would wait as long in wall time).
@@ -251,7 +260,20 @@ double AvrHub::now_us() const { return impl_->now_us(); }
 
 void AvrHub::run_for(double seconds) {
   avr_t* avr = impl_->avr;
-  const auto end = avr->cycle + static_cast<avr_cycle_count_t>(seconds * kCpuHz);
+  // The end is kept exact across calls (a 5 ms step is 80000 cycles, a step of any length adds
+  // up), and a sleeping AVR wakes there: simavr skips a sleep to the next timer event, which
+  // would otherwise put the AVR's clock ahead of its caller's.
+  impl_->until_cycle =
+      std::max(impl_->until_cycle, static_cast<double>(avr->cycle)) + seconds * kCpuHz;
+  const auto end = static_cast<avr_cycle_count_t>(std::llround(impl_->until_cycle));
+  if (end <= avr->cycle) return;
+  avr_cycle_timer_register(avr, end - avr->cycle, &Impl::wake_at_end, nullptr);
+  run_until(end);
+  avr_cycle_timer_cancel(avr, &Impl::wake_at_end, nullptr);
+}
+
+void AvrHub::run_until(std::uint64_t end) {
+  avr_t* avr = impl_->avr;
   while (avr->cycle < end) {
     const avr_flashaddr_t before = avr->pc;
     const int state = avr_run(avr);

@@ -60,6 +60,7 @@ class AvrHub {
 
  private:
   struct Impl;
+  void run_until(std::uint64_t end_cycle);
   explicit AvrHub(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
