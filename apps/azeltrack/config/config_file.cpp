@@ -118,7 +118,8 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
                       "geometry",       "corrections", "park",       "mount",      "sim",
                       "target",         "antenna",     "hamlib",     "hub",        "pwm",
                       "rotctld",        "serial",      "pstrotator", "web",        "sequencer",
-                      "gpio",           "hardware",    "satellites", "spacecraft", "log"})) {
+                      "gpio",           "hardware",    "satellites", "spacecraft", "log",
+                      "gps"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }
