@@ -113,13 +113,32 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
     file.fail(e.what());
   }
   for (const auto& [key, value] : file.root_) {
-    if (!allowed_key(key.str(),
-                     {"schema_version", "station",     "sky",        "atmosphere", "control",
-                      "geometry",       "corrections", "park",       "mount",      "sim",
-                      "target",         "antenna",     "hamlib",     "hub",        "pwm",
-                      "rotctld",        "serial",      "pstrotator", "web",        "sequencer",
-                      "gpio",           "hardware",    "satellites", "spacecraft", "log",
-                      "gps"})) {
+    if (!allowed_key(key.str(), {"schema_version",
+                                 "station",
+                                 "sky",
+                                 "atmosphere",
+                                 "control",
+                                 "geometry",
+                                 "corrections",
+                                 "park",
+                                 "mount",
+                                 "sim",
+                                 "target",
+                                 "antenna",
+                                 "hamlib",
+                                 "hub",
+                                 "pwm",
+                                 "rotctld",
+                                 "serial",
+                                 "pstrotator",
+                                 "web",
+                                 "sequencer",
+                                 "gpio",
+                                 "hardware",
+                                 "satellites",
+                                 "spacecraft",
+                                 "log",
+                                 "gps"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }

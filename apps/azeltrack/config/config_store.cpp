@@ -8,6 +8,7 @@
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
 #include "config/config_text_edit.hpp"
+#include "config/toml_text.hpp"
 
 namespace azt::app {
 namespace {
@@ -24,12 +25,6 @@ Result<bool> parses_as_toml(std::string_view text) {
   }
   return true;
 }
-
-/// Double-quoted strings and floats as people write them (0.1, not 0.10000000000000001; 15
-/// significant digits read back to the same text).
-constexpr toml::format_flags kFormat = toml::format_flags::relaxed_float_precision |
-                                       toml::format_flags::allow_unicode_strings |
-                                       toml::format_flags::indentation;
 
 struct Loaded {
   std::string text;  ///< as read (from the backup when from_backup)
@@ -196,7 +191,7 @@ std::string ConfigStore::serialize(const toml::table& root) {
   out << "# azeltrack configuration, schema " << kSchemaVersion
       << ", saved by azeltrack (README \"Configuration\").\n"
          "# The previous version of this file is kept beside it as <name>.bak.\n\n"
-      << toml::toml_formatter(root, kFormat) << '\n';
+      << toml_text(root) << '\n';
   return out.str();
 }
 
@@ -277,9 +272,7 @@ std::optional<std::string> ConfigStore::get(std::string_view key) const {
     return std::nullopt;
   }
   if (n == nullptr) return std::nullopt;
-  std::ostringstream out;
-  n->visit([&out](const auto& v) { out << toml::toml_formatter(v, kFormat); });
-  return out.str();
+  return toml_text(*n);
 }
 
 }  // namespace azt::app

@@ -1,4 +1,5 @@
 #include "config/config_text_edit.hpp"
+#include "config/toml_text.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -6,10 +7,6 @@
 
 namespace azt::app {
 namespace {
-
-constexpr toml::format_flags kFormat = toml::format_flags::relaxed_float_precision |
-                                       toml::format_flags::allow_unicode_strings |
-                                       toml::format_flags::indentation;
 
 struct Edit {
   std::size_t begin = 0;  ///< byte offsets into the text
@@ -165,11 +162,7 @@ class Differ {
 
 }  // namespace
 
-std::string format_toml_value(const toml::node& value) {
-  std::ostringstream out;
-  value.visit([&out](const auto& v) { out << toml::toml_formatter(v, kFormat); });
-  return out.str();
-}
+std::string format_toml_value(const toml::node& value) { return toml_text(value); }
 
 std::optional<std::string> edit_toml_text(const std::string& text, const toml::table& before,
                                           const toml::table& after) {

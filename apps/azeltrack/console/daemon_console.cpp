@@ -212,6 +212,7 @@ json DaemonConsole::state() {
             {"lon_deg", obs.lon_deg},
             {"alt_m", obs.height_m}}},
           {"clock", {{"source", "system"}}},
+          {"gps", p_.gps ? p_.gps() : json{{"state", "off"}}},
           {"faults", p_.antenna.faults()},
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
           {"commands", p_.motions != nullptr ? p_.motions->to_json() : json::array()},

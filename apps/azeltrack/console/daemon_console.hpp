@@ -45,6 +45,8 @@ struct ConsoleParts {
   const RecentEvents* events = nullptr;   ///< refusals given to any source, for the state
   const RecentEvents* motions = nullptr;  ///< accepted motion commands and their sources
   std::function<void(const std::string&)> log = [](const std::string&) {};
+  /// The GPS receiver's state (issue 15; null when not given).
+  std::function<nlohmann::json()> gps;
 };
 
 class DaemonConsole final : public ConsoleModel {

@@ -23,6 +23,7 @@
 #include "daemon/daemon.hpp"
 #include "daemon/rate_limited_log.hpp"
 #include "daemon/tick_stats.hpp"
+#include "station/gps_receiver.hpp"
 #include "station/guarded_antenna.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
@@ -58,6 +59,9 @@ class StationDaemon {
   Offload off_loop();
   double now_s() const;
   void start_target();
+  /// [gps] use_position: saves a surveyed site as [station] lat/lon/alt (off the loop) and, once
+  /// saved, points from it; `done(false)` when the save failed (logged).
+  void adopt_site(const gnss::Site& site, std::function<void(bool)> done);
   void open_servers();
   void open_console();
   /// A refusal a client was given: in the journal (at most 10 lines a minute per client) and in
@@ -95,7 +99,8 @@ class StationDaemon {
   SatelliteTracker satellites_;
   RateLimitedLog log_;
   RecentEvents events_;
-  RecentEvents motions_;  ///< accepted motion commands, with their sources
+  RecentEvents motions_;              ///< accepted motion commands, with their sources
+  std::unique_ptr<GpsReceiver> gps_;  ///< [gps]: gpsd, the GPS state and the site survey
   StationCommands commands_;
   StationService service_;
   boost::asio::signal_set signals_;

@@ -89,7 +89,48 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       signals_(io_, SIGINT, SIGTERM, SIGHUP),
       timer_(io_),
       period_(std::chrono::duration_cast<SteadyClock::duration>(
-          std::chrono::duration<double>(config_.station.tick_s))) {}
+          std::chrono::duration<double>(config_.station.tick_s))) {
+  gps_ = std::make_unique<GpsReceiver>(
+      io_, GpsReceiverParts{config_.gps, [this] { return now_s(); },
+                            [this] { return modes_.mode() == control::Mode::Track; },
+                            [this](const gnss::Site& site, std::function<void(bool)> done) {
+                              adopt_site(site, std::move(done));
+                            },
+                            [](const std::string& line) { spdlog::info("{}", line); }});
+}
+
+void StationDaemon::adopt_site(const gnss::Site& site, std::function<void(bool)> done) {
+  ConfigStore::Change change = [site](toml::table& root) {
+    if (!root.contains("station")) root.insert("station", toml::table{});
+    toml::table* s = root["station"].as_table();
+    if (s == nullptr) throw UsageError("[station] is not a table");
+    s->insert_or_assign("lat_deg", site.lat_deg);
+    s->insert_or_assign("lon_deg", site.lon_deg);
+    s->insert_or_assign("alt_m", site.alt_m);
+    s->erase("grid");  // derived from the position
+  };
+  auto outcome = std::make_shared<Result<ConfigStore::Saved>>(
+      fail("the save was interrupted (see the daemon's log)"));
+  off_loop()([base = store_.save_base(), change = std::move(change),
+              outcome] { *outcome = ConfigStore::save_change(base, change); },
+             [this, site, outcome, done = std::move(done)] {
+               if (!*outcome) {
+                 spdlog::warn("gps: the surveyed position was not saved: {}",
+                              outcome->error().message);
+                 done(false);
+                 return;
+               }
+               store_.commit(std::move(*outcome).value());
+               config_.sky = store_.config().sky;
+               if (sky_.target()) {  // recomputed for the new place
+                 const auto again = find_sky_target(config_.sky, sky_.target()->name);
+                 sky_.follow(again ? *again : *sky_.target());
+               }
+               spdlog::info("gps: the station is at {:.6f} {:.6f} {:.1f} m (surveyed, saved)",
+                            site.lat_deg, site.lon_deg, site.alt_m);
+               done(true);
+             });
+}
 
 std::unique_ptr<AntennaBackend> StationDaemon::make_backend() {
   if (config_.backend == BackendKind::Hamlib) return make_hamlib_backend(config_);
@@ -238,7 +279,8 @@ void StationDaemon::open_console() {
                      return io;
                    },
                    off_loop(), &events_, &motions_,
-                   [](const std::string& line) { spdlog::warn("{}", line); }},
+                   [](const std::string& line) { spdlog::warn("{}", line); },
+                   [this] { return gps_->to_json(); }},
       [](const std::string& line) { spdlog::warn("{}", line); });
   spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
 }

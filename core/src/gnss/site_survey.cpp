@@ -48,7 +48,7 @@ void SiteSurvey::restart() {
 
 void SiteSurvey::on_fix(double now_s, const GpsFix& fix, int sats_used) {
   const bool good = finite_3d(fix) && sats_used >= settings_.min_sats;
-  if (!good || (last_s_ && now_s - *last_s_ > kMaxGapS)) restart();
+  if (!good || (last_s_ && now_s - *last_s_ > kMaxGapS) || moved_away(fix)) restart();
   if (!good) return;
   if (!first_s_) {
     first_s_ = now_s;
@@ -59,6 +59,13 @@ void SiteSurvey::on_fix(double now_s, const GpsFix& fix, int sats_used) {
   sum_dlon_deg_ += dlon_deg(fix.lon_deg, lon_ref_deg_);
   sum_alt_m_ += *fix.alt_m;
   ++n_;
+}
+
+bool SiteSurvey::moved_away(const GpsFix& fix) const {
+  if (n_ == 0) return false;
+  const auto n = static_cast<double>(n_);
+  const Site mean{sum_lat_deg_ / n, wrap_lon_deg(lon_ref_deg_ + sum_dlon_deg_ / n), 0.0};
+  return ground_distance_m(mean, Site{fix.lat_deg, fix.lon_deg, 0.0}) > settings_.jump_m;
 }
 
 std::optional<Site> SiteSurvey::surveyed() const {

@@ -86,7 +86,7 @@ TEST(SiteSurvey, FiveSecondsBetweenFixesKeepsTheRunSixRestartIt) {
 }
 
 TEST(SiteSurvey, LongitudesAverageAcrossTheAntimeridian) {
-  SiteSurvey survey({1.0, 4, 100.0});
+  SiteSurvey survey({1.0, 4, 1e6});  // the two fixes are 430 m apart: no jump here
   survey.on_fix(0.0, fix3d(-17.0, 179.999, 10.0), 6);
   survey.on_fix(1.0, fix3d(-17.0, -179.997, 10.0), 6);
   const auto site = survey.surveyed();
@@ -95,7 +95,7 @@ TEST(SiteSurvey, LongitudesAverageAcrossTheAntimeridian) {
 }
 
 TEST(SiteSurvey, AMeanOnTheAntimeridianIsPlus180) {
-  SiteSurvey survey({1.0, 4, 100.0});
+  SiteSurvey survey({1.0, 4, 1e7});
   survey.on_fix(0.0, fix3d(0.0, -170.0, 0.0), 6);
   survey.on_fix(1.0, fix3d(0.0, 170.0, 0.0), 6);
   const auto site = survey.surveyed();
@@ -124,6 +124,22 @@ TEST(SiteDecision, EveryBranch) {
   EXPECT_EQ(to_string(SiteDecision::Jump), "jump");
   EXPECT_EQ(to_string(SiteDecision::Keep), "keep");
   EXPECT_EQ(to_string(SiteDecision::Adopt), "adopt");
+}
+
+TEST(SiteSurvey, AFixFarFromTheMeanStartsANewSurveyInsteadOfCreeping) {
+  SiteSurvey survey({2.0, 4, 100.0});
+  for (int t = 0; t <= 3; ++t) survey.on_fix(t, fix3d(46.0, -79.0, 300.0), 8);
+  ASSERT_TRUE(survey.surveyed().has_value());
+  const double moved_lat = 46.0 + 500.0 / 111195.0;
+  survey.on_fix(4.0, fix3d(moved_lat, -79.0, 300.0), 8);
+  EXPECT_EQ(survey.fixes(), 1U);
+  EXPECT_FALSE(survey.surveyed().has_value());
+  for (int t = 5; t <= 6; ++t) survey.on_fix(t, fix3d(moved_lat, -79.0, 300.0), 8);
+  ASSERT_TRUE(survey.surveyed().has_value());
+  EXPECT_NEAR(survey.surveyed()->lat_deg, moved_lat, 1e-12);  // all of the new place
+  // A fix 50 m off (inside jump_m) is noise in the average, not a move.
+  survey.on_fix(7.0, fix3d(moved_lat + 50.0 / 111195.0, -79.0, 300.0), 8);
+  EXPECT_EQ(survey.fixes(), 4U);
 }
 
 }  // namespace

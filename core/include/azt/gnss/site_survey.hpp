@@ -1,9 +1,10 @@
 #pragma once
 // The station's position from its GPS (issue 15 §1): once a 3D fix with enough satellites has
 // held for a settable time, the average of the fixes seen is the surveyed site. A fix that drops
-// to 2D, loses satellites or falls silent for more than 5 s restarts the survey: the average is
-// only ever of one unbroken run of good fixes. decide_site() says what to do with a survey: a
-// site more than jump_m from the one in use is not adopted while the station tracks.
+// to 2D, loses satellites, falls silent for more than 5 s or lands more than jump_m from the
+// run's mean restarts the survey: the average is only ever of one unbroken run of good fixes.
+// decide_site() says what to do with a survey: a site more than jump_m from the one in use is not
+// adopted while the station tracks.
 
 #include <cstddef>
 #include <optional>
@@ -37,6 +38,9 @@ class SiteSurvey {
 
  private:
   void restart();
+  /// A fix farther than jump_m from the run's mean: the antenna (or the receiver) moved, and a
+  /// new survey starts there rather than letting the average creep towards it.
+  [[nodiscard]] bool moved_away(const GpsFix& fix) const;
 
   SiteSurveySettings settings_;
   std::optional<double> first_s_;

@@ -1,0 +1,55 @@
+#pragma once
+// The station's GPS receiver (issue 15 §1): gpsd through the Linux client, what it says kept by
+// the core's GpsMonitor (for the console's `gps` state) and SiteSurvey (the station's position
+// from a held fix). Everything runs on the daemon's loop; nothing here waits for gpsd. With
+// [gps] use_position, a finished survey (timed by the receiver's clock) is offered to `adopt`
+// (which saves and applies it) unless it is a jump of more than jump_m while the station tracks:
+// that is logged and shown instead.
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "azt/gnss/gps_monitor.hpp"
+#include "azt/gnss/site_survey.hpp"
+#include "azt/linux/asio.hpp"
+#include "azt/linux/gpsd_client.hpp"
+#include "config/gps_config.hpp"
+
+namespace azt::app {
+
+struct GpsReceiverParts {
+  GpsConfig config;
+  std::function<double()> monotonic_s;
+  std::function<bool()> tracking;  ///< the station follows a target: a jump is not adopted
+  /// Saves and applies a surveyed site as the station's position; calls `done(true)` once it is
+  /// in use (false: the save failed, and the survey is offered again later).
+  std::function<void(const gnss::Site&, std::function<void(bool)> done)> adopt;
+  std::function<void(const std::string&)> log;
+};
+
+class GpsReceiver {
+ public:
+  GpsReceiver(boost::asio::io_context& io, GpsReceiverParts parts);
+
+  /// The console's `gps`: state, lat_deg, lon_deg, alt_m, sats_used, sats_visible, hdop,
+  /// time_utc, position_in_use, satellites, and the last jump refused.
+  [[nodiscard]] nlohmann::json to_json() const;
+
+ private:
+  void on_fix(const gnss::GpsFix& fix);
+  void offer_survey();
+
+  GpsReceiverParts p_;
+  gnss::GpsMonitor monitor_;
+  gnss::SiteSurvey survey_;
+  std::unique_ptr<linux_os::GpsdClient> client_;  ///< none when [gps] is not enabled
+  std::optional<gnss::Site> in_use_;              ///< the site adopted from the GPS this run
+  std::optional<gnss::Site> refused_;             ///< the latest jump not adopted while tracking
+  bool adopting_ = false;
+};
+
+}  // namespace azt::app
