@@ -164,7 +164,7 @@ TEST(GpsdClient, ALineNoGpsdWouldSendDropsTheLinkWhichComesBack) {
   Seen seen;
   GpsdClient client(io, config_for(gpsd.port()), seen.events());
   ASSERT_TRUE(run_until(io, [&] { return gpsd.client != nullptr; }));
-  gpsd.send("{" + std::string(70 * 1024, 'x'));
+  gpsd.send("{" + std::string(std::size_t{70} * 1024, 'x'));
   ASSERT_TRUE(run_until(io, [&] { return !seen.lost.empty(); }));
   EXPECT_NE(seen.lost.front().find("longer than"), std::string::npos) << seen.lost.front();
   gpsd.hang_up();

@@ -17,8 +17,8 @@ bool is_word_char(char c) {
 
 /// The word's shortest round-trip text when it is a float literal, else the word unchanged.
 std::string shortest_float(const std::string& word) {
-  static const std::regex kFloat(R"([+-]?[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?)");
-  if (word.find_first_of(".eE") == std::string::npos || !std::regex_match(word, kFloat)) {
+  static const std::regex float_literal(R"([+-]?[0-9]+(\.[0-9]+)?([eE][+-]?[0-9]+)?)");
+  if (word.find_first_of(".eE") == std::string::npos || !std::regex_match(word, float_literal)) {
     return word;
   }
   double value = 0.0;

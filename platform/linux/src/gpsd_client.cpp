@@ -13,7 +13,7 @@ namespace {
 namespace asio = boost::asio;
 
 /// gpsd's longest reports (a SKY with every constellation's satellites) are a few KB.
-constexpr std::size_t kMaxLineBytes = 64 * 1024;
+constexpr std::size_t kMaxLineBytes = std::size_t{64} * 1024;
 constexpr const char* kWatch = "?WATCH={\"enable\":true,\"json\":true}\n";
 
 std::optional<double> finite(double v) {
