@@ -12,22 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "run_until.hpp"
+
 namespace azt::linux_os {
 namespace {
 
 namespace asio = boost::asio;
 using asio::ip::tcp;
-
-/// Runs the loop until `done` or 5 s pass; false on timeout.
-template <typename Done>
-bool run_until(asio::io_context& io, Done done) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-  while (!done() && std::chrono::steady_clock::now() < end) {
-    io.run_for(std::chrono::milliseconds(10));
-    io.restart();
-  }
-  return done();
-}
 
 /// A gpsd that accepts one client at a time, keeps what it asked and sends what it is told.
 struct FakeGpsd {

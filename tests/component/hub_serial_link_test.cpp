@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "run_until.hpp"
+
 namespace azt::linux_os {
 namespace {
 
@@ -48,17 +50,6 @@ std::vector<std::uint8_t> frame(std::uint16_t az, std::uint16_t el) {
   const auto n = proto::encode_hub_frame(proto::HubReading{12, 12, az, el},
                                          proto::HubFrameVersion::Crc8, out.data(), out.size());
   return {out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n)};
-}
-
-/// Runs the loop until `done` or 5 s pass; false on timeout.
-template <typename Done>
-bool run_until(boost::asio::io_context& io, Done done) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-  while (!done() && std::chrono::steady_clock::now() < end) {
-    io.run_for(std::chrono::milliseconds(10));
-    io.restart();
-  }
-  return done();
 }
 
 TEST(HubSerialLink, FramesInUnplugAndReplug) {

@@ -1,6 +1,7 @@
 #include "config/config_store.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include "azt/linux/atomic_file.hpp"
@@ -240,6 +241,23 @@ void ConfigStore::commit(Saved saved) {
   config_ = std::move(saved.config);
   text_ = std::move(saved.text);
   text_from_backup_ = false;
+}
+
+void ConfigStore::save_off_loop(const Offload& offload, Change change,
+                                std::function<void(Result<std::vector<std::string>>)> done) {
+  auto outcome =
+      std::make_shared<Result<Saved>>(fail("the save was interrupted (see the daemon's log)"));
+  offload([base = save_base(), change = std::move(change),
+           outcome] { *outcome = save_change(base, change); },
+          [this, outcome, done = std::move(done)] {
+            if (!*outcome) {
+              done(outcome->error());
+              return;
+            }
+            std::vector<std::string> notices = outcome->value().notices;
+            commit(std::move(*outcome).value());
+            done(std::move(notices));
+          });
 }
 
 Result<bool> ConfigStore::update(const Change& change) {

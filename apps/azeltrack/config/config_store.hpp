@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "azt/util/result.hpp"
+#include "common/off_loop.hpp"
 #include "config/daemon_config.hpp"
 
 namespace azt::app {
@@ -76,6 +77,11 @@ class ConfigStore {
   static Result<Saved> save_change(const SaveBase& base, const Change& change);
   /// Makes `saved` the store's configuration (after save_change succeeded).
   void commit(Saved saved);
+  /// save_change through `offload` (the lock wait, the writes and the fsyncs off the event
+  /// loop), then, back on the loop, commit() and `done` with the notices to log, or why the save
+  /// failed (the store unchanged). Saves asked for in order reach the disk in order.
+  void save_off_loop(const Offload& offload, Change change,
+                     std::function<void(Result<std::vector<std::string>>)> done);
 
   /// `key` is dotted ("control.window_deg", "station.grid"); `value` is a TOML value
   /// ("0.2", "\"FN31\"", "true"); `[[array]]` items are addressed as "park.2.az_deg".

@@ -164,4 +164,12 @@ std::optional<astro::Target> find_sky_target(const SkyConfig& station, const std
   return std::nullopt;
 }
 
+void set_station_position(toml::table& station, double lat_deg, double lon_deg,
+                          std::optional<double> alt_m) {
+  station.insert_or_assign("lat_deg", lat_deg);
+  station.insert_or_assign("lon_deg", lon_deg);
+  if (alt_m) station.insert_or_assign("alt_m", *alt_m);
+  station.erase("grid");  // derived from the position
+}
+
 }  // namespace azt::app

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,5 +31,10 @@ SkyConfig load_sky_config(const std::string& path);
 /// A target of the station by name, case-blind: "sun", "moon", a source's name or alias, with or
 /// without spaces ("casa", "Cassiopeia A").
 std::optional<astro::Target> find_sky_target(const SkyConfig& sky, const std::string& name);
+
+/// Makes the [station] table's position `lat_deg`, `lon_deg` (and `alt_m` when given); the grid
+/// is then derived from it, so a `grid` key is removed.
+void set_station_position(toml::table& station, double lat_deg, double lon_deg,
+                          std::optional<double> alt_m);
 
 }  // namespace azt::app

@@ -312,22 +312,19 @@ json DaemonConsole::sky(double hours) {
 
 void DaemonConsole::save(const std::string& field, ConfigStore::Change change,
                          std::function<json()> apply, ActDone done) {
-  // The lock wait, the writes and the fsyncs run on the worker; the store and the running
-  // station change only back on the loop, in the order the saves were asked for.
-  auto outcome = std::make_shared<Result<ConfigStore::Saved>>(
-      fail("the save was interrupted (see the daemon's log)"));
-  ConfigStore::SaveBase base = p_.store.save_base();
-  p_.offload([base = std::move(base), change = std::move(change),
-              outcome] { *outcome = ConfigStore::save_change(base, change); },
-             [this, field, apply = std::move(apply), done = std::move(done), outcome] {
-               if (!*outcome) {
-                 done(ActResult{json::object(), save_refusal(field, outcome->error().message)});
-                 return;
-               }
-               for (const auto& notice : outcome->value().notices) p_.log(notice);
-               p_.store.commit(std::move(*outcome).value());
-               done(ActResult{apply(), std::nullopt});
-             });
+  // The store and the running station change only back on the loop, in the order the saves
+  // were asked for.
+  p_.store.save_off_loop(
+      p_.offload, std::move(change),
+      [this, field, apply = std::move(apply),
+       done = std::move(done)](Result<std::vector<std::string>> notices) {
+        if (!notices) {
+          done(ActResult{json::object(), save_refusal(field, notices.error().message)});
+          return;
+        }
+        for (const auto& notice : notices.value()) p_.log(notice);
+        done(ActResult{apply(), std::nullopt});
+      });
 }
 
 ApiError DaemonConsole::save_refusal(const std::string& field, std::string message) const {
@@ -458,21 +455,14 @@ void DaemonConsole::act_station(const json& body, ActDone done) {
     const double lon = number(body, "lon_deg");
     const auto alt = optional_number(body, "alt_m");
     change = [lat, lon, alt](toml::table& root) {
-      toml::table& s = table_at(root, "station");
-      s.insert_or_assign("lat_deg", lat);
-      s.insert_or_assign("lon_deg", lon);
-      if (alt) s.insert_or_assign("alt_m", *alt);
-      s.erase("grid");  // derived from the position
+      set_station_position(table_at(root, "station"), lat, lon, alt);
     };
   }
   save(
       body.contains("grid") ? "grid" : "lat_deg", std::move(change),
       [this] {
         p_.config.sky = p_.store.config().sky;
-        if (p_.sky.target()) {
-          const auto again = find_sky_target(p_.config.sky, p_.sky.target()->name);
-          p_.sky.follow(again ? *again : *p_.sky.target());  // recomputed for the new place
-        }
+        p_.sky.refollow();
         snapshot_.unix_s = -1.0;
         return json{{"station", config()["station"]}};
       },

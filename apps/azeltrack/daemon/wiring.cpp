@@ -102,34 +102,25 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
 void StationDaemon::adopt_site(const gnss::Site& site, std::function<void(bool)> done) {
   ConfigStore::Change change = [site](toml::table& root) {
     if (!root.contains("station")) root.insert("station", toml::table{});
-    toml::table* s = root["station"].as_table();
-    if (s == nullptr) throw UsageError("[station] is not a table");
-    s->insert_or_assign("lat_deg", site.lat_deg);
-    s->insert_or_assign("lon_deg", site.lon_deg);
-    s->insert_or_assign("alt_m", site.alt_m);
-    s->erase("grid");  // derived from the position
+    toml::table* station = root["station"].as_table();
+    if (station == nullptr) throw UsageError("[station] is not a table");
+    set_station_position(*station, site.lat_deg, site.lon_deg, site.alt_m);
   };
-  auto outcome = std::make_shared<Result<ConfigStore::Saved>>(
-      fail("the save was interrupted (see the daemon's log)"));
-  off_loop()([base = store_.save_base(), change = std::move(change),
-              outcome] { *outcome = ConfigStore::save_change(base, change); },
-             [this, site, outcome, done = std::move(done)] {
-               if (!*outcome) {
-                 spdlog::warn("gps: the surveyed position was not saved: {}",
-                              outcome->error().message);
-                 done(false);
-                 return;
-               }
-               store_.commit(std::move(*outcome).value());
-               config_.sky = store_.config().sky;
-               if (sky_.target()) {  // recomputed for the new place
-                 const auto again = find_sky_target(config_.sky, sky_.target()->name);
-                 sky_.follow(again ? *again : *sky_.target());
-               }
-               spdlog::info("gps: the station is at {:.6f} {:.6f} {:.1f} m (surveyed, saved)",
-                            site.lat_deg, site.lon_deg, site.alt_m);
-               done(true);
-             });
+  store_.save_off_loop(
+      off_loop(), std::move(change),
+      [this, site, done = std::move(done)](Result<std::vector<std::string>> notices) {
+        if (!notices) {
+          spdlog::warn("gps: the surveyed position was not saved: {}", notices.error().message);
+          done(false);
+          return;
+        }
+        for (const auto& notice : notices.value()) spdlog::warn("{}", notice);
+        config_.sky = store_.config().sky;
+        sky_.refollow();  // computed for the new place
+        spdlog::info("gps: the station is at {:.6f} {:.6f} {:.1f} m (surveyed, saved)",
+                     site.lat_deg, site.lon_deg, site.alt_m);
+        done(true);
+      });
 }
 
 std::unique_ptr<AntennaBackend> StationDaemon::make_backend() {

@@ -24,6 +24,12 @@ std::optional<astro::Target> SkyFollower::find(const std::string& name) const {
   return find_sky_target(station_, name);
 }
 
+void SkyFollower::refollow() {
+  if (!target_) return;
+  const auto again = find(target_->name);
+  follow(again ? *again : *target_);
+}
+
 void SkyFollower::follow(const astro::Target& target) {
   target_ = target;
   t0_ = -1.0;

@@ -26,6 +26,9 @@ class SkyFollower {
   /// Finds a target by name among the configured ones (case-insensitive: "moon", "casa").
   [[nodiscard]] std::optional<astro::Target> find(const std::string& name) const;
   void follow(const astro::Target& target);
+  /// The station's place changed: the target followed, found again by name (a configured one
+  /// may depend on the place), is computed afresh.
+  void refollow();
   [[nodiscard]] const std::optional<astro::Target>& target() const { return target_; }
 
   /// Where the target is at `utc_unix_s` (UTC seconds since 1970); nullopt when the engine cannot
