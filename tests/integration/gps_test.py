@@ -105,9 +105,11 @@ def truth(name):
         return json.load(f)["mean"]
 
 
-# 1: no gpsd yet.
+# 1: no gpsd yet. The log opens with 40 s without a fix, so the daemon (retrying every 2 s) is
+# connected before the first good one; the survey holds 40 of the 60 fixes (σ 1.5 m each), so its
+# mean is within ~0.2 m of the whole log's.
 GPSD = free_port()
-daemon, base, config, log = start_daemon("survey", GPSD, "stop", 3.0)
+daemon, base, config, log = start_daemon("survey", GPSD, "stop", 40.0)
 check(until_state(base, "no_gpsd", 5), "1: no_gpsd while nothing listens")
 check(daemon.poll() is None, "1: the daemon runs on without gpsd")
 
@@ -120,7 +122,7 @@ g = gps(base)
 mean = truth("good_fix")
 check(g["sats_used"] == 8 and g["sats_visible"] == 12, f"2: satellites 8 of 12: {g}")
 check(g["hdop"] == 0.94, f"2: hdop 0.94: {g['hdop']}")
-check(str(g["time_utc"]).startswith("2025-03-14T00:00:"), f"2: the receiver's time: {g['time_utc']}")
+check(str(g["time_utc"]).startswith("2025-03-14T00:0"), f"2: the receiver's time: {g['time_utc']}")
 check(distance_m(g["lat_deg"], g["lon_deg"], mean[0], mean[1]) < 10, f"2: the fix: {g}")
 check(abs(g["alt_m"] - mean[2]) < 10, f"2: altitude above sea level: {g['alt_m']}")
 check(len(g["satellites"]) == 12 and sum(s["used"] for s in g["satellites"]) == 8,
@@ -166,8 +168,9 @@ check(distance_m(before["lat_deg"], before["lon_deg"], *jump["before"][:2]) < 5,
       f"5: the first site is the first half's: {before}")
 check(wait_until(lambda: gps(base)["jump_refused"] is not None, 20), f"5: jump refused: {gps(base)}")
 after = http_json(base, "GET", "/api/state")[1]["station"]
-check(distance_m(after["lat_deg"], after["lon_deg"], before["lat_deg"], before["lon_deg"]) < 1,
-      f"5: the station did not move while tracking: {after}")
+# The first site is refined as its fixes come in (moves of metres are adopted), the 500 m is not.
+check(distance_m(after["lat_deg"], after["lon_deg"], *jump["before"][:2]) < 5,
+      f"5: the station did not jump while tracking: {after}")
 refused = gps(base)["jump_refused"]
 check(distance_m(refused["lat_deg"], refused["lon_deg"], *jump["after"][:2]) < 5,
       f"5: the refused site is the second half's: {refused}")

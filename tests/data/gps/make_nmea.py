@@ -85,8 +85,11 @@ def main(folder):
     txt = [checksum("GNTXT,01,01,02,u-blox AG - www.u-blox.com"),
            checksum("GNTXT,01,01,02,HW UBX-M8030 00080000")]
     logs = {}
-    good, seen = fixes(rng, 40, SITE)
-    logs["good_fix"] = (txt + good, mean(seen))
+    # A cold start: 40 s without a fix first, so a client that connects while gpsfake already
+    # replays (gpsfake does not wait for one) still sees every good fix.
+    acquiring, _ = fixes(rng, 40, SITE, mode=1, used=0)
+    good, seen = fixes(rng, 60, SITE, t0=40)
+    logs["good_fix"] = (txt + acquiring + good, mean(seen))
     none, _ = fixes(rng, 20, SITE, mode=1, used=0)
     logs["no_fix"] = (txt + none, None)
     two, _ = fixes(rng, 20, SITE, mode=2, used=3)
