@@ -106,3 +106,10 @@ def tle_with_epoch_now(name_line=b"ISS (ZARYA)"):
     l1 = "1 25544U 98067A   %s  .00016717  00000-0  30119-3 0  999" % epoch
     l2 = "2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110"
     return name_line + b"\n" + checksum(l1).encode() + b"\n" + checksum(l2).encode() + b"\n"
+
+
+def remove_gpsd_shm(port):
+    """gpsd started by gpsfake on `port` leaves its shared-memory export behind when killed (key
+    0x4770 followed by the port in hex, gpsd's GPSD_SHM_KEY scheme for test instances)."""
+    import subprocess  # pylint: disable=import-outside-toplevel
+    subprocess.run(["ipcrm", "-M", f"0x4770{port:04x}"], capture_output=True, check=False)

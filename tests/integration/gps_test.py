@@ -22,7 +22,8 @@ import sys
 import tempfile
 import time
 
-from daemon_harness import Checks, free_port, http_json, station_toml, wait_until
+from daemon_harness import (Checks, free_port, http_json, remove_gpsd_shm, station_toml,
+                            wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
@@ -51,10 +52,13 @@ def cleanup():
                 p.wait(5)
             except subprocess.TimeoutExpired:
                 p.kill()
+    for port in gpsd_ports:
+        remove_gpsd_shm(port)
     shutil.rmtree(TMP, ignore_errors=True)
 
 
 atexit.register(cleanup)
+gpsd_ports = set()
 
 
 def start_daemon(name, gpsd_port, target, hold_s):
@@ -76,10 +80,11 @@ def start_daemon(name, gpsd_port, target, hold_s):
 
 def gpsfake(port, log_name, cycle=0.02):
     """gpsd on `port` fed once with the log, a sentence every `cycle` s (8 sentences a fix)."""
+    gpsd_ports.add(port)
     p = subprocess.Popen(["gpsfake", "-q", "-1", "-c", str(cycle), "-P", str(port),
                           os.path.join(LOGS, log_name + ".nmea")],
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                         start_new_session=True)
+                         start_new_session=True, env={**os.environ, "TMPDIR": TMP})
     p.group = True
     procs.append(p)
     return p

@@ -138,7 +138,8 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
                                  "satellites",
                                  "spacecraft",
                                  "log",
-                                 "gps"})) {
+                                 "gps",
+                                 "time"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }

@@ -16,6 +16,7 @@
 #include "azt/sim/station_sim.hpp"
 #include "config/config_choice.hpp"
 #include "config/gps_config.hpp"
+#include "config/time_config.hpp"
 #include "config/hardware_config.hpp"
 #include "config/mount_config.hpp"
 #include "config/sim_config.hpp"
@@ -112,7 +113,8 @@ struct DaemonConfig {
   GpioConfig gpio;
   HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
   SatellitesConfig satellites;
-  GpsConfig gps;  ///< [gps]: the receiver through gpsd
+  GpsConfig gps;    ///< [gps]: the receiver through gpsd
+  TimeConfig time;  ///< [time]: chrony watched, its servers set from the console
   NetServerConfig rotctld{"127.0.0.1", 4533};
   /// A rotctld client silent this long is disconnected (0: never); Gpredict polls every second.
   double rotctld_idle_timeout_s = 600.0;

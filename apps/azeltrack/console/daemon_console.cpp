@@ -8,6 +8,7 @@
 
 #include "azt/astro/bands.hpp"
 #include "azt/astro/time_scales.hpp"
+#include "azt/timekeeping/ntp_servers.hpp"
 #include "common/sky_report.hpp"
 #include "common/usage_error.hpp"
 #include "config/sky_config.hpp"
@@ -211,7 +212,7 @@ json DaemonConsole::state() {
             {"lat_deg", obs.lat_deg},
             {"lon_deg", obs.lon_deg},
             {"alt_m", obs.height_m}}},
-          {"clock", {{"source", "system"}}},
+          {"time", p_.clock != nullptr ? p_.clock->to_json() : json(nullptr)},
           {"gps", p_.gps ? p_.gps() : json{{"state", "off"}}},
           {"faults", p_.antenna.faults()},
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
@@ -370,10 +371,35 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
       {"config/offsets", &DaemonConsole::act_offsets},
       {"config/tilt", &DaemonConsole::act_tilt},
       {"config/park", &DaemonConsole::act_park},
-      {"config/control", &DaemonConsole::act_control}};
+      {"config/control", &DaemonConsole::act_control},
+      {"time/servers", &DaemonConsole::act_time_servers}};
   const auto it = save_actions.find(action);
   if (it == save_actions.end()) throw ApiError(404, "", "no such action: " + action);
   (this->*(it->second))(body, std::move(done));
+}
+
+void DaemonConsole::act_time_servers(const json& body, ActDone done) {
+  if (p_.clock == nullptr) throw ApiError(503, "servers", "the clock is not watched here");
+  if (!body.contains("servers") || !body["servers"].is_array()) {
+    throw ApiError(400, "servers", "servers must be a list of host names or addresses");
+  }
+  std::vector<std::string> servers;
+  for (const auto& s : body["servers"]) {
+    if (!s.is_string()) throw ApiError(400, "servers", "each server must be a string");
+    servers.push_back(s.get<std::string>());
+  }
+  if (const auto checked = timekeeping::check_ntp_servers(servers); !checked) {
+    throw ApiError(400, "servers", checked.error().message);
+  }
+  p_.clock->set_servers(servers, [this, done = std::move(done)](Result<bool> r) {
+    if (!r) {
+      // Not managed here is "not now"; a file or chronyd that failed is the station's trouble.
+      const bool off = r.error().message.find("manage_chrony is off") != std::string::npos;
+      done(ActResult{{}, ApiError(off ? 409 : 503, "servers", r.error().message)});
+      return;
+    }
+    done(ActResult{{{"time", p_.clock->to_json()}}, std::nullopt});
+  });
 }
 
 TargetRequest DaemonConsole::target_request(const json& body) {

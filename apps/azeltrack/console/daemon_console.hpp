@@ -18,6 +18,7 @@
 #include "config/config_store.hpp"
 #include "config/daemon_config.hpp"
 #include "console/console_model.hpp"
+#include "station/clock_watch.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
 #include "station/sky_follower.hpp"
@@ -47,6 +48,8 @@ struct ConsoleParts {
   std::function<void(const std::string&)> log = [](const std::string&) {};
   /// The GPS receiver's state (issue 15; null when not given).
   std::function<nlohmann::json()> gps;
+  /// The station's clock (issue 15 §2; null when not given: `time` is null).
+  ClockWatch* clock = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -85,6 +88,8 @@ class DaemonConsole final : public ConsoleModel {
   void act_tilt(const nlohmann::json& body, ActDone done);
   void act_park(const nlohmann::json& body, ActDone done);
   void act_control(const nlohmann::json& body, ActDone done);
+  /// POST time/servers {"servers": [...]}: chrony's upstream servers ([time] manage_chrony).
+  void act_time_servers(const nlohmann::json& body, ActDone done);
 
   /// Saves `change` through the store off the loop; then, back on the loop, `apply` brings the
   /// running station to the saved configuration and gives the answer's fields. A refusal is a

@@ -23,6 +23,7 @@
 #include "daemon/daemon.hpp"
 #include "daemon/rate_limited_log.hpp"
 #include "daemon/tick_stats.hpp"
+#include "station/clock_watch.hpp"
 #include "station/gps_receiver.hpp"
 #include "station/guarded_antenna.hpp"
 #include "station/recent_events.hpp"
@@ -62,6 +63,8 @@ class StationDaemon {
   /// [gps] use_position: saves a surveyed site as [station] lat/lon/alt (off the loop) and, once
   /// saved, points from it; `done(false)` when the save failed (logged).
   void adopt_site(const gnss::Site& site, std::function<void(bool)> done);
+  /// [time]: chrony, the kernel and the RTC watched on the clock's own worker.
+  std::unique_ptr<ClockWatch> make_clock_watch();
   void open_servers();
   void open_console();
   /// A refusal a client was given: in the journal (at most 10 lines a minute per client) and in
@@ -88,6 +91,8 @@ class StationDaemon {
   /// Its jobs' work halves touch only what they captured, and their done halves run only on the
   /// loop, so it may outlive the parts they report to (it is joined after them).
   linux_os::WorkerThread worker_{io_};
+  /// chronyc may take seconds: the clock's looks queue here, not ahead of a save or a login.
+  linux_os::WorkerThread clock_worker_{io_};
   std::unique_ptr<astro::Ephemeris> ephemeris_;
   SkyFollower sky_;
   control::ModeController modes_;
@@ -101,6 +106,7 @@ class StationDaemon {
   RecentEvents events_;
   RecentEvents motions_;              ///< accepted motion commands, with their sources
   std::unique_ptr<GpsReceiver> gps_;  ///< [gps]: gpsd, the GPS state and the site survey
+  std::unique_ptr<ClockWatch> clock_;  ///< [time]: is the clock to be trusted
   StationCommands commands_;
   StationService service_;
   boost::asio::signal_set signals_;

@@ -6,9 +6,12 @@
 #include <filesystem>
 
 #include "antenna/axis_devices.hpp"
+#include "azt/linux/atomic_file.hpp"
+#include "azt/linux/clock_probe.hpp"
 #include "azt/linux/libgpiod_lines.hpp"
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
+#include "azt/timekeeping/ntp_servers.hpp"
 #include "azt/track/pass_plan.hpp"
 #include "azt/util/valid_utf8.hpp"
 #include "common/horizon_mask_option.hpp"
@@ -97,6 +100,34 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
                               adopt_site(site, std::move(done));
                             },
                             [](const std::string& line) { spdlog::info("{}", line); }});
+  clock_ = make_clock_watch();
+}
+
+std::unique_ptr<ClockWatch> StationDaemon::make_clock_watch() {
+  const TimeConfig& t = config_.time;
+  const linux_os::ClockProbeConfig probe{t.chronyc, t.chrony_socket, 5.0, t.rtc};
+  return std::make_unique<ClockWatch>(
+      io_,
+      ClockWatchParts{
+          t, [this] { return now_s(); },
+          [this](std::function<void()> work, std::function<void()> done) {
+            clock_worker_.post(std::move(work), std::move(done));
+          },
+          [probe](double at_s) { return linux_os::probe_clock(probe, at_s); },
+          [probe, file = t.sources_file](const std::vector<std::string>& servers) -> Result<bool> {
+            auto written = linux_os::write_file_atomically(
+                file, timekeeping::chrony_sources_text(servers));
+            if (!written) return written.error();
+            auto reloaded = linux_os::reload_chrony_sources(probe);
+            if (!reloaded) return fail("saved in " + file + ", but " + reloaded.error().message);
+            return true;
+          },
+          [file = t.sources_file] {
+            const auto text = linux_os::read_file(file);
+            return text ? timekeeping::servers_in_sources(text.value())
+                        : std::vector<std::string>{};
+          },
+          [](const std::string& line) { spdlog::info("{}", line); }});
 }
 
 void StationDaemon::adopt_site(const gnss::Site& site, std::function<void(bool)> done) {
@@ -271,7 +302,7 @@ void StationDaemon::open_console() {
                    },
                    off_loop(), &events_, &motions_,
                    [](const std::string& line) { spdlog::warn("{}", line); },
-                   [this] { return gps_->to_json(); }},
+                   [this] { return gps_->to_json(); }, clock_.get()},
       [](const std::string& line) { spdlog::warn("{}", line); });
   spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
 }

@@ -4,6 +4,7 @@ RMC, GGA, GSA, GSV and TXT, one fix a second. Deterministic (a fixed seed), so t
 folder are what this script prints; run it again after a change:
     python3 tests/data/gps/make_nmea.py tests/data/gps
 Each log's true mean position is written beside it in a .json file for the tests to compare.
+The time test imports write_live() for a log that starts at a given UTC second (now).
 """
 import json
 import math
@@ -32,6 +33,9 @@ def lat_text(lat):
 def lon_text(lon):
     d = int(abs(lon))
     return f"{d:03d}{(abs(lon) - d) * 60:08.5f},{'E' if lon >= 0 else 'W'}"
+
+
+SENTENCES_PER_FIX = 6  # RMC, GGA, GSA and three GSV: gpsfake -c 1/6 plays a fix a second
 
 
 def cycle(t, pos, mode, used):
@@ -63,14 +67,14 @@ def offset(pos, north_m, east_m):
     return (lat + north_m / 111195.0, lon + east_m / (111195.0 * math.cos(math.radians(lat))), alt)
 
 
-def fixes(rng, seconds, centre, mode=3, used=8, t0=0):
+def fixes(rng, seconds, centre, mode=3, used=8, t0=0, start=START):
     lines, seen = [], []
     for s in range(seconds):
         p = offset(centre, rng.gauss(0, 1.5), rng.gauss(0, 1.5))
         p = (p[0], p[1], centre[2] + rng.gauss(0, 2.0))
         # Rounded as the sentence carries it: the mean the tests expect is of what gpsd reads.
         p = (round(p[0] * 6e6) / 6e6, round(p[1] * 6e6) / 6e6, round(p[2], 1))
-        lines += cycle(START + timedelta(seconds=t0 + s), p, mode, used)
+        lines += cycle(start + timedelta(seconds=t0 + s), p, mode, used)
         if mode == 3:
             seen.append(p)
     return lines, seen
@@ -78,6 +82,14 @@ def fixes(rng, seconds, centre, mode=3, used=8, t0=0):
 
 def mean(points):
     return [sum(p[i] for p in points) / len(points) for i in range(3)] if points else None
+
+
+def write_live(path, start_unix_s, seconds):
+    """A good 3D fix a second from the whole UTC second start_unix_s on, for a time chain."""
+    start = datetime.fromtimestamp(start_unix_s, tz=timezone.utc)
+    lines, _ = fixes(random.Random(15), seconds, SITE, start=start)
+    with open(path, "w", encoding="ascii", newline="") as f:
+        f.writelines(lines)
 
 
 def main(folder):
