@@ -213,6 +213,7 @@ json DaemonConsole::state() {
             {"lon_deg", obs.lon_deg},
             {"alt_m", obs.height_m}}},
           {"time", p_.clock != nullptr ? p_.clock->to_json() : json(nullptr)},
+          {"network", p_.network ? p_.network() : json(nullptr)},
           {"gps", p_.gps ? p_.gps() : json{{"state", "off"}}},
           {"faults", p_.antenna.faults()},
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},

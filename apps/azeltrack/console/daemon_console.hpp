@@ -50,6 +50,8 @@ struct ConsoleParts {
   std::function<nlohmann::json()> gps;
   /// The station's clock (issue 15 §2; null when not given: `time` is null).
   ClockWatch* clock = nullptr;
+  /// The network links (issue 15 §3; null when not given: `network` is null).
+  std::function<nlohmann::json()> network;
 };
 
 class DaemonConsole final : public ConsoleModel {

@@ -25,6 +25,7 @@
 #include "daemon/tick_stats.hpp"
 #include "station/clock_watch.hpp"
 #include "station/gps_receiver.hpp"
+#include "station/network_watch.hpp"
 #include "station/guarded_antenna.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
@@ -65,6 +66,8 @@ class StationDaemon {
   void adopt_site(const gnss::Site& site, std::function<void(bool)> done);
   /// [time]: chrony, the kernel and the RTC watched on the clock's own worker.
   std::unique_ptr<ClockWatch> make_clock_watch();
+  /// Posts to the status worker (the clock's and the network's looks).
+  Offload status_off_loop();
   void open_servers();
   void open_console();
   /// A refusal a client was given: in the journal (at most 10 lines a minute per client) and in
@@ -91,8 +94,9 @@ class StationDaemon {
   /// Its jobs' work halves touch only what they captured, and their done halves run only on the
   /// loop, so it may outlive the parts they report to (it is joined after them).
   linux_os::WorkerThread worker_{io_};
-  /// chronyc may take seconds: the clock's looks queue here, not ahead of a save or a login.
-  linux_os::WorkerThread clock_worker_{io_};
+  /// chronyc and D-Bus may take seconds: the looks at the clock and the network queue here, not
+  /// ahead of a save or a login.
+  linux_os::WorkerThread status_worker_{io_};
   std::unique_ptr<astro::Ephemeris> ephemeris_;
   SkyFollower sky_;
   control::ModeController modes_;
@@ -107,6 +111,7 @@ class StationDaemon {
   RecentEvents motions_;              ///< accepted motion commands, with their sources
   std::unique_ptr<GpsReceiver> gps_;  ///< [gps]: gpsd, the GPS state and the site survey
   std::unique_ptr<ClockWatch> clock_;  ///< [time]: is the clock to be trusted
+  std::unique_ptr<NetworkWatch> network_;  ///< the links, for the console
   StationCommands commands_;
   StationService service_;
   boost::asio::signal_set signals_;

@@ -101,6 +101,15 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
                             },
                             [](const std::string& line) { spdlog::info("{}", line); }});
   clock_ = make_clock_watch();
+  network_ = std::make_unique<NetworkWatch>(
+      io_, NetworkWatchParts{5.0, status_off_loop(), [] { return read_network_reading(); },
+                             [](const std::string& line) { spdlog::info("{}", line); }});
+}
+
+Offload StationDaemon::status_off_loop() {
+  return [this](std::function<void()> work, std::function<void()> done) {
+    status_worker_.post(std::move(work), std::move(done));
+  };
 }
 
 std::unique_ptr<ClockWatch> StationDaemon::make_clock_watch() {
@@ -109,10 +118,7 @@ std::unique_ptr<ClockWatch> StationDaemon::make_clock_watch() {
   return std::make_unique<ClockWatch>(
       io_,
       ClockWatchParts{
-          t, [this] { return now_s(); },
-          [this](std::function<void()> work, std::function<void()> done) {
-            clock_worker_.post(std::move(work), std::move(done));
-          },
+          t, [this] { return now_s(); }, status_off_loop(),
           [probe](double at_s) { return linux_os::probe_clock(probe, at_s); },
           [probe, file = t.sources_file](const std::vector<std::string>& servers) -> Result<bool> {
             auto written = linux_os::write_file_atomically(
@@ -302,7 +308,8 @@ void StationDaemon::open_console() {
                    },
                    off_loop(), &events_, &motions_,
                    [](const std::string& line) { spdlog::warn("{}", line); },
-                   [this] { return gps_->to_json(); }, clock_.get()},
+                   [this] { return gps_->to_json(); }, clock_.get(),
+                   [this] { return network_->to_json(); }},
       [](const std::string& line) { spdlog::warn("{}", line); });
   spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
 }
