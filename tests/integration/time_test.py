@@ -18,6 +18,8 @@ import ctypes
 import os
 import shutil
 import signal
+import socket
+import struct
 import subprocess
 import sys
 import tempfile
@@ -81,6 +83,26 @@ def kernel_synced():
     return state != 5 and not status & 0x40
 
 
+def ntp_packet(port, payload, timeout=1.0):
+    """One UDP exchange with chronyd; None when it does not answer."""
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.settimeout(timeout)
+        s.sendto(payload, ("127.0.0.1", port))
+        try:
+            return s.recv(1024)
+        except socket.timeout:
+            return None
+
+
+def ntp_query(port):
+    """(stratum, refid, root dispersion in s) from a plain mode-3 client request (RFC 5905)."""
+    reply = ntp_packet(port, b"\x23" + bytes(47))  # LI 0, VN 4, mode 3
+    if reply is None or len(reply) < 48:
+        return None
+    dispersion = struct.unpack("!I", reply[8:12])[0] / 65536.0
+    return reply[1], reply[12:16].rstrip(b"\0").decode(errors="replace"), dispersion
+
+
 def time_state(base):
     return http_json(base, "GET", "/api/state")[1]["time"]
 
@@ -114,9 +136,9 @@ with open(os.path.join(TMP, "chrony.conf"), "w", encoding="utf-8") as f:
             f"bindcmdaddress {SOCK}\npidfile {RUN}/chronyd.pid\nsourcedir {SOURCES_D}\n")
 time.sleep(max(0.0, start - 0.5 - time.time()))
 # -t: a TCP source (gpsd writes no SHM for gpsfake's default pty); -n: gpsd polls without a client.
-spawn(["gpsfake", "-t", "-n", "-q", "-1", "-W", "5", "-P", str(GPSD),
-       "-c", f"{1 / make_nmea.SENTENCES_PER_FIX:.4f}", log], "gpsfake.log", env={**os.environ,
-                                                                            "TMPDIR": TMP})
+fake = spawn(["gpsfake", "-t", "-n", "-q", "-1", "-W", "5", "-P", str(GPSD),
+              "-c", f"{1 / make_nmea.SENTENCES_PER_FIX:.4f}", log], "gpsfake.log",
+             env={**os.environ, "TMPDIR": TMP})
 chronyd = spawn(["chronyd", "-x", "-d", "-u", "root", "-f", os.path.join(TMP, "chrony.conf")],
                 "chronyd.log")
 t0 = time.monotonic()
@@ -183,6 +205,24 @@ check(wait_until(lambda: any(s["name"] == "127.0.0.2" for s in time_state(base)[
       "4: the console lists the new source")
 status, body = http_json(base, "POST", "/api/time/servers", {"servers": ["127.0.0.2"]})
 check(status == 401, f"4: no login, no change: {status}")
+
+# R21 (docs/reliability.md): malformed and non-client packets get no answer; a client still does.
+for what, packet in [("10 bytes", bytes(10)), ("mode 0", b"\x20" + bytes(47)),
+                     ("mode 6 (control)", b"\x26" + bytes(47)), ("version 7", b"\x3b" + bytes(47))]:
+    check(ntp_packet(NTP, packet, 0.5) is None, f"R21: no answer to {what}")
+check((ntp_query(NTP) or (0,))[0] == 1, "R21: a client is still answered, stratum 1")
+
+# R20: the GPS unplugged (gpsfake and its gpsd killed): the served root dispersion grows instead of
+# the server claiming the accuracy it had, and the daemon sees the GPS source fall silent.
+os.killpg(fake.pid, signal.SIGKILL)
+fake.wait(10)
+held = ntp_query(NTP)
+check(wait_until(lambda: ntp_query(NTP)[2] > held[2] + 0.001, 20),
+      f"R20: root dispersion grows without the GPS: {held} -> {ntp_query(NTP)}")
+check(wait_until(lambda: http_json(base, "GET", "/api/state")[1]["gps"]["state"] == "no_gpsd", 10),
+      "R20: the daemon shows the GPS gone")
+check(wait_until(lambda: [s for s in time_state(base)["sources"] if s["name"] == "GPS"][0]
+                 ["last_rx_s"] > 3, 15), "R20: the GPS source's last sample ages")
 
 # 5: chronyd gone: not synchronised, and the antenna still follows the Moon.
 chronyd.send_signal(signal.SIGTERM)
