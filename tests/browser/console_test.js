@@ -2,6 +2,8 @@
 // against a real `azeltrack serve` on the simulated antenna. Each scenario checks what a user sees
 // and what the daemon did; screenshots at desktop and phone sizes go to OUT_DIR.
 // Usage: node console_test.js AZELTRACK OUT_DIR
+// AZT_WEB_DIR=web serves the console's files from that directory instead of the copy built into
+// AZELTRACK (to try an edit of web/ without a rebuild; the API and the WebSocket stay the daemon's).
 'use strict';
 const { chromium } = require('playwright-core');
 const { spawn, spawnSync } = require('child_process');
@@ -19,9 +21,12 @@ fs.mkdirSync(outDir, { recursive: true });
 const PASSWORD = 'browser-test-password';
 const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'azt-browser-'));
 const config = path.join(tmp, 'azeltrack.toml');
+const sourcesFile = path.join(tmp, 'sources.d', 'azeltrack.sources');
 let daemon = null;
 let port = 0;
 let base = '';
+let gpsdPort = 0;
+let gpsfake = null;
 
 const freePort = () => new Promise((resolve, reject) => {
   const s = net.createServer();
@@ -57,6 +62,21 @@ async function startDaemon() {
     return s && s.antenna && s.antenna.known;
   });
 }
+// gpsd fed once with a recorded fix by gpsfake, in a process group of its own (gpsfake waits on
+// its gpsd otherwise), as tests/integration/gps_test.py does.
+function startGpsfake(log) {
+  gpsfake = spawn('gpsfake', ['-q', '-1', '-c', '0.02', '-P', String(gpsdPort), log],
+    { stdio: 'ignore', detached: true, env: { ...process.env, TMPDIR: tmp } });
+}
+function stopGpsfake() {
+  if (!gpsfake) return;
+  try { process.kill(-gpsfake.pid, 'SIGKILL'); } catch (e) { /* gone */ }
+  gpsfake = null;
+  // gpsd killed leaves its shared-memory export (key 0x4770 then the port in hex) behind.
+  spawnSync('ipcrm', ['-M', `0x4770${gpsdPort.toString(16).padStart(4, '0')}`], { stdio: 'ignore' });
+}
+const hasProgram = (name) => spawnSync('sh', ['-c', `command -v ${name}`], { stdio: 'ignore' }).status === 0;
+
 async function stopDaemon() {
   if (!daemon) return;
   const d = daemon;
@@ -106,7 +126,17 @@ port = 0
 port = ${port}
 [satellites]
 file = "sats.tle"
+[gps]
+enabled = true
+gpsd = "127.0.0.1:${gpsdPort}"
+use_position = false
+[time]
+chrony_socket = "${path.join(tmp, 'nonexistent.sock')}"
+poll_s = 1
+manage_chrony = true
+sources_file = "${sourcesFile}"
 `);
+  fs.mkdirSync(path.dirname(sourcesFile), { recursive: true });
   fs.writeFileSync(path.join(path.dirname(config), 'sats.tle'), tleWithEpochNow());
   const r = spawnSync(bin, ['web', 'password', '--config', config], { input: `${PASSWORD}\n` });
   if (r.status !== 0) throw new Error(`web password: ${r.stderr}`);
@@ -134,18 +164,43 @@ async function scenario(name, page, body) {
   await page.setViewportSize({ width: 1280, height: 800 });
 }
 
+const loggedIn = (page) => page.evaluate(async () => (await (await fetch('/api/session')).json()).logged_in);
 async function login(page) {
   await page.click('#nav-main').catch(() => {});
+  if (await loggedIn(page)) return;
   if (!(await page.isVisible('#password'))) await page.click('#login-state');
   await page.fill('#password', PASSWORD);
   await page.click('#login-btn');
-  await until('the session', () => page.evaluate(async () => (await (await fetch('/api/session')).json()).logged_in));
+  await until('the session', () => loggedIn(page));
 }
 
 async function text(page, sel) { return (await page.textContent(sel) || '').trim(); }
+// An element's colour against a theme variable's, both as the browser computes them.
+async function colourIs(page, sel, variable) {
+  return page.evaluate(([s, v]) => {
+    const probe = document.createElement('span');
+    probe.style.color = `var(${v})`;
+    document.body.append(probe);
+    const want = getComputedStyle(probe).color;
+    probe.remove();
+    return getComputedStyle(document.querySelector(s)).color === want;
+  }, [sel, variable]);
+}
+
+// Serves web/ from disk in place of the daemon's built-in copy (AZT_WEB_DIR, see the top).
+async function serveWebDir(ctx, dir) {
+  const types = { '.html': 'text/html; charset=utf-8', '.css': 'text/css; charset=utf-8', '.js': 'text/javascript; charset=utf-8' };
+  await ctx.route(`${base}/**`, (route) => {
+    const p = new URL(route.request().url()).pathname;
+    const file = p === '/' ? 'index.html' : p === '/app.css' ? 'app.css' : /^\/js\/[a-z_]+\.js$/.test(p) ? p.slice(1) : null;
+    if (!file) return route.continue();
+    return route.fulfill({ status: 200, contentType: types[path.extname(file)], body: fs.readFileSync(path.join(dir, file)) });
+  });
+}
 
 async function main() {
   port = await freePort();
+  gpsdPort = await freePort();
   base = `http://127.0.0.1:${port}`;
   writeConfig();
   await startDaemon();
@@ -155,9 +210,12 @@ async function main() {
     headless: true,
     args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
       '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--disable-dev-shm-usage'],
+      '--disable-dev-shm-usage',
+      // a page fulfilled by the test (AZT_WEB_DIR) counts as public: let it reach the daemon
+      ...(process.env.AZT_WEB_DIR ? ['--disable-features=LocalNetworkAccessChecks'] : [])],
     viewport: { width: 1280, height: 800 },
   });
+  if (process.env.AZT_WEB_DIR) await serveWebDir(ctx, path.resolve(process.env.AZT_WEB_DIR));
   const page = ctx.pages()[0] || await ctx.newPage();
   const consoleErrors = [];
   page.on('pageerror', (e) => consoleErrors.push(e.message));
@@ -302,8 +360,99 @@ async function main() {
       await until('the clock to tick again', async () => (await text(page, '#utc')) !== t1, 3000);
     });
 
+    // Issue 15: the station's clock, GPS and network, in the header and on their pages.
+    await scenario('the clock: the banner, the Time page, NTP servers saved from the console', page, async () => {
+      await login(page);
+      await until('the clock banner with a reason', async () => (await page.isVisible('#clock-banner')) &&
+        (await text(page, '#clock-reason')).length > 5, 5000);
+      const banner = await text(page, '#clock-banner');
+      if (!/^Clock not synchronised: .+\. Tracking carries on\./.test(banner)) throw new Error(`banner: ${banner}`);
+      const t = (await state()).time;
+      if (t.synced !== false || !t.chrony_error) throw new Error(`daemon time: ${JSON.stringify(t)}`);
+      if (!banner.includes(t.reason.replace(/\.+$/, ''))) throw new Error(`the banner does not give the reason “${t.reason}”`);
+      await page.click('#nav-setup');
+      await page.click('#go-time');
+      await until('the Time page', () => page.isVisible('#screen-time'), 3000);
+      if ((await page.getAttribute('#nav-setup', 'aria-selected')) !== 'true') throw new Error('the Setup tab is not lit on the Time page');
+      if ((await text(page, '#time-badge')) !== 'NOT SYNCHRONISED') throw new Error(`badge: ${await text(page, '#time-badge')}`);
+      await until('the chrony error', async () => (await text(page, '#time-chrony')).includes(t.chrony_error), 3000);
+      if (!(await page.isVisible('#ntp-form')) || (await page.isVisible('#ntp-unmanaged'))) throw new Error('the managed servers form is not shown');
+      // chronyd is not running: the file is written, then `chronyc reload sources` fails (503).
+      await page.fill('#ntp-servers', '192.168.1.10');
+      await page.click('#ntp-save');
+      await until('the reload error', async () => /^Not applied: .*chronyc reload sources/.test(await text(page, '#ntp-error')), 5000);
+      const written = fs.readFileSync(sourcesFile, 'utf8');
+      if (!/^server 192\.168\.1\.10 iburst$/m.test(written)) throw new Error(`sources file: ${written}`);
+      await until('the servers in the state', async () => JSON.stringify((await state()).time.servers) === '["192.168.1.10"]', 3000);
+      await page.fill('#ntp-servers', 'bad name');
+      await page.click('#ntp-save');
+      await until('the field error', async () => /^Not saved: .*bad name/.test(await text(page, '#ntp-error')), 3000);
+      if (!(await page.$eval('#ntp-servers', (e) => e.classList.contains('bad')))) throw new Error('the servers field is not marked');
+      if (fs.readFileSync(sourcesFile, 'utf8') !== written) throw new Error('a refused name changed the sources file');
+    });
+
+    await scenario('the GPS: red without a fix, yellow with one, its page and sky plot', page, async () => {
+      if (!hasProgram('gpsfake')) { console.log('     (skipped: no gpsfake; install gpsd-clients)'); return; }
+      await page.click('#nav-main');
+      await until('the GPS icon red with no gpsd', async () => (await page.getAttribute('#ico-gps', 'data-state')) === 'bad' &&
+        (await state()).gps.state === 'no_gpsd', 5000);
+      if (!(await colourIs(page, '#ico-gps', '--bad'))) throw new Error('the GPS icon is not red');
+      if (!(await page.getAttribute('#ico-gps', 'title')).includes('gpsd not reachable')) throw new Error(`title: ${await page.getAttribute('#ico-gps', 'title')}`);
+      startGpsfake(path.join(__dirname, '..', 'data', 'gps', 'good_fix.nmea'));
+      // The log opens with ~5 s (played) of no fix.
+      await until('no fix, red', async () => (await state()).gps.state === 'no_fix' &&
+        (await page.getAttribute('#ico-gps', 'data-state')) === 'bad', 10000);
+      await page.click('#ico-gps');
+      await until('the GPS page', () => page.isVisible('#screen-gps'), 3000);
+      await until('a 3D fix, yellow', async () => (await state()).gps.state === 'fix3d' &&
+        (await page.getAttribute('#ico-gps', 'data-state')) === 'fix', 15000);
+      if (!(await colourIs(page, '#ico-gps', '--gps'))) throw new Error('the GPS icon is not yellow');
+      await until('8 of 12 satellites', async () => (await text(page, '#gps-sats')) === '8 used of 12 seen', 3000);
+      await until('the locator FN06he', async () => (await text(page, '#gps-locator')).toUpperCase() === 'FN06HE', 3000);
+      const marks = await page.$$eval('#gps-sats-marks .gsat', (l) => [l.length, l.filter((g) => g.classList.contains('used')).length]);
+      if (marks[0] !== 12 || marks[1] !== 8) throw new Error(`sky plot: ${marks[0]} satellites, ${marks[1]} used`);
+      if ((await text(page, '#gps-badge')) !== '3D FIX') throw new Error(`badge: ${await text(page, '#gps-badge')}`);
+      if (!/46\.189\d° N, 79\.393\d° W/.test(await text(page, '#gps-pos'))) throw new Error(`position: ${await text(page, '#gps-pos')}`);
+      // Back and the tabs still work from a page without a tab.
+      await page.click('#nav-sky');
+      await until('the Sky screen', () => page.isVisible('#screen-sky'), 3000);
+      await page.goBack();
+      await until('the GPS page again', () => page.isVisible('#screen-gps'), 3000);
+    });
+    stopGpsfake();
+
+    await scenario('the Network page lists the interfaces', page, async () => {
+      await page.click('#ico-eth');
+      await until('the Network page', () => page.isVisible('#screen-network'), 3000);
+      const names = fs.readdirSync('/sys/class/net').filter((n) => n !== 'lo');
+      const net = await until('network in the state', async () => { const s = await state(); return s.network; }, 5000);
+      if (!Array.isArray(net.interfaces)) throw new Error(`network: ${JSON.stringify(net)}`);
+      const shown = await until('an interface card', async () => {
+        const l = await page.$$eval('#net-list [data-iface]', (c) => c.map((e) => e.dataset.iface));
+        return l.some((n) => names.includes(n)) && l;
+      }, 3000);
+      if (shown.includes('lo')) throw new Error('loopback listed');
+    });
+
+    await scenario('on a phone the header keeps STOP and the status icons on screen', page, async () => {
+      await page.click('#nav-main');
+      for (const width of [320, 375]) {
+        await page.setViewportSize({ width, height: 740 });
+        const boxes = await page.evaluate(() => ['btn-stop', 'ico-gps', 'ico-eth', 'ico-wifi', 'conn-dot', 'login-state', 'logout-btn']
+          .map((id) => { const r = document.getElementById(id).getBoundingClientRect(); return { id, l: r.left, r: r.right, w: r.width }; }));
+        for (const b of boxes) if (b.w <= 0 || b.l < 0 || b.r > width) throw new Error(`${b.id} is off a ${width} px screen: ${JSON.stringify(b)}`);
+      }
+      for (const s of ['gps', 'time', 'network']) {
+        await page.evaluate((n) => { location.hash = n; }, s);
+        await until(`the ${s} page`, () => page.isVisible(`#screen-${s}`), 3000);
+        const w = await page.evaluate(() => document.documentElement.scrollWidth);
+        if (w > 375) throw new Error(`the ${s} page is ${w} px wide on a 375 px phone`);
+      }
+      await page.setViewportSize({ width: 1280, height: 800 });
+    });
+
     // Measurements (not pass/fail): page weight and state-change -> DOM latency. Sessions live in
-    // the daemon's memory, so the restarts above logged the page out.
+    // the daemon's memory, so the restarts above logged the page out (login() is a no-op if not).
     await login(page);
     await page.click('#nav-main');
     let bytes = 0;
@@ -338,6 +487,7 @@ async function main() {
       console.log(`FAIL no JavaScript errors: ${consoleErrors.join('; ')}`);
     }
   } finally {
+    stopGpsfake();
     await ctx.close();
     await stopDaemon();
     fs.rmSync(userDataDir, { recursive: true, force: true });
@@ -351,6 +501,7 @@ async function main() {
 
 main().catch(async (e) => {
   console.error(e);
+  stopGpsfake();
   await stopDaemon().catch(() => {});
   process.exit(1);
 });

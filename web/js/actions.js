@@ -39,7 +39,7 @@ function markField(form, field) {
   form.querySelectorAll('.bad').forEach((e) => e.classList.remove('bad'));
   const map = { grid: 'grid', lat_deg: 'lat', lon_deg: 'lon', alt_m: 'alt', az_offset_deg: 'az-offset',
     el_offset_deg: 'el-offset', window_deg: 'window', ramp_s: 'ramp', tracking_speed: 'tracking-speed',
-    ra_deg: 'ra', dec_deg: 'dec', band: 'band' };
+    ra_deg: 'ra', dec_deg: 'dec', band: 'band', servers: 'ntp-servers' };
   let el = field && map[field] ? $(map[field]) : null;
   if (form.id === 'man-form') el = field === 'el_deg' ? $('man-el') : field === 'az_deg' ? $('man-az') : null;
   if (form.classList.contains('park-row') && field) el = form.querySelector(`[data-f="${field}"]`);

@@ -15,3 +15,19 @@ export const upper1 = (s) => (s ? s[0].toUpperCase() + s.slice(1) : s);
 export const fmtLatLon = (lat, lon) => `${fix(Math.abs(lat), 4)}° ${lat < 0 ? 'S' : 'N'}, ${fix(Math.abs(lon), 4)}° ${lon < 0 ? 'W' : 'E'}`;
 // Names as the operator and the controller write them compare case-blind ("moon", "Moon").
 export const sameName = (a, b) => a != null && b != null && String(a).toLowerCase() === String(b).toLowerCase();
+// A small signed time as chrony gives it (seconds): µs below a millisecond, ms below a second.
+export function offset(v, signed = true) {
+  if (!isNum(v)) return '—';
+  const a = Math.abs(v); const sg = signed ? (v < 0 ? '−' : '+') : '';
+  if (a < 1e-3) return `${sg}${fix(a * 1e6, a < 1e-5 ? 1 : 0)} µs`;
+  if (a < 1) return `${sg}${fix(a * 1e3, a < 0.01 ? 2 : 1)} ms`;
+  return `${sg}${fix(a, 3)} s`;
+}
+// A duration in seconds as a person reads it: "12 s", "3 min", "2 h".
+export function ago(s) {
+  if (!isNum(s)) return '—';
+  if (s < 120) return `${Math.round(s)} s`;
+  if (s < 7200) return `${Math.round(s / 60)} min`;
+  if (s < 172800) return `${Math.round(s / 3600)} h`;
+  return `${Math.round(s / 86400)} d`;
+}

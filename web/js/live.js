@@ -1,5 +1,5 @@
 // The main screen from each state message: position, target, faults, who moved the antenna,
-// station I/O and the Moon panel.
+// station I/O and the Moon panel; the station's GPS, clock and network (station.js).
 
 import { parkSlotAt, S } from './state.js';
 import { $, h, setText } from './dom.js';
@@ -8,6 +8,7 @@ import { bandList, wavelength } from './bands.js';
 import { drawTrend, TREND_S } from './trend.js';
 import { drawSky } from './sky.js';
 import { markActiveTarget } from './targets.js';
+import { renderStation } from './station.js';
 
 function targetLabel(st) {
   const t = st.target || {};
@@ -41,9 +42,6 @@ export function onState(st) {
   const dx = m && isNum(m.dx_echo_doppler_hz);
   $('dx-row').hidden = !dx;
   if (dx) setText('dx-doppler', hz(m.dx_echo_doppler_hz));
-  const clk = st.clock || {};
-  setText('clock-source', clk.source || '—');
-  setText('clock-status', Object.entries(clk).filter(([k]) => k !== 'source').map(([k, v]) => `${k}: ${typeof v === 'object' ? JSON.stringify(v) : v}`).join(' · '));
   // B: corrections
   const c = st.corrections || {};
   setText('az-corr', sdeg(c.az_user_deg));
@@ -91,6 +89,7 @@ export function onState(st) {
   renderLog('event-list', 'eventsKey', Array.isArray(st.events) ? st.events : [], 10);
   renderLog('command-list', 'commandsKey', Array.isArray(st.commands) ? st.commands : [], 6);
   renderMoon(m);
+  renderStation(st);
   // trend
   const now = performance.now() / 1000;
   S.trend.push([now, e && isNum(e.az) ? e.az : null, e && isNum(e.el) ? e.el : null]);

@@ -6,22 +6,27 @@ import { drawTrend } from './trend.js';
 import { drawSky, loadSky } from './sky.js';
 import { loadTargets } from './targets.js';
 import { drawTilt, loadConfig } from './setup.js';
+import { renderStationPage } from './station.js';
 
 export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
+// Pages without a tab of their own (the phone's tab bar has no room): reached from the header's
+// status icons and from Setup, whose tab stays lit on them.
+export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup' };
 
 export function show(name) {
-  if (!SCREENS.includes(name)) name = 'main';
+  if (!SCREENS.includes(name) && !SUBSCREENS[name]) name = 'main';
   const changed = S.screen !== name;
   S.screen = name;
-  for (const n of SCREENS) {
-    $(`screen-${n}`).hidden = n !== name;
-    $(`nav-${n}`).setAttribute('aria-selected', String(n === name));
-  }
+  const tab = SUBSCREENS[name] || name;
+  for (const n of [...SCREENS, ...Object.keys(SUBSCREENS)]) $(`screen-${n}`).hidden = n !== name;
+  for (const n of SCREENS) $(`nav-${n}`).setAttribute('aria-selected', String(n === tab));
+  document.querySelectorAll('.sico').forEach((b) => b.classList.toggle('here', b.dataset.go === name));
   if (changed) window.scrollTo({ top: 0 });
   if (name === 'main') { drawTrend(true); }
   if (name === 'targets') loadTargets();
   if (name === 'sky') { loadSky(); drawSky(true); }
   if (name === 'setup' || name === 'antenna' || name === 'manual') loadConfig();
   if (name === 'antenna') drawTilt();
+  if (SUBSCREENS[name]) renderStationPage(name, true);
 }
 export function go(name) { if (location.hash === `#${name}`) show(name); else location.hash = name; }

@@ -42,7 +42,6 @@ function fillConfig(force) {
   const rows = [['rotctld (Hamlib, TCP)', addr(sv2.rotctld)], ['PstRotator (UDP)', addr(sv2.pstrotator)], ['Web console', addr(sv2.web)]];
   for (const s of Array.isArray(sv2.serial) ? sv2.serial : []) rows.push([`Serial ${s.protocol}`, `${s.device} · ${s.baud} Bd`]);
   $('servers').replaceChildren(...rows.map(([k, v]) => h('div', {}, h('span', { class: 'lbl', text: k }), h('span', { text: v }))));
-  setText('setup-clock', (S.state && S.state.clock && S.state.clock.source) || 'system');
   // control, offsets
   const ctl = c.control || {};
   field('window', ctl.window_deg, force); field('ramp', ctl.ramp_s, force); field('tracking-speed', ctl.tracking_speed, force);

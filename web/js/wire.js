@@ -11,6 +11,7 @@ import { go, SCREENS, show } from './navigation.js';
 import { loadSky } from './sky.js';
 import { parseAngle, radecHint, track } from './targets.js';
 import { clean, loadConfig, showOther } from './setup.js';
+import { wireStation } from './station.js';
 
 function confirmTwice(btn, label, fn) { // a second press within 4 s confirms
   if (btn.dataset.armed) { delete btn.dataset.armed; setText(btn, btn.dataset.label); fn(); return; }
@@ -23,6 +24,7 @@ export function wire() {
   window.addEventListener('hashchange', () => show(location.hash.slice(1)));
   $('target-pick').addEventListener('click', () => go('targets'));
   $('offset-btn').addEventListener('click', () => go('antenna'));
+  wireStation(go);
 
   // login
   $('login-form').addEventListener('submit', login);
