@@ -112,11 +112,13 @@ class StandInNetworkManager : public ::testing::Test {
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("azt-nm-" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    const std::string address = "unix:path=" + (dir_ / "bus").string();
+    address_ = "unix:path=" + (dir_ / "bus").string();
+    const std::string& address = address_;
     write(dir_ / "bus.conf",
           "<!DOCTYPE busconfig PUBLIC \"-//freedesktop//DTD D-Bus Bus Configuration 1.0//EN\"\n"
           " \"http://www.freedesktop.org/standards/dbus/1.0/busconfig.dtd\">\n"
-          "<busconfig><type>session</type><listen>" + address +
+          "<busconfig><type>session</type><listen>" +
+              address +
               "</listen><auth>EXTERNAL</auth><policy context=\"default\"><allow "
               "send_destination=\"*\"/><allow receive_sender=\"*\"/><allow "
               "own=\"*\"/></policy></busconfig>");
@@ -148,7 +150,7 @@ class StandInNetworkManager : public ::testing::Test {
 
   void start_network_manager() {
     nm_ = spawn({"/usr/bin/python3", AZT_SOURCE_DIR "/tests/data/network/fake_networkmanager.py",
-                 std::string(std::getenv("DBUS_SYSTEM_BUS_ADDRESS"))});
+                 address_});
   }
 
   /// Asks until NetworkManager answers (it takes a moment to start), at most 20 s.
@@ -162,6 +164,7 @@ class StandInNetworkManager : public ::testing::Test {
   }
 
   fs::path dir_;
+  std::string address_;
   pid_t bus_ = -1;
   pid_t nm_ = -1;
 };

@@ -16,11 +16,11 @@
 #include "azt/sim/station_sim.hpp"
 #include "config/config_choice.hpp"
 #include "config/gps_config.hpp"
-#include "config/time_config.hpp"
 #include "config/hardware_config.hpp"
 #include "config/mount_config.hpp"
 #include "config/sim_config.hpp"
 #include "config/sky_config.hpp"
+#include "config/time_config.hpp"
 
 namespace azt::app {
 

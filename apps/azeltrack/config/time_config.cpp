@@ -16,10 +16,11 @@ TimeConfig time_config_from(const ConfigFile& file) {
   c.rtc = s.text("rtc").value_or(c.rtc);
   c.manage_chrony = s.boolean("manage_chrony").value_or(false);
   c.sources_file = s.text("sources_file").value_or(c.sources_file);
-  if (c.sources_file.empty() || c.sources_file.front() != '/' ||
-      c.sources_file.size() < 9 || c.sources_file.substr(c.sources_file.size() - 8) != ".sources") {
-    s.fail("sources_file", "must be an absolute path ending in .sources (chrony's sourcedir reads "
-                           "only those)");
+  if (c.sources_file.empty() || c.sources_file.front() != '/' || c.sources_file.size() < 9 ||
+      c.sources_file.substr(c.sources_file.size() - 8) != ".sources") {
+    s.fail("sources_file",
+           "must be an absolute path ending in .sources (chrony's sourcedir reads "
+           "only those)");
   }
   return c;
 }

@@ -11,9 +11,9 @@ class ConfigFile;
 
 struct TimeConfig {
   std::string chronyc = "chronyc";  ///< the program that asks chronyd
-  std::string chrony_socket;        ///< chronyc -h (a command socket or host); "": chronyc's default
-  double poll_s = 5.0;              ///< how often the clock is checked
-  std::string rtc = "/dev/rtc0";    ///< the battery-backed clock whose presence is reported
+  std::string chrony_socket;      ///< chronyc -h (a command socket or host); "": chronyc's default
+  double poll_s = 5.0;            ///< how often the clock is checked
+  std::string rtc = "/dev/rtc0";  ///< the battery-backed clock whose presence is reported
   /// The console may write the upstream servers to `sources_file` and have chronyd reload them.
   bool manage_chrony = false;
   std::string sources_file = "/etc/chrony/sources.d/azeltrack.sources";

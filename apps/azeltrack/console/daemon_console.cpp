@@ -392,7 +392,7 @@ void DaemonConsole::act_time_servers(const json& body, ActDone done) {
   if (const auto checked = timekeeping::check_ntp_servers(servers); !checked) {
     throw ApiError(400, "servers", checked.error().message);
   }
-  p_.clock->set_servers(servers, [this, done = std::move(done)](Result<bool> r) {
+  p_.clock->set_servers(servers, [this, done = std::move(done)](const Result<bool>& r) {
     if (!r) {
       // Not managed here is "not now"; a file or chronyd that failed is the station's trouble.
       const bool off = r.error().message.find("manage_chrony is off") != std::string::npos;
@@ -490,6 +490,7 @@ void DaemonConsole::act_station(const json& body, ActDone done) {
       [this] {
         p_.config.sky = p_.store.config().sky;
         p_.sky.refollow();
+        if (p_.satellites != nullptr) p_.satellites->set_site(p_.config.sky.settings.observer);
         snapshot_.unix_s = -1.0;
         return json{{"station", config()["station"]}};
       },

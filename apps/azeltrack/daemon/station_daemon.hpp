@@ -25,8 +25,8 @@
 #include "daemon/tick_stats.hpp"
 #include "station/clock_watch.hpp"
 #include "station/gps_receiver.hpp"
-#include "station/network_watch.hpp"
 #include "station/guarded_antenna.hpp"
+#include "station/network_watch.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
 #include "station/sequencer_runner.hpp"
@@ -108,9 +108,9 @@ class StationDaemon {
   SatelliteTracker satellites_;
   RateLimitedLog log_;
   RecentEvents events_;
-  RecentEvents motions_;              ///< accepted motion commands, with their sources
-  std::unique_ptr<GpsReceiver> gps_;  ///< [gps]: gpsd, the GPS state and the site survey
-  std::unique_ptr<ClockWatch> clock_;  ///< [time]: is the clock to be trusted
+  RecentEvents motions_;                   ///< accepted motion commands, with their sources
+  std::unique_ptr<GpsReceiver> gps_;       ///< [gps]: gpsd, the GPS state and the site survey
+  std::unique_ptr<ClockWatch> clock_;      ///< [time]: is the clock to be trusted
   std::unique_ptr<NetworkWatch> network_;  ///< the links, for the console
   StationCommands commands_;
   StationService service_;

@@ -121,8 +121,8 @@ std::unique_ptr<ClockWatch> StationDaemon::make_clock_watch() {
           t, [this] { return now_s(); }, status_off_loop(),
           [probe](double at_s) { return linux_os::probe_clock(probe, at_s); },
           [probe, file = t.sources_file](const std::vector<std::string>& servers) -> Result<bool> {
-            auto written = linux_os::write_file_atomically(
-                file, timekeeping::chrony_sources_text(servers));
+            auto written =
+                linux_os::write_file_atomically(file, timekeeping::chrony_sources_text(servers));
             if (!written) return written.error();
             auto reloaded = linux_os::reload_chrony_sources(probe);
             if (!reloaded) return fail("saved in " + file + ", but " + reloaded.error().message);
@@ -154,6 +154,7 @@ void StationDaemon::adopt_site(const gnss::Site& site, std::function<void(bool)>
         for (const auto& notice : notices.value()) spdlog::warn("{}", notice);
         config_.sky = store_.config().sky;
         sky_.refollow();  // computed for the new place
+        satellites_.set_site(config_.sky.settings.observer);
         spdlog::info("gps: the station is at {:.6f} {:.6f} {:.1f} m (surveyed, saved)",
                      site.lat_deg, site.lon_deg, site.alt_m);
         done(true);

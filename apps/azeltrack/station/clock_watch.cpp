@@ -131,18 +131,18 @@ void ClockWatch::set_servers(const std::vector<std::string>& servers,
     return;
   }
   auto outcome = std::make_shared<Result<bool>>(fail("the write did not finish"));
-  p_.offload([outcome, apply = p_.apply_servers,
-              names = checked.value()] { *outcome = apply(names); },
-             [this, outcome, names = checked.value(), done = std::move(done)] {
-               if (*outcome) {
-                 std::string list;
-                 for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-                 p_.log("time: chrony's NTP servers set: " + (list.empty() ? "none" : list));
-                 servers_ = names;
-                 check_now();
-               }
-               done(*outcome);
-             });
+  p_.offload(
+      [outcome, apply = p_.apply_servers, names = checked.value()] { *outcome = apply(names); },
+      [this, outcome, names = checked.value(), done = std::move(done)] {
+        if (*outcome) {
+          std::string list;
+          for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+          p_.log("time: chrony's NTP servers set: " + (list.empty() ? "none" : list));
+          servers_ = names;
+          check_now();
+        }
+        done(*outcome);
+      });
 }
 
 }  // namespace azt::app

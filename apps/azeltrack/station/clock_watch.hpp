@@ -45,8 +45,7 @@ class ClockWatch {
   void check_now();
   /// The console's NTP servers. Refused (done with the error) unless [time] manage_chrony; the
   /// names are checked, written and reloaded off the loop; `done` runs on the loop.
-  void set_servers(const std::vector<std::string>& servers,
-                   std::function<void(Result<bool>)> done);
+  void set_servers(const std::vector<std::string>& servers, std::function<void(Result<bool>)> done);
 
  private:
   void arm();
@@ -56,7 +55,7 @@ class ClockWatch {
   ClockWatchParts p_;
   boost::asio::steady_timer timer_;
   std::optional<timekeeping::ClockReading> latest_;
-  std::vector<std::string> servers_;  ///< in the managed sources file at the last look
+  std::vector<std::string> servers_;          ///< in the managed sources file at the last look
   std::optional<std::string> logged_reason_;  ///< the verdict last logged ("" synced)
   bool checking_ = false;
 };

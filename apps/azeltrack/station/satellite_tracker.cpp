@@ -152,9 +152,18 @@ void SatelliteTracker::plan_next(double unix_s, double mount_az_deg) {
   planned_ = std::move(next);
 }
 
+void SatelliteTracker::set_site(const astro::Observer& site) {
+  s_.site = site;
+  for (auto& u : upcoming_) u.at_s = -1e9;
+  site_changed_ = true;
+  next_plan_s_ = -1e9;
+}
+
 control::Demand SatelliteTracker::demand(double unix_s, double mount_az_deg, control::AzEl& rate) {
   rate = control::AzEl{};
   if (planned_ && unix_s > planned_->pass.los_s) planned_.reset();
+  if (planned_ && site_changed_ && unix_s < planned_->pass.aos_s) planned_.reset();
+  if (!planned_) site_changed_ = false;
   if (!planned_) plan_next(unix_s, mount_az_deg);
   control::Demand d;
   if (!planned_) {

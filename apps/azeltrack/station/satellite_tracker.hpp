@@ -42,6 +42,11 @@ class SatelliteTracker {
   /// Starts following a satellite (name or NORAD number); the error names it.
   Result<std::string> follow(const std::string& name_or_norad, double unix_s, double mount_az_deg);
   void stop() { following_.reset(); }
+  /// The station's place changed (the console, or the GPS survey): every pass list is found
+  /// again, and the followed satellite's pass is planned again from the new place at the next
+  /// demand, unless a pass is under way: that one is finished as planned (a re-plan mid-pass
+  /// could choose the other wrap side and swing the antenna), and the next uses the new place.
+  void set_site(const astro::Observer& site);
   [[nodiscard]] bool following() const { return following_.has_value(); }
 
   /// The demand at `unix_s`: the planned mount position (pre-positioning before AOS), or
@@ -88,6 +93,7 @@ class SatelliteTracker {
   std::optional<Planned> planned_;
   double next_plan_s_ = -1e9;  ///< when to search again after finding no pass
   std::string problem_;        ///< why there is no plan (decayed, no pass in 48 h)
+  bool site_changed_ = false;  ///< the plan is from the old place: re-plan outside a pass
   struct Upcoming {
     double at_s = -1e9;
     nlohmann::json passes;  ///< null until first found

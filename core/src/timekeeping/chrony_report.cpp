@@ -30,7 +30,8 @@ std::vector<std::string_view> split_csv(std::string_view line) {
 /// The fields of one line, read one at a time; the first that does not parse is the error.
 class CsvFields {
  public:
-  CsvFields(std::string_view line, std::string what) : f_(split_csv(line)), what_(std::move(what)) {}
+  CsvFields(std::string_view line, std::string what)
+      : f_(split_csv(line)), what_(std::move(what)) {}
 
   [[nodiscard]] std::size_t size() const { return f_.size(); }
   [[nodiscard]] std::string text(std::size_t i) const { return std::string(f_[i]); }
@@ -70,8 +71,8 @@ class CsvFields {
 Result<ChronySource> parse_source(std::string_view line, std::size_t number) {
   CsvFields f(line, "chronyc sources line " + std::to_string(number));
   if (f.size() != kSourcesFields) {
-    return fail("chronyc sources line " + std::to_string(number) + ": " +
-                std::to_string(f.size()) + " fields, expected " + std::to_string(kSourcesFields));
+    return fail("chronyc sources line " + std::to_string(number) + ": " + std::to_string(f.size()) +
+                " fields, expected " + std::to_string(kSourcesFields));
   }
   ChronySource s;
   s.mode = f.symbol(0, "mode");

@@ -46,8 +46,8 @@ bool valid_ipv6(std::string_view text) {
 }
 
 bool is_pool(std::string_view name) {
-  constexpr std::string_view pool = "pool.ntp.org";
-  return name.size() >= pool.size() && name.substr(name.size() - pool.size()) == pool;
+  constexpr std::string_view kPool = "pool.ntp.org";
+  return name.size() >= kPool.size() && name.substr(name.size() - kPool.size()) == kPool;
 }
 
 /// "server NAME …" / "pool NAME …" -> NAME; "" for any other line.

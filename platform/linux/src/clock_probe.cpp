@@ -27,8 +27,8 @@ std::string complaint(const CommandOutput& out) {
 
 /// `chronyc -c -n -m tracking sources`: one tracking line, then one line per source.
 void read_chrony(const ClockProbeConfig& config, timekeeping::ClockReading& reading) {
-  const auto run = run_command(
-      chronyc_argv(config, {"-c", "-n", "-m", "tracking", "sources"}), {config.timeout_s});
+  const auto run = run_command(chronyc_argv(config, {"-c", "-n", "-m", "tracking", "sources"}),
+                               {config.timeout_s});
   if (!run) {
     reading.chrony_error = run.error().message;
     return;
@@ -47,8 +47,10 @@ void read_chrony(const ClockProbeConfig& config, timekeeping::ClockReading& read
   reading.tracking = std::move(tracking).value();
   auto sources = timekeeping::parse_chrony_sources(
       newline == std::string::npos ? "" : std::string_view(text).substr(newline + 1));
-  if (sources) reading.sources = std::move(sources).value();
-  else reading.chrony_error = sources.error().message;
+  if (sources)
+    reading.sources = std::move(sources).value();
+  else
+    reading.chrony_error = sources.error().message;
 }
 
 }  // namespace

@@ -28,7 +28,8 @@ struct Pipe {
 
 Result<Pipe> make_pipe() {
   std::array<int, 2> fds{};
-  if (::pipe2(fds.data(), O_CLOEXEC) != 0) return fail(std::string("pipe: ") + std::strerror(errno));
+  if (::pipe2(fds.data(), O_CLOEXEC) != 0)
+    return fail(std::string("pipe: ") + std::strerror(errno));
   return Pipe{UniqueFd(fds[0]), UniqueFd(fds[1])};
 }
 
@@ -85,11 +86,13 @@ Result<CommandOutput> run_command(const std::vector<std::string>& argv, CommandL
   out.value().write.reset();  // only the child writes now: end of stream when it exits
   err.value().write.reset();
   CommandOutput result;
-  std::array<pollfd, 2> fds{{{out.value().read.get(), POLLIN, 0}, {err.value().read.get(), POLLIN, 0}}};
+  std::array<pollfd, 2> fds{
+      {{out.value().read.get(), POLLIN, 0}, {err.value().read.get(), POLLIN, 0}}};
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(limits.timeout_s));
   while (fds[0].fd >= 0 || fds[1].fd >= 0) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
     if (left.count() <= 0) {
       ::kill(pid.value(), SIGKILL);
       wait_for(pid.value());

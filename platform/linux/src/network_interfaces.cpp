@@ -44,7 +44,7 @@ LinkKind kind_of(const fs::path& dir, int type) {
   std::error_code ec;
   if (fs::exists(dir / "wireless", ec) || fs::exists(dir / "phy80211", ec)) return LinkKind::Wifi;
   return type == kArphrdEther && fs::exists(dir / "device", ec) ? LinkKind::Ethernet
-                                                                 : LinkKind::Other;
+                                                                : LinkKind::Other;
 }
 
 /// /proc/net/wireless: "  wlan0: 0000   54.  -56.  -256   0 0 0 0 0 0" (level in dBm).

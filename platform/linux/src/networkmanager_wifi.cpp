@@ -37,8 +37,8 @@ struct Message {
 std::optional<std::vector<std::string>> device_paths(sd_bus* bus) {
   sd_bus_error error = SD_BUS_ERROR_NULL;
   Message reply;
-  const int r = sd_bus_call_method(bus, kService, kRoot, kService, "GetDevices", &error, &reply.m,
-                                   "");
+  const int r =
+      sd_bus_call_method(bus, kService, kRoot, kService, "GetDevices", &error, &reply.m, "");
   sd_bus_error_free(&error);
   if (r < 0 || sd_bus_message_enter_container(reply.m, 'a', "o") < 0) return std::nullopt;
   std::vector<std::string> paths;
@@ -50,11 +50,12 @@ std::optional<std::vector<std::string>> device_paths(sd_bus* bus) {
 /// A property of a plain type ("u", "y"), or a string ("s", "o") copied out before the reply
 /// that holds it is freed.
 template <typename T>
-std::optional<T> property(sd_bus* bus, const std::string& path, const char* iface,
-                          const char* name, const char* type) {
+std::optional<T> property(sd_bus* bus, const std::string& path, const char* iface, const char* name,
+                          const char* type) {
   sd_bus_error error = SD_BUS_ERROR_NULL;
   Message reply;
-  const int r = sd_bus_get_property(bus, kService, path.c_str(), iface, name, &error, &reply.m, type);
+  const int r =
+      sd_bus_get_property(bus, kService, path.c_str(), iface, name, &error, &reply.m, type);
   sd_bus_error_free(&error);
   if (r < 0) return std::nullopt;
   if constexpr (std::is_same_v<T, std::string>) {
@@ -71,8 +72,8 @@ std::optional<T> property(sd_bus* bus, const std::string& path, const char* ifac
 std::optional<std::string> ssid_of(sd_bus* bus, const std::string& ap) {
   sd_bus_error error = SD_BUS_ERROR_NULL;
   Message reply;
-  const int r = sd_bus_get_property(bus, kService, ap.c_str(), kAccessPoint, "Ssid", &error,
-                                    &reply.m, "ay");
+  const int r =
+      sd_bus_get_property(bus, kService, ap.c_str(), kAccessPoint, "Ssid", &error, &reply.m, "ay");
   sd_bus_error_free(&error);
   const void* bytes = nullptr;
   std::size_t size = 0;

@@ -123,7 +123,7 @@ TEST_F(ClockWatchTest, AReadingThatStopsComingGoesStale) {
 
 TEST_F(ClockWatchTest, ServersAreRefusedUnlessManaged) {
   std::optional<Result<bool>> outcome;
-  watch(false).set_servers({"a.example"}, [&](Result<bool> r) { outcome = r; });
+  watch(false).set_servers({"a.example"}, [&](const Result<bool>& r) { outcome = r; });
   ASSERT_TRUE(outcome.has_value());
   ASSERT_FALSE(*outcome);
   EXPECT_NE(outcome->error().message.find("manage_chrony is off"), std::string::npos);
@@ -133,11 +133,12 @@ TEST_F(ClockWatchTest, ServersAreRefusedUnlessManaged) {
 TEST_F(ClockWatchTest, ManagedServersAreCheckedAppliedAndReadBack) {
   ClockWatch& w = watch(true);
   std::optional<Result<bool>> outcome;
-  w.set_servers({"a.example\nallow all"}, [&](Result<bool> r) { outcome = r; });
+  w.set_servers({"a.example\nallow all"}, [&](const Result<bool>& r) { outcome = r; });
   ASSERT_TRUE(outcome && !*outcome) << "a directive smuggled in a name is refused";
   EXPECT_TRUE(file_.empty());
   const int before = probes_;
-  w.set_servers({"192.168.1.10", "europe.pool.ntp.org"}, [&](Result<bool> r) { outcome = r; });
+  w.set_servers({"192.168.1.10", "europe.pool.ntp.org"},
+                [&](const Result<bool>& r) { outcome = r; });
   ASSERT_TRUE(outcome && *outcome);
   EXPECT_EQ(file_, (std::vector<std::string>{"192.168.1.10", "europe.pool.ntp.org"}));
   EXPECT_EQ(probes_, before + 1) << "chrony is looked at again at once";
@@ -145,7 +146,7 @@ TEST_F(ClockWatchTest, ManagedServersAreCheckedAppliedAndReadBack) {
   EXPECT_EQ(j["managed"], true);
   EXPECT_EQ(j["servers"], nlohmann::json({"192.168.1.10", "europe.pool.ntp.org"}));
   apply_ok_ = false;
-  w.set_servers({"b.example"}, [&](Result<bool> r) { outcome = r; });
+  w.set_servers({"b.example"}, [&](const Result<bool>& r) { outcome = r; });
   ASSERT_TRUE(outcome && !*outcome);
   EXPECT_EQ(outcome->error().message, "chronyd said no");
   EXPECT_EQ(w.to_json()["servers"], nlohmann::json({"192.168.1.10", "europe.pool.ntp.org"}));

@@ -90,8 +90,8 @@ TEST(ChronySources, NoSourcesIsAnEmptyList) {
 }
 
 TEST(ChronySources, AnUnreadableLineIsNamed) {
-  const auto wrong_count = parse_chrony_sources(
-      "#,*,GPS,0,2,377,3,0,0,0\n^,+,a.example,2,6,17,1,0,0\n");
+  const auto wrong_count =
+      parse_chrony_sources("#,*,GPS,0,2,377,3,0,0,0\n^,+,a.example,2,6,17,1,0,0\n");
   ASSERT_FALSE(wrong_count);
   EXPECT_NE(wrong_count.error().message.find("line 2"), std::string::npos);
   const auto bad_reach = parse_chrony_sources("#,*,GPS,0,2,389,3,0,0,0\n");  // 9 is not octal

@@ -15,9 +15,9 @@ namespace azt::timekeeping {
 
 /// `chronyc -c tracking`: the reference the system clock follows and how well.
 struct ChronyTracking {
-  std::string ref_id_hex;    ///< "47505300" for a refclock with refid GPS
-  std::string ref_name;      ///< the source's name or address; the refid's text for a refclock
-  int stratum = 0;           ///< 0 before any source has been selected
+  std::string ref_id_hex;        ///< "47505300" for a refclock with refid GPS
+  std::string ref_name;          ///< the source's name or address; the refid's text for a refclock
+  int stratum = 0;               ///< 0 before any source has been selected
   double ref_time_unix_s = 0.0;  ///< when the reference was last updated (0: never)
   /// The system clock minus true time now, in seconds (positive: fast). chronyc's "System
   /// time" is the correction still to apply, the opposite sign.
@@ -41,8 +41,8 @@ struct ChronySource {
                      ///< ticker, '~' too variable
   std::string name;  ///< address, or a refclock's refid
   int stratum = 0;
-  int poll_log2_s = 0;  ///< the polling interval is 2^poll seconds
-  int reach = 0;        ///< the last eight polls as bits (chronyc prints octal)
+  int poll_log2_s = 0;              ///< the polling interval is 2^poll seconds
+  int reach = 0;                    ///< the last eight polls as bits (chronyc prints octal)
   std::optional<double> last_rx_s;  ///< seconds since the last sample; none: never
   double offset_s = 0.0;            ///< the adjusted offset of the last sample
   double measured_offset_s = 0.0;

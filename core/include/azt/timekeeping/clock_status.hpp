@@ -15,9 +15,9 @@ namespace azt::timekeeping {
 
 /// One look at the clock.
 struct ClockReading {
-  double read_at_s = 0.0;                 ///< the caller's monotonic clock when it was taken
+  double read_at_s = 0.0;                  ///< the caller's monotonic clock when it was taken
   std::optional<ChronyTracking> tracking;  ///< none: chronyd did not answer
-  std::string chrony_error;               ///< why there is no tracking report
+  std::string chrony_error;                ///< why there is no tracking report
   std::vector<ChronySource> sources;
   std::optional<bool> kernel_synced;  ///< adjtimex's verdict (none: not asked or not known)
   bool rtc_present = false;           ///< a battery-backed clock to hold time across power cuts

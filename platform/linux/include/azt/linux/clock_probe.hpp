@@ -12,8 +12,8 @@
 namespace azt::linux_os {
 
 struct ClockProbeConfig {
-  std::string chronyc = "chronyc";    ///< the program
-  std::string chrony_host;            ///< chronyc -h: a command socket path or a host ("": its default)
+  std::string chronyc = "chronyc";  ///< the program
+  std::string chrony_host;  ///< chronyc -h: a command socket path or a host ("": its default)
   double timeout_s = 5.0;
   std::string rtc_device = "/dev/rtc0";
 };

@@ -12,14 +12,14 @@
 namespace azt::linux_os {
 
 struct CommandOutput {
-  int exit_code = 0;   ///< the program's exit status (128 + N when signal N ended it)
-  std::string out;     ///< standard output, cut at the byte limit
-  std::string err;     ///< standard error, cut at the byte limit
+  int exit_code = 0;  ///< the program's exit status (128 + N when signal N ended it)
+  std::string out;    ///< standard output, cut at the byte limit
+  std::string err;    ///< standard error, cut at the byte limit
 };
 
 struct CommandLimits {
-  double timeout_s = 5.0;                ///< then the program is killed and this is an error
-  std::size_t max_bytes = 64 * 1024;     ///< per stream; the rest is read and thrown away
+  double timeout_s = 5.0;             ///< then the program is killed and this is an error
+  std::size_t max_bytes = 64 * 1024;  ///< per stream; the rest is read and thrown away
 };
 
 /// Runs argv[0] (looked up in PATH) with `argv`. An error when it cannot be started or does not

@@ -1,0 +1,77 @@
+// The station moved (the console's grid, or the GPS survey) while a satellite is followed: the
+// pass is planned again from the new place, except during a pass, which is finished as planned
+// (a re-plan could swing the antenna to the other wrap side mid-pass).
+#include "station/satellite_tracker.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "azt/astro/time_scales.hpp"
+
+namespace azt::app {
+namespace {
+
+constexpr double kEpochUnixS = 1709296200.0;  // 2024-03-01 12:30 UTC, the element set's epoch
+
+SatelliteTracker iss_tracker(const astro::Observer& site) {
+  SatelliteSettings s;
+  s.file = AZT_TEST_DATA_DIR "/sat/iss_2024.tle";
+  s.site = site;
+  SatelliteTracker t(s, [](const std::string&) {});
+  t.poll_file(kEpochUnixS);
+  return t;
+}
+
+std::string aos(SatelliteTracker& t, double unix_s) {
+  control::AzEl rate;
+  (void)t.demand(unix_s, 0.0, rate);
+  const auto st = t.status(unix_s);
+  return st.contains("aos") ? st["aos"].get<std::string>() : "none";
+}
+
+double unix_of(const nlohmann::json& iso) {
+  constexpr double kUnixEpochMjd = 40587.0;
+  return (astro::parse_iso8601_utc(iso.get<std::string>())->mjd() - kUnixEpochMjd) * 86400.0;
+}
+
+const astro::Observer kFn06{46.18958, -79.39375, 301.0};
+const astro::Observer kSydney{-33.8688, 151.2093, 50.0};
+
+TEST(SatelliteTrackerSite, ANewPlaceIsPlannedFromBeforeThePass) {
+  SatelliteTracker t = iss_tracker(kFn06);
+  ASSERT_TRUE(t.follow("25544", kEpochUnixS, 0.0));
+  const std::string here = aos(t, kEpochUnixS);
+  ASSERT_NE(here, "none");
+  t.set_site(kSydney);
+  const std::string there = aos(t, kEpochUnixS + 1.0);
+  EXPECT_NE(there, "none");
+  EXPECT_NE(there, here) << "the ISS rises at another time over Sydney";
+  EXPECT_EQ(t.status(kEpochUnixS + 1.0)["phase"], "waiting for AOS");
+}
+
+TEST(SatelliteTrackerSite, APassUnderWayIsFinishedAsPlanned) {
+  SatelliteTracker t = iss_tracker(kFn06);
+  ASSERT_TRUE(t.follow("25544", kEpochUnixS, 0.0));
+  (void)aos(t, kEpochUnixS);
+  // Into the pass: a minute after AOS.
+  const auto first = t.status(kEpochUnixS);
+  const double aos_s = unix_of(first["aos"]);
+  const double los_s = unix_of(first["los"]);
+  const double mid = aos_s + 60.0;
+  ASSERT_EQ(aos(t, mid), first["aos"]);
+  ASSERT_EQ(t.status(mid)["phase"], "tracking");
+  t.set_site(kSydney);
+  EXPECT_EQ(aos(t, mid + 1.0), first["aos"]) << "the pass under way keeps its plan";
+  EXPECT_EQ(t.status(mid + 1.0)["phase"], "tracking");
+  // After LOS the next pass is planned from Sydney: it differs from FN06's next.
+  SatelliteTracker home = iss_tracker(kFn06);
+  ASSERT_TRUE(home.follow("25544", los_s + 10.0, 0.0));
+  const std::string next_here = aos(home, los_s + 10.0);
+  const std::string next_there = aos(t, los_s + 10.0);
+  EXPECT_NE(next_there, first["aos"].get<std::string>());
+  EXPECT_NE(next_there, next_here);
+}
+
+}  // namespace
+}  // namespace azt::app
