@@ -8,7 +8,8 @@ position surveyed from a held fix and saved, and a jump while tracking refused.
     within 1 m of the log's mean, and saves it as [station] lat_deg/lon_deg/alt_m
  3  the log ends (the receiver stops talking): no_fix; gpsd killed: no_gpsd, the daemon runs on
  4  a log with no fix, then a 2D fix, then garbage lines between good fixes: no_fix, fix2d, fix3d
- 5  a position jump of 500 m while tracking: not adopted, shown in jump_refused
+ 5  a position jump of 500 m while tracking: not adopted, shown in jump_refused; gpsd killed
+    and restarted while tracking: no_gpsd, the Moon still tracked, gpsd found again
 
 Usage: gps_test.py AZELTRACK"""
 import atexit
@@ -180,6 +181,13 @@ refused = gps(base)["jump_refused"]
 check(distance_m(refused["lat_deg"], refused["lon_deg"], *jump["after"][:2]) < 5,
       f"5: the refused site is the second half's: {refused}")
 check("while tracking" in open(log, encoding="utf-8").read(), "5: the jump is logged")
+stop(fake)  # gpsd killed mid-run while tracking: the GPS is gone, the tracking is not
+check(until_state(base, "no_gpsd", 10), f"5: no_gpsd after gpsd was killed: {gps(base)}")
+state = http_json(base, "GET", "/api/state")[1]
+check(state["mode"] == "TRACK" and state["target"]["name"].lower() == "moon",
+      f"5: the Moon is still tracked without gpsd: {state['mode']} {state['target']}")
+fake = gpsfake(GPSD2, "good_fix")
+check(until_state(base, "no_fix", 10), f"5: gpsd back: found again: {gps(base)}")
 stop(fake)
 
 sys.exit(check.summary("gps"))
