@@ -4,6 +4,7 @@
 import { $, h, setText, sv } from './dom.js';
 import { fix, fmtLatLon, isNum, pad } from './format.js';
 import { loadJSON } from './api.js';
+import { drawPolarGrid, polarXY } from './polar.js';
 
 const STATES = {
   off: 'off', no_gpsd: 'gpsd not reachable', no_fix: 'no fix', fix2d: '2D fix', fix3d: '3D fix',
@@ -77,22 +78,10 @@ export function renderGps(g, force) {
   drawSats(Array.isArray(g.satellites) ? g.satellites : []);
 }
 
-function proj(az, el) {
-  const r = (100 * (90 - Math.min(90, Math.max(0, el)))) / 90; const a = (az * Math.PI) / 180;
-  return [r * Math.sin(a), -r * Math.cos(a)];
-}
 let marks = null;
 function drawStatic() {
   const svg = $('gps-sky');
-  svg.append(sv('circle', { class: 'horizon', r: 100 }));
-  for (const el of [30, 60]) {
-    const r = (100 * (90 - el)) / 90;
-    svg.append(sv('circle', { class: 'gl', r }), sv('text', { class: 'ringl', x: 1.5, y: -r - 1.5 }, `${el}°`));
-  }
-  svg.append(sv('line', { class: 'gl', x1: -100, x2: 100, y1: 0, y2: 0 }), sv('line', { class: 'gl', y1: -100, y2: 100, x1: 0, x2: 0 }));
-  for (const [t, x, y] of [['N', 0, -109], ['E', 110, 0], ['S', 0, 110], ['W', -110, 0]]) {
-    svg.append(sv('text', { class: 'card-l', x, y, 'text-anchor': 'middle', 'dominant-baseline': 'middle' }, t));
-  }
+  drawPolarGrid(svg);
   marks = sv('g', { id: 'gps-sats-marks' });
   svg.append(marks);
 }
@@ -102,7 +91,7 @@ function drawSats(list) {
   const out = [];
   for (const s of list) {
     if (!isNum(s.az_deg) || !isNum(s.el_deg)) continue;
-    const [x, y] = proj(s.az_deg, s.el_deg);
+    const [x, y] = polarXY(s.az_deg, s.el_deg);
     const snr = isNum(s.snr_dbhz) ? s.snr_dbhz : 0;
     const g = sv('g', { class: `gsat${s.used ? ' used' : ''}`, 'data-prn': s.prn, transform: `translate(${x.toFixed(1)} ${y.toFixed(1)})` });
     g.append(sv('circle', { r: (3 + Math.min(50, Math.max(0, snr)) / 10).toFixed(1) }),

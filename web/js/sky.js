@@ -4,23 +4,12 @@ import { S } from './state.js';
 import { $, h, setText, sv } from './dom.js';
 import { deg, isNum, pad, sameName } from './format.js';
 import { loadJSON } from './api.js';
+import { drawPolarGrid, polarXY } from './polar.js';
 
 let skyEls = null;
-function proj(az, el) {
-  const r = (100 * (90 - Math.max(0, el))) / 90; const a = (az * Math.PI) / 180;
-  return [r * Math.sin(a), -r * Math.cos(a)];
-}
 function drawSkyStatic() {
   const svg = $('sky-plot');
-  svg.append(sv('circle', { class: 'horizon', r: 100 }));
-  for (const el of [30, 60]) {
-    const r = (100 * (90 - el)) / 90;
-    svg.append(sv('circle', { class: 'gl', r }), sv('text', { class: 'ringl', x: 1.5, y: -r - 1.5 }, `${el}°`));
-  }
-  svg.append(sv('line', { class: 'gl', x1: -100, x2: 100, y1: 0, y2: 0 }), sv('line', { class: 'gl', y1: -100, y2: 100, x1: 0, x2: 0 }));
-  for (const [t, x, y] of [['N', 0, -109], ['E', 110, 0], ['S', 0, 110], ['W', -110, 0]]) {
-    svg.append(sv('text', { class: 'card-l', x, y, 'text-anchor': 'middle', 'dominant-baseline': 'middle' }, t));
-  }
+  drawPolarGrid(svg);
   skyEls = { paths: sv('g'), srcs: sv('g'), bodies: sv('g'), marks: sv('g') };
   svg.append(skyEls.paths, skyEls.srcs, skyEls.bodies, skyEls.marks);
   skyEls.sun = sv('g', { class: 'sunm', id: 'sky-sun' }); skyEls.sun.append(sv('circle', { r: 5.5 }), sv('text', { class: 'bodyl', x: 11, y: 3 }, 'Sun'));
@@ -37,7 +26,7 @@ function drawSkyStatic() {
 function place(g, az, el) {
   const ok = isNum(az) && isNum(el) && el >= -0.5;
   g.style.display = ok ? '' : 'none';
-  if (ok) { const [x, y] = proj(az, el); g.setAttribute('transform', `translate(${x.toFixed(2)} ${y.toFixed(2)})`); }
+  if (ok) { const [x, y] = polarXY(az, el); g.setAttribute('transform', `translate(${x.toFixed(2)} ${y.toFixed(2)})`); }
 }
 function drawSkyPaths() {
   if (!skyEls) drawSkyStatic();
@@ -48,7 +37,7 @@ function drawSkyPaths() {
     let d = ''; let up = false;
     list.forEach((p, i) => {
       if (!isNum(p.el_deg) || p.el_deg < 0) { up = false; return; }
-      const [x, y] = proj(p.az_deg, p.el_deg);
+      const [x, y] = polarXY(p.az_deg, p.el_deg);
       d += `${up ? 'L' : 'M'}${x.toFixed(1)} ${y.toFixed(1)}`; up = true;
       if (labels && i % 6 === 0 && i > 0) {
         const dt = new Date(p.utc);
@@ -62,7 +51,7 @@ function drawSkyPaths() {
     let d = ''; let up = false;
     for (const p of sky.pass_path) {
       if (!isNum(p.el_deg) || p.el_deg < 0) { up = false; continue; }
-      const [x, y] = proj(p.az_deg, p.el_deg);
+      const [x, y] = polarXY(p.az_deg, p.el_deg);
       d += `${up ? 'L' : 'M'}${x.toFixed(1)} ${y.toFixed(1)}`; up = true;
     }
     out.push(sv('path', { class: 'ppath', d, id: 'sky-pass-path' }));
@@ -71,7 +60,7 @@ function drawSkyPaths() {
   const srcs = [];
   for (const o of (Array.isArray(sky.now) ? sky.now : [])) {
     if (o.kind !== 'source' || !isNum(o.el_deg) || o.el_deg < 0) continue;
-    const [x, y] = proj(o.az_deg, o.el_deg);
+    const [x, y] = polarXY(o.az_deg, o.el_deg);
     const g = sv('g', { transform: `translate(${x.toFixed(1)} ${y.toFixed(1)})` });
     g.append(sv('circle', { class: 'src', r: 2.2 }), sv('text', { class: 'srcl', x: 3.5, y: 2.5 }, String(o.name)), sv('title', {}, String(o.name)));
     srcs.push(g);

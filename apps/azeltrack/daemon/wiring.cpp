@@ -119,7 +119,7 @@ std::unique_ptr<ClockWatch> StationDaemon::make_clock_watch() {
       io_,
       ClockWatchParts{
           t, [this] { return now_s(); }, status_off_loop(),
-          [probe](double at_s) { return linux_os::probe_clock(probe, at_s); },
+          [probe] { return linux_os::probe_clock(probe); },
           [probe, file = t.sources_file](const std::vector<std::string>& servers) -> Result<bool> {
             auto written =
                 linux_os::write_file_atomically(file, timekeeping::chrony_sources_text(servers));

@@ -1,6 +1,5 @@
 #include "station/clock_watch.hpp"
 
-#include <chrono>
 #include <memory>
 #include <utility>
 
@@ -42,9 +41,14 @@ json tracking_json(const timekeeping::ChronyTracking& t) {
 }  // namespace
 
 ClockWatch::ClockWatch(boost::asio::io_context& io, ClockWatchParts parts)
-    : p_(std::move(parts)), timer_(io) {
-  check_now();
-  arm();
+    : p_(std::move(parts)),
+      looks_(
+          io, p_.config.poll_s, p_.offload,
+          [probe = p_.probe, read = p_.read_servers, managed = p_.config.manage_chrony] {
+            return Look{probe(), managed ? read() : std::vector<std::string>{}};
+          },
+          [this](Look look) { on_look(std::move(look)); }) {
+  looks_.start();
 }
 
 double ClockWatch::stale_after_s() const {
@@ -53,36 +57,12 @@ double ClockWatch::stale_after_s() const {
   return 3.0 * p_.config.poll_s + kProbeTimeoutS;
 }
 
-void ClockWatch::arm() {
-  timer_.expires_after(std::chrono::duration_cast<boost::asio::steady_timer::duration>(
-      std::chrono::duration<double>(p_.config.poll_s)));
-  timer_.async_wait([this](const boost::system::error_code& ec) {
-    if (ec) return;
-    check_now();
-    arm();
-  });
-}
+void ClockWatch::check_now() { looks_.now(); }
 
-void ClockWatch::check_now() {
-  if (checking_) return;
-  checking_ = true;
-  auto reading = std::make_shared<timekeeping::ClockReading>();
-  auto servers = std::make_shared<std::vector<std::string>>();
-  p_.offload(
-      [reading, servers, probe = p_.probe, read = p_.read_servers,
-       managed = p_.config.manage_chrony, at = p_.monotonic_s()] {
-        *reading = probe(at);
-        if (managed) *servers = read();
-      },
-      [this, reading, servers] {
-        checking_ = false;
-        on_reading(std::move(*reading), std::move(*servers));
-      });
-}
-
-void ClockWatch::on_reading(timekeeping::ClockReading reading, std::vector<std::string> servers) {
-  latest_ = std::move(reading);
-  servers_ = std::move(servers);
+void ClockWatch::on_look(Look look) {
+  look.reading.read_at_s = p_.monotonic_s();
+  latest_ = std::move(look.reading);
+  servers_ = std::move(look.servers);
   const auto status = timekeeping::assess_clock(latest_, p_.monotonic_s(), stale_after_s());
   if (logged_reason_ == status.reason) return;
   logged_reason_ = status.reason;

@@ -16,6 +16,7 @@
 #include "azt/timekeeping/clock_status.hpp"
 #include "azt/util/result.hpp"
 #include "common/off_loop.hpp"
+#include "common/periodic_look.hpp"
 #include "config/time_config.hpp"
 
 namespace azt::app {
@@ -25,7 +26,7 @@ struct ClockWatchParts {
   std::function<double()> monotonic_s;
   Offload offload;  ///< where the probes and the writes run (a worker thread of their own)
   /// One look at the clock, on the worker (linux_os::probe_clock in the daemon).
-  std::function<timekeeping::ClockReading(double read_at_s)> probe;
+  std::function<timekeeping::ClockReading()> probe;
   /// The managed servers written to the sources file and reloaded by chronyd, on the worker.
   std::function<Result<bool>(const std::vector<std::string>&)> apply_servers;
   /// The servers in the managed sources file now (none: no file), on the worker.
@@ -48,16 +49,19 @@ class ClockWatch {
   void set_servers(const std::vector<std::string>& servers, std::function<void(Result<bool>)> done);
 
  private:
-  void arm();
-  void on_reading(timekeeping::ClockReading reading, std::vector<std::string> servers);
+  /// What one look brings back: the clock, and the managed servers.
+  struct Look {
+    timekeeping::ClockReading reading;
+    std::vector<std::string> servers;  ///< in the managed sources file
+  };
+  void on_look(Look look);
   [[nodiscard]] double stale_after_s() const;
 
   ClockWatchParts p_;
-  boost::asio::steady_timer timer_;
+  PeriodicLook<Look> looks_;
   std::optional<timekeeping::ClockReading> latest_;
   std::vector<std::string> servers_;          ///< in the managed sources file at the last look
   std::optional<std::string> logged_reason_;  ///< the verdict last logged ("" synced)
-  bool checking_ = false;
 };
 
 }  // namespace azt::app

@@ -1,7 +1,5 @@
 #include "station/network_watch.hpp"
 
-#include <chrono>
-#include <memory>
 #include <utility>
 
 #include "azt/linux/networkmanager_wifi.hpp"
@@ -52,31 +50,13 @@ NetworkReading read_network_reading(const linux_os::NetworkPaths& paths) {
 }
 
 NetworkWatch::NetworkWatch(boost::asio::io_context& io, NetworkWatchParts parts)
-    : p_(std::move(parts)), timer_(io) {
-  check_now();
-  arm();
+    : p_(std::move(parts)), looks_(io, p_.poll_s, p_.offload, p_.probe, [this](NetworkReading r) {
+        on_reading(std::move(r));
+      }) {
+  looks_.start();
 }
 
-void NetworkWatch::arm() {
-  timer_.expires_after(std::chrono::duration_cast<boost::asio::steady_timer::duration>(
-      std::chrono::duration<double>(p_.poll_s)));
-  timer_.async_wait([this](const boost::system::error_code& ec) {
-    if (ec) return;
-    check_now();
-    arm();
-  });
-}
-
-void NetworkWatch::check_now() {
-  if (checking_) return;
-  checking_ = true;
-  auto reading = std::make_shared<NetworkReading>();
-  p_.offload([reading, probe = p_.probe] { *reading = probe(); },
-             [this, reading] {
-               checking_ = false;
-               on_reading(std::move(*reading));
-             });
-}
+void NetworkWatch::check_now() { looks_.now(); }
 
 void NetworkWatch::on_reading(NetworkReading reading) {
   for (const auto& n : reading.interfaces) {

@@ -15,6 +15,7 @@
 #include "azt/linux/asio.hpp"
 #include "azt/linux/network_interfaces.hpp"
 #include "common/off_loop.hpp"
+#include "common/periodic_look.hpp"
 
 namespace azt::app {
 
@@ -44,14 +45,12 @@ class NetworkWatch {
   void check_now();
 
  private:
-  void arm();
   void on_reading(NetworkReading reading);
 
   NetworkWatchParts p_;
-  boost::asio::steady_timer timer_;
+  PeriodicLook<NetworkReading> looks_;
   std::optional<NetworkReading> latest_;
   std::map<std::string, bool> logged_up_;  ///< each interface's link as last logged
-  bool checking_ = false;
 };
 
 }  // namespace azt::app

@@ -55,9 +55,8 @@ void read_chrony(const ClockProbeConfig& config, timekeeping::ClockReading& read
 
 }  // namespace
 
-timekeeping::ClockReading probe_clock(const ClockProbeConfig& config, double read_at_s) {
+timekeeping::ClockReading probe_clock(const ClockProbeConfig& config) {
   timekeeping::ClockReading reading;
-  reading.read_at_s = read_at_s;
   read_chrony(config, reading);
   if (const auto kernel = read_kernel_clock()) reading.kernel_synced = kernel.value().synchronised;
   reading.rtc_present = rtc_present(config.rtc_device);

@@ -29,11 +29,9 @@ class ClockWatchTest : public ::testing::Test {
     config.poll_s = 5.0;
     config.manage_chrony = managed;
     watch_.emplace(io_, ClockWatchParts{config, [this] { return now_s_; }, run_inline,
-                                        [this](double at_s) {
+                                        [this] {
                                           ++probes_;
-                                          auto r = reading_;
-                                          r.read_at_s = at_s;
-                                          return r;
+                                          return reading_;
                                         },
                                         [this](const std::vector<std::string>& s) -> Result<bool> {
                                           if (!apply_ok_) return fail("chronyd said no");

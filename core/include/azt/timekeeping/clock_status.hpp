@@ -15,7 +15,7 @@ namespace azt::timekeeping {
 
 /// One look at the clock.
 struct ClockReading {
-  double read_at_s = 0.0;                  ///< the caller's monotonic clock when it was taken
+  double read_at_s = 0.0;                  ///< the caller's monotonic clock when it came back
   std::optional<ChronyTracking> tracking;  ///< none: chronyd did not answer
   std::string chrony_error;                ///< why there is no tracking report
   std::vector<ChronySource> sources;

@@ -18,9 +18,9 @@ struct ClockProbeConfig {
   std::string rtc_device = "/dev/rtc0";
 };
 
-/// Reads the clock now; `read_at_s` is the caller's monotonic time, stored in the reading.
-/// chronyd not answering is a reading (with chrony_error), not a failure.
-timekeeping::ClockReading probe_clock(const ClockProbeConfig& config, double read_at_s);
+/// Reads the clock now (the caller stamps read_at_s on its own clock). chronyd not answering is a
+/// reading (with chrony_error), not a failure.
+timekeeping::ClockReading probe_clock(const ClockProbeConfig& config);
 
 /// `chronyc reload sources`: chronyd re-reads its sourcedir files. Needs chronyd's Unix command
 /// socket (root or the _chrony group); the error says what chronyc said.
