@@ -251,6 +251,10 @@ async function main() {
     });
 
     await scenario('choosing the Moon changes the target', page, async () => {
+      // The echo line is the Moon's alone (issue 16 §1, as on the seed's screen).
+      if ((await state()).target.name !== 'Moon' && await page.isVisible('#echo-row')) {
+        throw new Error('the echo line is shown while the Moon is not the target');
+      }
       await page.click('#nav-targets');
       await page.click('#tgt-moon');
       await page.click('#nav-main');
@@ -260,6 +264,15 @@ async function main() {
       // Who moved the antenna (issue 13 §1): the console's choice, with its address.
       await until('the command in the list', async () =>
         (await text(page, '#command-list')).includes('console 127.0.0.1: track Moon'), 3000);
+      await until('the echo line', () => page.isVisible('#echo-row'), 3000);
+      // WSJT-X's Astronomical Data in the Moon panel, as the daemon computed them.
+      const m = (await state()).moon;
+      await until('Tsky and Dgrd', async () => (await text(page, '#moon-tsky')).includes(' K / '), 3000);
+      const sep = await text(page, '#moon-sunsep');
+      if (Math.abs(parseFloat(sep) - m.sun_sep_deg) > 0.2) throw new Error(`Sun separation ${sep} vs ${m.sun_sep_deg}`);
+      const illum = await text(page, '#moon-illum');
+      if (Math.abs(parseFloat(illum) - 100 * m.illumination) > 1.5) throw new Error(`illuminated ${illum} vs ${m.illumination}`);
+      if (await page.isVisible('#moon-dpol-row') !== (m.dx_dpol_deg !== null)) throw new Error('Dpol to DX shown without a DX');
     });
 
     await scenario('the station I/O panel shows the T/R chain and what is wired', page, async () => {

@@ -38,8 +38,10 @@ export function onState(st) {
   const m = st.moon;
   setText('doppler', m ? hz(m.echo_doppler_hz) : '—');
   setText('doppler-band', m && m.band ? `${m.band} MHz` : '');
-  $('doppler').parentElement.classList.toggle('off', !(st.mode === 'TRACK' && sameName(t.name, 'moon')));
-  const dx = m && isNum(m.dx_echo_doppler_hz);
+  // As on the seed's screen: the echo lines only while the Moon is the target.
+  const onMoon = st.mode === 'TRACK' && sameName(t.name, 'moon');
+  $('echo-row').hidden = !onMoon;
+  const dx = onMoon && m && isNum(m.dx_echo_doppler_hz);
   $('dx-row').hidden = !dx;
   if (dx) setText('dx-doppler', hz(m.dx_echo_doppler_hz));
   // B: corrections
@@ -154,15 +156,30 @@ function renderIo(io) {
   $('io-seq').replaceChildren(...outs.map((o) => h('span', { class: `out${o.on ? ' on' : ''}`, text: String(o.name) })));
 }
 
+/// WSJT-X's Astronomical Data fields (docs/eme.md).
+function renderMoonEme(m) {
+  const tsky = isNum(m.tsky_k) ? `${Math.round(m.tsky_k)} K` : '—';
+  setText('moon-tsky', isNum(m.dgrd_db) ? `${tsky} / ${m.dgrd_db.toFixed(1)} dB` : tsky);
+  setText('moon-sunsep', isNum(m.sun_sep_deg) ? `${m.sun_sep_deg.toFixed(1)}°` : '—');
+  setText('moon-illum', isNum(m.illumination) ? `${Math.round(100 * m.illumination)} %` : '—');
+  setText('moon-par', isNum(m.parallactic_deg) ? `${m.parallactic_deg.toFixed(1)}°` : '—');
+  const dx = isNum(m.dx_dpol_deg);
+  $('moon-dpol-row').hidden = !dx;
+  if (dx) setText('moon-dpol', `${m.dx_dpol_deg > 0 ? '+' : ''}${m.dx_dpol_deg.toFixed(1)}° / ${m.mnr_db.toFixed(1)} dB`);
+}
+
 function renderMoon(m) {
   if (!m) {
     setText('moon-azel', 'not available'); setText('moon-dist', '—'); setText('moon-delay', '—');
+    for (const id of ['moon-tsky', 'moon-sunsep', 'moon-illum', 'moon-par']) setText(id, '—');
+    $('moon-dpol-row').hidden = true;
     if (S.dopKey) { $('moon-doppler').replaceChildren(); S.dopKey = ''; }
     return;
   }
   setText('moon-azel', `${deg(m.az_deg)} / ${deg(m.el_deg)}${isNum(m.el_deg) && m.el_deg < 0 ? ' (below horizon)' : ''}`);
   setText('moon-dist', isNum(m.distance_km) ? `${Math.round(m.distance_km).toLocaleString('en-US')} km` : '—');
   setText('moon-delay', isNum(m.echo_delay_s) ? `${m.echo_delay_s.toFixed(3)} s` : '—');
+  renderMoonEme(m);
   const dop = m.doppler_hz && typeof m.doppler_hz === 'object' ? m.doppler_hz : {};
   const bands = Object.keys(dop).sort((x, y) => Number(x) - Number(y));
   const key = `${bands.join(',')}|${m.band}|${bandList().length}`;  // names once /api/targets is in

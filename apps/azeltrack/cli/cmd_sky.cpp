@@ -90,6 +90,24 @@ void print_band_table(const nlohmann::json& bands) {
   std::cout << '\n';
 }
 
+/// The Moon's EME conditions, as WSJT-X's Astronomical Data window names them.
+void print_eme(const nlohmann::json& j) {
+  std::cout << std::setprecision(1) << "  Sun separation " << j["sun_sep_deg"].get<double>()
+            << "°, illuminated " << std::setprecision(0) << 100.0 * j["illumination"].get<double>()
+            << " %, parallactic angle " << std::setprecision(1)
+            << j["parallactic_deg"].get<double>() << "°\n";
+  if (!j["tsky_k"].is_null()) {
+    std::cout << "  Tsky " << std::setprecision(0) << j["tsky_k"].get<double>() << " K, Dgrd "
+              << std::setprecision(1) << j["dgrd_db"].get<double>() << " dB at "
+              << j["freq_mhz"].get<double>() << " MHz\n";
+  }
+  if (!j["dx_dpol_deg"].is_null()) {
+    std::cout << std::setprecision(1) << "  Dpol to DX " << std::showpos
+              << j["dx_dpol_deg"].get<double>() << std::noshowpos << "°, MNR "
+              << j["mnr_db"].get<double>() << " dB\n";
+  }
+}
+
 void print_text(const nlohmann::json& j) {
   std::cout << std::fixed << std::setprecision(4) << j["target"].get<std::string>() << " at "
             << j["utc"].get<std::string>() << " from " << j["observer"]["grid"].get<std::string>()
@@ -119,6 +137,7 @@ void print_text(const nlohmann::json& j) {
               << "): " << std::showpos << j["dx_echo_doppler_hz"].get<double>() << std::noshowpos
               << " Hz\n";
   }
+  if (j.contains("sun_sep_deg")) print_eme(j);
 }
 
 int run_sky(const SkyOptions& o) {

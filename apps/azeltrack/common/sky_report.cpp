@@ -1,6 +1,8 @@
 #include "common/sky_report.hpp"
 
 #include "azt/astro/bands.hpp"
+#include "azt/eme/moon_conditions.hpp"
+#include "azt/eme/sky_temperature.hpp"
 #include "common/usage_error.hpp"
 
 namespace azt::app {
@@ -34,6 +36,42 @@ nlohmann::json moon_echo_json(const astro::TargetReport& r, const SkySettings& s
     bands.push_back(b);
   }
   out["bands"] = bands;
+  return out;
+}
+
+/// Dpol, MNR, Tsky, Dgrd, the Sun's separation and the lit fraction (issue 16 §1; WSJT-X's
+/// definitions, docs/eme.md). Tsky and Dgrd at the station's frequency, and per band.
+nlohmann::json moon_eme_json(const astro::TargetReport& r, const astro::SkySnapshot& snapshot,
+                             const SkySettings& settings, nlohmann::json& bands) {
+  const auto sun = snapshot.observe(astro::Target::sun());
+  if (!sun) return nlohmann::json::object();
+  eme::MoonInputs in{settings.observer.lat_deg,
+                     r.observation.place,
+                     sun->observation.place,
+                     std::nullopt,
+                     r.dx_place,
+                     settings.freq_mhz.value_or(144.0)};
+  if (settings.dx && r.dx_place) in.dx_lat_deg = settings.dx->lat_deg;
+  const eme::MoonConditions c = eme::moon_conditions(in);
+  nlohmann::json out{{"parallactic_deg", c.parallactic_deg},
+                     {"dpol_deg", c.dpol_deg},
+                     {"dx_dpol_deg", optional_json(c.dx_dpol_deg)},
+                     {"mnr_db", optional_json(c.mnr_db)},
+                     {"ecliptic_lon_deg", c.ecliptic_lon_deg},
+                     {"sun_sep_deg", c.sun_sep_deg},
+                     {"illumination", c.illumination},
+                     {"tsky_k", nullptr},
+                     {"dgrd_db", nullptr}};
+  if (settings.freq_mhz) {
+    out["tsky_k"] = c.tsky_k;
+    out["dgrd_db"] = c.dgrd_db;
+  }
+  const double km = r.observation.place.distance_km.value_or(eme::kPerigeeKm);
+  for (auto& b : bands) {
+    const double tsky = eme::tsky_k(c.ecliptic_lon_deg, b["freq_mhz"].get<double>());
+    b["tsky_k"] = tsky;
+    b["dgrd_db"] = eme::dgrd_db(tsky, b["freq_mhz"].get<double>(), km);
+  }
   return out;
 }
 
@@ -89,7 +127,10 @@ nlohmann::json report_json(const astro::TargetReport& r, const astro::SkySnapsho
       {"distance_km", optional_json(p.distance_km)},
       {"range_rate_km_s", optional_json(p.range_rate_km_s)},
   };
-  if (r.target.kind == astro::Target::Kind::Moon) out.update(moon_echo_json(r, settings));
+  if (r.target.kind == astro::Target::Kind::Moon) {
+    out.update(moon_echo_json(r, settings));
+    out.update(moon_eme_json(r, snapshot, settings, out["bands"]));
+  }
   if (r.dx_place) {
     out["dx"] = {{"grid", settings.dx_grid},
                  {"az_deg", r.dx_place->az_deg},

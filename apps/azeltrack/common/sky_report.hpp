@@ -23,7 +23,8 @@ astro::TargetReport observe_or_throw(const astro::SkySnapshot& snapshot,
                                      const astro::Target& target);
 
 /// The `sky --json` object: az_deg, el_deg (refracted), el_geometric_deg, ra_deg, dec_deg,
-/// distance_km, range_rate_km_s, and for the Moon echo figures (per band, at --freq-mhz, DX).
+/// distance_km, range_rate_km_s, and for the Moon echo figures (per band, at --freq-mhz, DX) and
+/// the EME conditions (Dpol, MNR, Tsky, Dgrd, Sun separation, illumination).
 nlohmann::json report_json(const astro::TargetReport& report, const astro::SkySnapshot& snapshot,
                            const SkySettings& settings, const std::string& ephemeris_name);
 

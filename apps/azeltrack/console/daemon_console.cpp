@@ -125,7 +125,16 @@ json DaemonConsole::moon_json(const astro::TargetReport& r, const astro::SkySnap
           {"band", station.band_name},
           {"echo_doppler_hz", full.value("echo_doppler_hz", json(nullptr))},
           {"dx_echo_doppler_hz", full.value("dx_echo_doppler_hz", json(nullptr))},
-          {"doppler_hz", doppler}};
+          {"doppler_hz", doppler},
+          // Issue 16 §1: WSJT-X's Astronomical Data, at the band (docs/eme.md).
+          {"parallactic_deg", full.value("parallactic_deg", json(nullptr))},
+          {"dpol_deg", full.value("dpol_deg", json(nullptr))},
+          {"dx_dpol_deg", full.value("dx_dpol_deg", json(nullptr))},
+          {"mnr_db", full.value("mnr_db", json(nullptr))},
+          {"tsky_k", full.value("tsky_k", json(nullptr))},
+          {"dgrd_db", full.value("dgrd_db", json(nullptr))},
+          {"sun_sep_deg", full.value("sun_sep_deg", json(nullptr))},
+          {"illumination", full.value("illumination", json(nullptr))}};
 }
 
 const DaemonConsole::Snapshot& DaemonConsole::snapshot() {
