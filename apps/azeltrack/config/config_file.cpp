@@ -139,7 +139,8 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
                                  "spacecraft",
                                  "log",
                                  "gps",
-                                 "time"})) {
+                                 "time",
+                                 "export"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }

@@ -366,6 +366,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   const ConfigSection sats = file.section("satellites", {"file", "mask"});
   c.gps = gps_config_from(file);
   c.time = time_config_from(file);
+  c.exports = export_config_from(file);
   c.satellites.file = sats.text("file").value_or("");
   c.satellites.mask = sats.text("mask").value_or("0");
   try {

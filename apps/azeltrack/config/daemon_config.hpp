@@ -15,6 +15,7 @@
 #include "azt/sequencer/tr_sequencer.hpp"
 #include "azt/sim/station_sim.hpp"
 #include "config/config_choice.hpp"
+#include "config/export_config.hpp"
 #include "config/gps_config.hpp"
 #include "config/hardware_config.hpp"
 #include "config/mount_config.hpp"
@@ -115,6 +116,7 @@ struct DaemonConfig {
   SatellitesConfig satellites;
   GpsConfig gps;    ///< [gps]: the receiver through gpsd
   TimeConfig time;  ///< [time]: chrony watched, its servers set from the console
+  ExportConfig exports;  ///< [export]: files for other programs (azel.dat)
   NetServerConfig rotctld{"127.0.0.1", 4533};
   /// A rotctld client silent this long is disconnected (0: never); Gpredict polls every second.
   double rotctld_idle_timeout_s = 600.0;

@@ -23,6 +23,7 @@
 #include "daemon/daemon.hpp"
 #include "daemon/rate_limited_log.hpp"
 #include "daemon/tick_stats.hpp"
+#include "station/azel_dat_export.hpp"
 #include "station/clock_watch.hpp"
 #include "station/gps_receiver.hpp"
 #include "station/guarded_antenna.hpp"
@@ -66,8 +67,10 @@ class StationDaemon {
   void adopt_site(const gnss::Site& site, std::function<void(bool)> done);
   /// [time]: chrony, the kernel and the RTC watched on the clock's own worker.
   std::unique_ptr<ClockWatch> make_clock_watch();
-  /// Posts to the status worker (the clock's and the network's looks).
+  /// Posts to the status worker (the clock's and the network's looks, azel.dat).
   Offload status_off_loop();
+  /// [export] azel_dat: WSJT-X's azel.dat every second.
+  std::unique_ptr<AzelDatExport> make_azel_dat_export();
   void open_servers();
   void open_console();
   /// A refusal a client was given: in the journal (at most 10 lines a minute per client) and in
@@ -112,6 +115,7 @@ class StationDaemon {
   std::unique_ptr<GpsReceiver> gps_;       ///< [gps]: gpsd, the GPS state and the site survey
   std::unique_ptr<ClockWatch> clock_;      ///< [time]: is the clock to be trusted
   std::unique_ptr<NetworkWatch> network_;  ///< the links, for the console
+  std::unique_ptr<AzelDatExport> azel_dat_;  ///< [export] azel_dat; none when not set
   StationCommands commands_;
   StationService service_;
   boost::asio::signal_set signals_;

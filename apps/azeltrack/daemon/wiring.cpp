@@ -104,6 +104,24 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   network_ = std::make_unique<NetworkWatch>(
       io_, NetworkWatchParts{5.0, status_off_loop(), [] { return read_network_reading(); },
                              [](const std::string& line) { spdlog::info("{}", line); }});
+  azel_dat_ = make_azel_dat_export();
+}
+
+std::unique_ptr<AzelDatExport> StationDaemon::make_azel_dat_export() {
+  if (config_.exports.azel_dat.empty()) return nullptr;
+  return std::make_unique<AzelDatExport>(
+      io_,
+      AzelDatParts{
+          config_.exports.azel_dat, *ephemeris_, config_.sky, [] { return unix_now_s(); },
+          [this]() -> std::optional<astro::Target> {
+            const auto& t = sky_.target();
+            const bool body =
+                t && (t->kind == astro::Target::Kind::Moon || t->kind == astro::Target::Kind::Sun);
+            if (modes_.mode() != control::Mode::Track || !t || body) return {};
+            return *t;
+          },
+          [this] { return sequencer_->state().value("transmitting", false); }, status_off_loop(),
+          linux_os::publish_file, [](const std::string& line) { spdlog::info("{}", line); }});
 }
 
 Offload StationDaemon::status_off_loop() {

@@ -172,6 +172,26 @@ Result<bool> write_file_atomically(const std::string& path, std::string_view con
   return true;
 }
 
+Result<bool> publish_file(const std::string& path, std::string_view contents) {
+  if (path.empty()) return fail("publish_file: empty path");
+  struct stat old_stat {};
+  const mode_t mode = ::stat(path.c_str(), &old_stat) == 0 ? old_stat.st_mode & 07777 : 0644;
+  const std::string temp = path + ".tmp." + std::to_string(::getpid());
+  ::unlink(temp.c_str());
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0600);
+  if (fd < 0) return step_error("create temp file", temp, errno);
+  FdGuard guard(fd);
+  int err = write_all(fd, contents);
+  if (err == 0 && ::fchmod(fd, mode) != 0) err = errno;
+  if (const int close_err = guard.close_now(); err == 0) err = close_err;
+  if (err == 0 && ::rename(temp.c_str(), path.c_str()) != 0) err = errno;
+  if (err != 0) {
+    ::unlink(temp.c_str());
+    return step_error("publish", path, err);
+  }
+  return true;
+}
+
 Result<std::string> read_file(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return step_error("open", path, errno);

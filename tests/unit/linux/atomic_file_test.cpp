@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -274,6 +275,49 @@ TEST_F(AtomicFileTest, SigkillNeverLeavesATornFile) {
             << seen_a << " times, B " << seen_b << " times\n";
   RecordProperty("kill_loop_seconds", std::to_string(seconds));
   EXPECT_LT(seconds, 15.0);
+}
+
+// publish_file (issue 16 §1, azel.dat): atomic for readers, no backup, no temp left behind.
+TEST_F(AtomicFileTest, PublishReplacesWholeWithoutABackup) {
+  const std::string path = file("azel.dat");
+  ASSERT_TRUE(publish_file(path, "first\n"));
+  struct stat st {};
+  ASSERT_EQ(::stat(path.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0644U);
+  ASSERT_EQ(::chmod(path.c_str(), 0640), 0);
+  ASSERT_TRUE(publish_file(path, "second\n"));
+  EXPECT_EQ(read_file(path).value(), "second\n");
+  ASSERT_EQ(::stat(path.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0640U) << "the operator's mode is kept";
+  EXPECT_EQ(entries(), std::vector<std::string>{"azel.dat"}) << "no .bak, no temp";
+}
+
+TEST_F(AtomicFileTest, PublishIntoAMissingFolderFailsAndLeavesNothing) {
+  const auto r = publish_file(file("no-such-dir/azel.dat"), "x");
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().message.find("create temp file"), std::string::npos) << r.error().message;
+  EXPECT_TRUE(entries().empty());
+  EXPECT_FALSE(publish_file("", "x"));
+}
+
+TEST_F(AtomicFileTest, APublishedFileIsNeverSeenTorn) {
+  // A reader polling as fast as it can sees only whole versions while the file is rewritten.
+  const std::string path = file("azel.dat");
+  const std::string a(4096, 'a');
+  const std::string b(8192, 'b');
+  ASSERT_TRUE(publish_file(path, a));
+  std::atomic<bool> done{false};
+  int torn = 0;
+  std::thread reader([&] {
+    while (!done) {
+      const auto text = read_file(path);
+      if (text && text.value() != a && text.value() != b) ++torn;
+    }
+  });
+  for (int i = 0; i < 2000; ++i) ASSERT_TRUE(publish_file(path, i % 2 == 0 ? b : a));
+  done = true;
+  reader.join();
+  EXPECT_EQ(torn, 0);
 }
 
 }  // namespace

@@ -24,6 +24,12 @@ inline constexpr std::size_t kMaxReadBytes = std::size_t{4} * 1024 * 1024;
 /// and the temp file is removed.
 Result<bool> write_file_atomically(const std::string& path, std::string_view contents);
 
+/// Replaces `path` with `contents` atomically for its readers (a temp file renamed over it), but
+/// neither fsynced nor backed up: for a file rewritten every second for other programs to poll
+/// (azel.dat), where a power cut may lose the last second but must never show a torn file, and
+/// an fsync a second would wear an SD card. The file is 0644 (or keeps its existing bits).
+Result<bool> publish_file(const std::string& path, std::string_view contents);
+
 /// Removes the temp files that writes to `path` left behind when their process was killed
 /// (`path.tmp.PID`, `path.bak.tmp.PID` of a PID that no longer runs); returns how many.
 std::size_t remove_stale_temp_files(const std::string& path);

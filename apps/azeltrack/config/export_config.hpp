@@ -1,0 +1,18 @@
+#pragma once
+// [export] (issue 16 §1): files azeltrack writes for other programs. `azel_dat`: WSJT-X's
+// azel.dat (eme/azel_dat.hpp), rewritten every second; "" (the default) writes none.
+
+#include <string>
+
+namespace azt::app {
+
+class ConfigFile;
+
+struct ExportConfig {
+  std::string azel_dat;  ///< absolute path, or "" for none
+};
+
+/// Throws UsageError naming the key on an invalid value.
+ExportConfig export_config_from(const ConfigFile& file);
+
+}  // namespace azt::app
