@@ -268,6 +268,7 @@ async function main() {
       // WSJT-X's Astronomical Data in the Moon panel, as the daemon computed them.
       const m = (await state()).moon;
       await until('Tsky and Dgrd', async () => (await text(page, '#moon-tsky')).includes(' K / '), 3000);
+      await until('the echo width', async () => / Hz/.test(await text(page, '#moon-width')), 3000);
       const sep = await text(page, '#moon-sunsep');
       if (Math.abs(parseFloat(sep) - m.sun_sep_deg) > 0.2) throw new Error(`Sun separation ${sep} vs ${m.sun_sep_deg}`);
       const illum = await text(page, '#moon-illum');

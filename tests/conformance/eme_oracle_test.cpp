@@ -145,8 +145,14 @@ TEST(EmeOracle, WsjtxAstronomicalData) {
     const auto moon_a = astro::observe_moon(ephemeris, *epoch, a);
     const auto moon_b = astro::observe_moon(ephemeris, *epoch, b);
     ASSERT_TRUE(moon_a.ok() && moon_b.ok()) << c.label;
-    const MoonConditions ours = moon_conditions(MoonInputs{
-        c.a.lat_deg, *moon_a, astro::observe_sun(*epoch, a), c.b.lat_deg, *moon_b, c.freq_mhz});
+    MoonInputs in;
+    in.lat_deg = c.a.lat_deg;
+    in.moon = *moon_a;
+    in.sun = astro::observe_sun(*epoch, a);
+    in.dx_lat_deg = c.b.lat_deg;
+    in.dx_moon = *moon_b;
+    in.freq_mhz = c.freq_mhz;
+    const MoonConditions ours = moon_conditions(in);
     par.add(periodic_diff(ours.parallactic_deg, ref.par1_deg, 360.0), c.label);
     dpol.add(periodic_diff(*ours.dx_dpol_deg, ref.dpol_deg, 180.0), c.label);
     // MNR's slope grows without bound towards Dpol = 45°: compare it where it is defined well.

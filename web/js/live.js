@@ -160,6 +160,8 @@ function renderIo(io) {
 function renderMoonEme(m) {
   const tsky = isNum(m.tsky_k) ? `${Math.round(m.tsky_k)} K` : '—';
   setText('moon-tsky', isNum(m.dgrd_db) ? `${tsky} / ${m.dgrd_db.toFixed(1)} dB` : tsky);
+  const width = isNum(m.width_hz) ? `${m.width_hz.toFixed(1)} Hz` : '—';
+  setText('moon-width', isNum(m.dx_width_hz) ? `${width} · DX ${m.dx_width_hz.toFixed(1)} Hz` : width);
   setText('moon-sunsep', isNum(m.sun_sep_deg) ? `${m.sun_sep_deg.toFixed(1)}°` : '—');
   setText('moon-illum', isNum(m.illumination) ? `${Math.round(100 * m.illumination)} %` : '—');
   setText('moon-par', isNum(m.parallactic_deg) ? `${m.parallactic_deg.toFixed(1)}°` : '—');
@@ -171,7 +173,7 @@ function renderMoonEme(m) {
 function renderMoon(m) {
   if (!m) {
     setText('moon-azel', 'not available'); setText('moon-dist', '—'); setText('moon-delay', '—');
-    for (const id of ['moon-tsky', 'moon-sunsep', 'moon-illum', 'moon-par']) setText(id, '—');
+    for (const id of ['moon-tsky', 'moon-width', 'moon-sunsep', 'moon-illum', 'moon-par']) setText(id, '—');
     $('moon-dpol-row').hidden = true;
     if (S.dopKey) { $('moon-doppler').replaceChildren(); S.dopKey = ''; }
     return;

@@ -101,6 +101,12 @@ void print_eme(const nlohmann::json& j) {
               << std::setprecision(1) << j["dgrd_db"].get<double>() << " dB at "
               << j["freq_mhz"].get<double>() << " MHz\n";
   }
+  if (!j["width_hz"].is_null()) {
+    std::cout << std::setprecision(1) << "  echo width " << j["width_hz"].get<double>() << " Hz";
+    if (!j["dx_width_hz"].is_null())
+      std::cout << ", DX " << j["dx_width_hz"].get<double>() << " Hz";
+    std::cout << '\n';
+  }
   if (!j["dx_dpol_deg"].is_null()) {
     std::cout << std::setprecision(1) << "  Dpol to DX " << std::showpos
               << j["dx_dpol_deg"].get<double>() << std::noshowpos << "°, MNR "

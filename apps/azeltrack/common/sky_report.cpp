@@ -45,13 +45,20 @@ nlohmann::json moon_eme_json(const astro::TargetReport& r, const astro::SkySnaps
                              const SkySettings& settings, nlohmann::json& bands) {
   const auto sun = snapshot.observe(astro::Target::sun());
   if (!sun) return nlohmann::json::object();
-  eme::MoonInputs in{settings.observer.lat_deg,
-                     r.observation.place,
-                     sun->observation.place,
-                     std::nullopt,
-                     r.dx_place,
-                     settings.freq_mhz.value_or(144.0)};
+  eme::MoonInputs in;
+  in.lat_deg = settings.observer.lat_deg;
+  in.moon = r.observation.place;
+  in.sun = sun->observation.place;
+  in.dx_moon = r.dx_place;
+  in.freq_mhz = settings.freq_mhz.value_or(144.0);
   if (settings.dx && r.dx_place) in.dx_lat_deg = settings.dx->lat_deg;
+  in.tt_jd = snapshot.time().tt.total();
+  if (const auto later = snapshot.later(60.0)) {  // the libration's change in a minute
+    if (const auto moon_later = later->observe(astro::Target::moon())) {
+      in.moon_minute_later = moon_later->observation.place;
+      in.dx_moon_minute_later = moon_later->dx_place;
+    }
+  }
   const eme::MoonConditions c = eme::moon_conditions(in);
   nlohmann::json out{{"parallactic_deg", c.parallactic_deg},
                      {"dpol_deg", c.dpol_deg},
@@ -60,17 +67,22 @@ nlohmann::json moon_eme_json(const astro::TargetReport& r, const astro::SkySnaps
                      {"ecliptic_lon_deg", c.ecliptic_lon_deg},
                      {"sun_sep_deg", c.sun_sep_deg},
                      {"illumination", c.illumination},
+                     {"width_hz", nullptr},
+                     {"dx_width_hz", nullptr},
                      {"tsky_k", nullptr},
                      {"dgrd_db", nullptr}};
   if (settings.freq_mhz) {
     out["tsky_k"] = c.tsky_k;
     out["dgrd_db"] = c.dgrd_db;
+    out["width_hz"] = optional_json(c.width_hz);
+    out["dx_width_hz"] = optional_json(c.dx_width_hz);
   }
   const double km = r.observation.place.distance_km.value_or(eme::kPerigeeKm);
   for (auto& b : bands) {
     const double tsky = eme::tsky_k(c.ecliptic_lon_deg, b["freq_mhz"].get<double>());
     b["tsky_k"] = tsky;
     b["dgrd_db"] = eme::dgrd_db(tsky, b["freq_mhz"].get<double>(), km);
+    if (c.width_hz) b["width_hz"] = *c.width_hz * b["freq_mhz"].get<double>() / in.freq_mhz;
   }
   return out;
 }

@@ -134,7 +134,9 @@ json DaemonConsole::moon_json(const astro::TargetReport& r, const astro::SkySnap
           {"tsky_k", full.value("tsky_k", json(nullptr))},
           {"dgrd_db", full.value("dgrd_db", json(nullptr))},
           {"sun_sep_deg", full.value("sun_sep_deg", json(nullptr))},
-          {"illumination", full.value("illumination", json(nullptr))}};
+          {"illumination", full.value("illumination", json(nullptr))},
+          {"width_hz", full.value("width_hz", json(nullptr))},
+          {"dx_width_hz", full.value("dx_width_hz", json(nullptr))}};
 }
 
 const DaemonConsole::Snapshot& DaemonConsole::snapshot() {

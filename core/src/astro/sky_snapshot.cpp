@@ -17,6 +17,15 @@ SkySnapshot::SkySnapshot(const Ephemeris& ephemeris, const SkySite& site, const 
   if (site.dx) dx_station_ = make_station(epoch_, *site.dx);
 }
 
+Result<SkySnapshot> SkySnapshot::later(double seconds) const {
+  constexpr double kSecondsPerDay = 86400.0;
+  TimeScales t = epoch_.time;
+  t.utc = utc_plus(t.utc, seconds);
+  t.tt.jd2 += seconds / kSecondsPerDay;
+  t.ut1.jd2 += seconds / kSecondsPerDay;
+  return at(*ephemeris_, site_, t);
+}
+
 Result<TargetReport> SkySnapshot::observe(const Target& target) const {
   auto obs = astro::observe(target, *ephemeris_, epoch_, station_, site_.atmosphere);
   if (!obs) return obs.error();

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "azt/eme/libration.hpp"
 #include "azt/eme/polarisation.hpp"
 #include "azt/eme/sky_temperature.hpp"
 
@@ -31,6 +32,22 @@ double illuminated_fraction(double elongation_deg, double moon_km, double sun_km
   return (1.0 + std::cos(phase)) / 2.0;
 }
 
+namespace {
+
+void add_widths(const MoonInputs& in, MoonConditions& c) {
+  if (!in.moon_minute_later) return;
+  constexpr double kMinuteJd = 60.0 / 86400.0;
+  const Libration own_now = apparent_libration(in.moon, in.tt_jd);
+  const Libration own_later = apparent_libration(*in.moon_minute_later, in.tt_jd + kMinuteJd);
+  c.width_hz = self_echo_width_hz(own_now, own_later, in.freq_mhz);
+  if (!in.dx_moon || !in.dx_moon_minute_later) return;
+  c.dx_width_hz = dx_echo_width_hz(
+      own_now, own_later, apparent_libration(*in.dx_moon, in.tt_jd),
+      apparent_libration(*in.dx_moon_minute_later, in.tt_jd + kMinuteJd), in.freq_mhz);
+}
+
+}  // namespace
+
 MoonConditions moon_conditions(const MoonInputs& in) {
   MoonConditions c;
   c.parallactic_deg = parallactic_angle_deg(in.lat_deg, in.moon.az_deg, in.moon.el_geometric_deg);
@@ -46,6 +63,7 @@ MoonConditions moon_conditions(const MoonInputs& in) {
   c.sun_sep_deg = separation_deg(in.moon.ra_deg, in.moon.dec_deg, in.sun.ra_deg, in.sun.dec_deg);
   c.illumination = illuminated_fraction(c.sun_sep_deg, in.moon.distance_km.value_or(kPerigeeKm),
                                         in.sun.distance_km.value_or(1.495978707e8));
+  add_widths(in, c);
   return c;
 }
 

@@ -52,5 +52,32 @@ TEST(SkySnapshot, TheDxStationSeesTheMoonFromItsOwnPlace) {
   EXPECT_FALSE(sun->dx_place.has_value()) << "DX figures are the Moon's alone";
 }
 
+TEST(SkySnapshot, AMinuteLaterIsTheSameStationAMinuteOn) {
+  const ErfaEphemeris eph;
+  SkySite site;
+  site.observer = Observer{46.189, -79.393, 300.0};
+  const auto now = SkySnapshot::at(eph, site, oracle_time());
+  ASSERT_TRUE(now.ok());
+  const auto later = now->later(60.0);
+  ASSERT_TRUE(later.ok());
+  EXPECT_NEAR((later->time().utc.mjd() - now->time().utc.mjd()) * 86400.0, 60.0, 1e-6);
+  const JulianDate& t0 = now->time().tt;
+  const JulianDate& t1 = later->time().tt;
+  EXPECT_NEAR(((t1.jd1 - t0.jd1) + (t1.jd2 - t0.jd2)) * 86400.0, 60.0, 1e-6);
+  EXPECT_DOUBLE_EQ(later->time().dut1_s, now->time().dut1_s);
+  // The same as a snapshot built for that instant from scratch.
+  const auto direct =
+      SkySnapshot::at(eph, site,
+                      *make_time_scales(utc_plus(oracle_time().utc, 60.0), oracle_time().dut1_s,
+                                        LeapSecondTable::builtin()));
+  const auto a = later->observe(Target::moon());
+  const auto b = direct->observe(Target::moon());
+  EXPECT_NEAR(a->observation.place.az_deg, b->observation.place.az_deg, 1e-9);
+  EXPECT_NEAR(a->observation.place.el_geometric_deg, b->observation.place.el_geometric_deg, 1e-9);
+  // The Moon has moved: a quarter of a degree of azimuth a minute at most here.
+  const auto m0 = now->observe(Target::moon());
+  EXPECT_GT(std::abs(a->observation.place.az_deg - m0->observation.place.az_deg), 0.01);
+}
+
 }  // namespace
 }  // namespace azt::astro

@@ -70,5 +70,29 @@ TEST(MoonConditions, FromThePlaces) {
   EXPECT_DOUBLE_EQ(*c.mnr_db, mnr_db(*c.dx_dpol_deg));
 }
 
+TEST(MoonConditions, EchoWidthsNeedTheMinuteLaterPlaces) {
+  MoonInputs in;
+  in.lat_deg = 46.19;
+  in.moon = place(120.0, 25.0, 200.0, -10.0, 370000.0);
+  in.sun = place(300.0, -20.0, 20.0, 10.0, 1.48e8);
+  in.freq_mhz = 1296.0;
+  in.tt_jd = 2460750.5;
+  EXPECT_FALSE(moon_conditions(in).width_hz.has_value());
+  in.moon_minute_later = place(120.2, 25.1, 200.01, -10.003, 370010.0);
+  MoonConditions c = moon_conditions(in);
+  ASSERT_TRUE(c.width_hz.has_value());
+  EXPECT_GT(*c.width_hz, 0.0);
+  EXPECT_FALSE(c.dx_width_hz.has_value()) << "no DX";
+  in.dx_lat_deg = -33.87;
+  in.dx_moon = place(60.0, 40.0, 200.1, -10.0, 371000.0);
+  in.dx_moon_minute_later = place(60.2, 40.1, 200.11, -10.002, 371005.0);
+  c = moon_conditions(in);
+  ASSERT_TRUE(c.dx_width_hz.has_value());
+  EXPECT_GT(*c.dx_width_hz, 0.0);
+  // Width scales with frequency.
+  in.freq_mhz = 2592.0;
+  EXPECT_NEAR(*moon_conditions(in).width_hz, 2.0 * *c.width_hz, 1e-9);
+}
+
 }  // namespace
 }  // namespace azt::eme

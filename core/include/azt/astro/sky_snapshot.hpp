@@ -40,6 +40,9 @@ class SkySnapshot {
   /// Fails for a target outside its table (a spacecraft's vectors) or the ephemeris.
   [[nodiscard]] Result<TargetReport> observe(const Target& target) const;
   [[nodiscard]] const TimeScales& time() const { return epoch_.time; }
+  /// The same station `seconds` later (for rates: the Moon's libration over a minute). TAI−UTC
+  /// and DUT1 are kept: a leap second inside the interval shifts it by a second at most.
+  [[nodiscard]] Result<SkySnapshot> later(double seconds) const;
 
  private:
   SkySnapshot(const Ephemeris& ephemeris, const SkySite& site, const Epoch& epoch);

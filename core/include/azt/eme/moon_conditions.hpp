@@ -17,6 +17,10 @@ struct MoonInputs {
   std::optional<double> dx_lat_deg;     ///< a DX station, with
   std::optional<astro::Place> dx_moon;  ///< the Moon seen from there
   double freq_mhz = 144.0;
+  double tt_jd = 0.0;  ///< the instant (Terrestrial Time, Julian date): the Moon's orientation
+  /// The Moon a minute later from the station (and from the DX), for the echo widths.
+  std::optional<astro::Place> moon_minute_later;
+  std::optional<astro::Place> dx_moon_minute_later;
 };
 
 struct MoonConditions {
@@ -26,10 +30,12 @@ struct MoonConditions {
   std::optional<double> dx_dpol_deg;  ///< with a DX station
   std::optional<double> mnr_db;       ///< with a DX station
   double ecliptic_lon_deg = 0.0;
-  double tsky_k = 0.0;        ///< at freq_mhz
-  double dgrd_db = 0.0;       ///< against perigee in the coldest sky (sky_temperature.hpp)
-  double sun_sep_deg = 0.0;   ///< the angle between the Moon's and the Sun's centres
-  double illumination = 0.0;  ///< the lit fraction of the disc, 0 (new) to 1 (full)
+  double tsky_k = 0.0;                ///< at freq_mhz
+  double dgrd_db = 0.0;               ///< against perigee in the coldest sky (sky_temperature.hpp)
+  double sun_sep_deg = 0.0;           ///< the angle between the Moon's and the Sun's centres
+  double illumination = 0.0;          ///< the lit fraction of the disc, 0 (new) to 1 (full)
+  std::optional<double> width_hz;     ///< self-echo spread from libration (with moon_minute_later)
+  std::optional<double> dx_width_hz;  ///< DX echo spread (with both minute-later places)
 };
 
 /// Angle between two directions given as RA/Dec (degrees), stable at small and large angles.
