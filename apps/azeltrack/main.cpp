@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
       "  azeltrack sky casa --lat 46.189 --lon -79.393 --json   Cassiopeia A as JSON\n"
       "  azeltrack sky --list                                   the radio-source catalogue\n"
       "  azeltrack locator FN06HE                               centre of a locator square\n"
+      "  azeltrack moon-windows --grid FN06HE --dx-grid JO62    common Moon windows for a sked\n"
       "  azeltrack watch --config examples/station.toml         live sky view (scripts/run)\n"
       "  azeltrack simulate --scenario moon --hours 6           the controller on the sim antenna\n"
       "  azeltrack serve --config examples/sim.toml            the daemon (scripts/run)\n"
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   const azt::app::Runner seq_sim = azt::app::add_seq_sim_command(app);
   const azt::app::Runner sat = azt::app::add_sat_command(app);
   const azt::app::Runner passes = azt::app::add_passes_command(app);
+  const azt::app::Runner moon_windows = azt::app::add_moon_windows_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
@@ -69,6 +71,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("seq-sim")) return seq_sim();
     if (app.got_subcommand("sat")) return sat();
     if (app.got_subcommand("passes")) return passes();
+    if (app.got_subcommand("moon-windows")) return moon_windows();
   } catch (const azt::app::UsageError& e) {
     azt::app::print_error(e.what());
     return azt::app::kExitUsage;

@@ -1,0 +1,50 @@
+#pragma once
+// Common Moon windows (issue 16 §2): every interval in which two stations both see the Moon
+// above their elevation limits and horizon masks, with the best minute's conditions (the highest
+// Dgrd) and the Sun's separation. The Moon is sampled every `step_s` (10 min: the Moon's
+// elevation moves ≤ 2.5° in that time, so no window longer than a step is missed) and each edge
+// is found by bisection to within a second.
+
+#include <optional>
+#include <vector>
+
+#include "azt/astro/ephemeris.hpp"
+#include "azt/astro/leap_seconds.hpp"
+#include "azt/astro/observer.hpp"
+#include "azt/orbit/passes.hpp"
+#include "azt/util/result.hpp"
+
+namespace azt::eme {
+
+struct MoonWindowSettings {
+  double from_unix_s = 0.0;
+  double days = 30.0;
+  double min_el_deg = 0.0;     ///< the own station's limit (the Moon's centre, airless)
+  double dx_min_el_deg = 0.0;  ///< the DX station's
+  orbit::HorizonMask mask;     ///< the own station's horizon (flat 0° by default)
+  orbit::HorizonMask dx_mask;
+  double freq_mhz = 144.0;  ///< for Tsky and Dgrd
+  double dut1_s = 0.0;
+  double step_s = 600.0;
+};
+
+struct MoonWindow {
+  double start_unix_s = 0.0;  ///< both see it (or the search's start, if already so)
+  double end_unix_s = 0.0;    ///< one loses it (or the search's end)
+  double best_unix_s = 0.0;   ///< the minute with the highest Dgrd
+  double dgrd_db = 0.0;       ///< at the best minute
+  double tsky_k = 0.0;
+  double dpol_deg = 0.0;  ///< between the stations
+  double sun_sep_deg = 0.0;
+  double el_deg = 0.0;  ///< the own station's elevation at the best minute
+  double dx_el_deg = 0.0;
+};
+
+/// The windows from `from_unix_s` for `days` days; an error outside the ephemeris or the
+/// leap-second table.
+Result<std::vector<MoonWindow>> moon_windows(const astro::Ephemeris& ephemeris,
+                                             const astro::Observer& own, const astro::Observer& dx,
+                                             const MoonWindowSettings& settings,
+                                             const astro::LeapSecondTable& leap_seconds);
+
+}  // namespace azt::eme
