@@ -26,7 +26,7 @@ void thirty_days(benchmark::State& state, const azt::astro::Ephemeris& ephemeris
   s.from_unix_s = kFrom;
   s.days = 30.0;
   std::size_t windows = 0;
-  for (auto _ : state) {
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): the benchmark loop idiom
     const auto w =
         azt::eme::moon_windows(ephemeris, own, dx, s, azt::astro::LeapSecondTable::builtin());
     windows = w ? w.value().size() : 0;

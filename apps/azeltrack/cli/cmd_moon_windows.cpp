@@ -11,6 +11,7 @@
 #include "azt/eme/moon_windows.hpp"
 #include "cli/commands.hpp"
 #include "common/horizon_mask_option.hpp"
+#include "common/moon_window_report.hpp"
 #include "common/sky_setup.hpp"
 
 namespace azt::app {
@@ -26,10 +27,6 @@ constexpr double kUnixEpochMjd = 40587.0;
 constexpr double kSecondsPerDay = 86400.0;
 
 double unix_of(const astro::UtcInstant& t) { return (t.mjd() - kUnixEpochMjd) * kSecondsPerDay; }
-
-std::string iso(double unix_s) {
-  return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
-}
 
 orbit::HorizonMask station_mask(const std::string& option, const std::string& mask,
                                 const std::string& min_el_option, const std::string& min_el) {
@@ -56,19 +53,6 @@ eme::MoonWindowSettings settings_from(const MoonWindowOptions& o) {
   return s;
 }
 
-nlohmann::json window_json(const eme::MoonWindow& w) {
-  return {{"start", iso(w.start_unix_s)},
-          {"end", iso(w.end_unix_s)},
-          {"duration_s", w.end_unix_s - w.start_unix_s},
-          {"best", iso(w.best_unix_s)},
-          {"dgrd_db", w.dgrd_db},
-          {"tsky_k", w.tsky_k},
-          {"dpol_deg", w.dpol_deg},
-          {"sun_sep_deg", w.sun_sep_deg},
-          {"el_deg", w.el_deg},
-          {"dx_el_deg", w.dx_el_deg}};
-}
-
 void print_window(const nlohmann::json& j) {
   const double minutes = j["duration_s"].get<double>() / 60.0;
   std::cout << j["start"].get<std::string>().substr(0, 16) << " to "
@@ -93,7 +77,7 @@ int run_moon_windows(const MoonWindowOptions& o) {
   if (!windows) throw std::runtime_error(windows.error().message);
   if (o.json) {
     nlohmann::json all = nlohmann::json::array();
-    for (const auto& w : windows.value()) all.push_back(window_json(w));
+    for (const auto& w : windows.value()) all.push_back(moon_window_json(w));
     std::cout << nlohmann::json{{"grid", grid},
                                 {"dx_grid", o.dx_grid},
                                 {"band", o.band},
@@ -104,7 +88,7 @@ int run_moon_windows(const MoonWindowOptions& o) {
   }
   std::cout << "Common Moon windows, " << grid << " and " << o.dx_grid << ", " << o.band
             << " MHz (UTC; Dpol between the stations):\n";
-  for (const auto& w : windows.value()) print_window(window_json(w));
+  for (const auto& w : windows.value()) print_window(moon_window_json(w));
   if (windows.value().empty()) std::cout << "none\n";
   return 0;
 }

@@ -18,6 +18,7 @@
 #include "config/config_store.hpp"
 #include "config/daemon_config.hpp"
 #include "console/console_model.hpp"
+#include "console/moon_planner.hpp"
 #include "station/clock_watch.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
@@ -56,7 +57,8 @@ struct ConsoleParts {
 
 class DaemonConsole final : public ConsoleModel {
  public:
-  explicit DaemonConsole(ConsoleParts parts) : p_(std::move(parts)) {}
+  explicit DaemonConsole(ConsoleParts parts)
+      : p_(std::move(parts)), planner_({p_.config.sky, p_.offload, p_.unix_s}) {}
 
   nlohmann::json state() override;
   nlohmann::json config() override;
@@ -64,6 +66,9 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json sky(double hours) override;
   void act(const std::string& action, const nlohmann::json& body, const std::string& source,
            ActDone done) override;
+  void moon_windows(const std::string& query, ActDone done) override {
+    planner_.answer(query, std::move(done));
+  }
 
  private:
   /// Sun, Moon and every target at one whole second, computed once per second.
@@ -102,6 +107,7 @@ class DaemonConsole final : public ConsoleModel {
   void apply_corrections(const control::PositionCorrections& corrections);
 
   ConsoleParts p_;
+  MoonPlanner planner_;
   Snapshot snapshot_;
   std::vector<std::string> restart_needed_;
 };

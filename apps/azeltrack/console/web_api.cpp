@@ -105,7 +105,15 @@ void WebApi::handle(const linux_os::HttpRequest& request, const Respond& respond
     return;
   }
   try {
-    if (request.method == "GET" || request.method == "HEAD") {
+    if (request.method == "GET" && request.path == "/api/moon-windows") {
+      model_.moon_windows(request.query, [respond](ActResult result) {
+        if (result.error) {
+          respond(error_reply(result.error->status(), result.error->what(), result.error->field()));
+          return;
+        }
+        respond(json_reply(200, result.fields));
+      });
+    } else if (request.method == "GET" || request.method == "HEAD") {
       respond(handle_get(request));
     } else if (request.method == "POST" || request.method == "PUT") {
       handle_action(request, respond);

@@ -100,11 +100,14 @@ Result<bool> fill_best(const MoonWatch& watch, MoonWindow& w, double step_s) {
     return true;
   };
   const double first = std::ceil(w.start_unix_s / kBestMinuteS) * kBestMinuteS;
-  for (double t = first; t <= w.end_unix_s; t += step_s) {
-    if (auto r = consider(t); !r) return r;
+  const auto coarse_count = static_cast<long>(std::floor((w.end_unix_s - first) / step_s));
+  for (long i = 0; i <= coarse_count; ++i) {
+    if (auto r = consider(first + static_cast<double>(i) * step_s); !r) return r;
   }
   const double coarse = best_t;
-  for (double t = coarse - step_s; t <= coarse + step_s; t += kBestMinuteS) {
+  const auto minutes = static_cast<long>(step_s / kBestMinuteS);
+  for (long i = -minutes; i <= minutes; ++i) {
+    const double t = coarse + static_cast<double>(i) * kBestMinuteS;
     if (t < w.start_unix_s || t > w.end_unix_s) continue;
     if (auto r = consider(t); !r) return r;
   }

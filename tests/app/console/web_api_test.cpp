@@ -106,6 +106,15 @@ TEST(WebApi, ReadingIsOpenToEveryone) {
   EXPECT_EQ(rig.handle(Rig::request("DELETE", "/api/state")).status, 405U);
 }
 
+TEST(WebApi, TheMoonPlannerIsReadingAndAModelWithoutOneSays404) {
+  // GET /api/moon-windows goes to the model's asynchronous planner (issue 16 §2), open to
+  // every reader like the rest of reading; this model has none.
+  Rig rig;
+  const auto reply = rig.handle(Rig::request("GET", "/api/moon-windows"));
+  EXPECT_EQ(reply.status, 404U);
+  EXPECT_NE(reply.body.find("no Moon planner"), std::string::npos) << reply.body;
+}
+
 TEST(WebApi, ActionsWithoutLoginAre401AndDoNothing) {
   Rig rig;
   for (const auto& [method, path] :

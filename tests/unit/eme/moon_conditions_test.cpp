@@ -24,14 +24,14 @@ TEST(Separation, StableAtEveryScale) {
 }
 
 TEST(Illumination, NewFullAndQuarter) {
-  constexpr double moon = 384400.0;
-  constexpr double sun = 1.496e8;
-  EXPECT_NEAR(illuminated_fraction(0.0, moon, sun), 0.0, 1e-12);
-  EXPECT_NEAR(illuminated_fraction(180.0, moon, sun), 1.0, 1e-12);
+  constexpr double kMoonKm = 384400.0;
+  constexpr double kSunKm = 1.496e8;
+  EXPECT_NEAR(illuminated_fraction(0.0, kMoonKm, kSunKm), 0.0, 1e-12);
+  EXPECT_NEAR(illuminated_fraction(180.0, kMoonKm, kSunKm), 1.0, 1e-12);
   // At 90° elongation the phase angle is 90° less the Sun's angle seen across the Moon's
   // distance (0.147°): cos i = Δ/√(Δ² + R²).
-  EXPECT_NEAR(illuminated_fraction(90.0, moon, sun), 0.5 + 0.5 * moon / std::hypot(moon, sun),
-              1e-12);
+  EXPECT_NEAR(illuminated_fraction(90.0, kMoonKm, kSunKm),
+              0.5 + 0.5 * kMoonKm / std::hypot(kMoonKm, kSunKm), 1e-12);
 }
 
 astro::Place place(double az, double el, double ra, double dec, double km) {

@@ -23,7 +23,7 @@ double moon_el(double unix_s, const astro::Observer& where) {
   return astro::observe_moon(eph, *epoch, astro::make_station(*epoch, where))->el_geometric_deg;
 }
 
-Result<std::vector<MoonWindow>> windows(MoonWindowSettings s) {
+Result<std::vector<MoonWindow>> windows(const MoonWindowSettings& s) {
   static const astro::ErfaEphemeris eph;
   return moon_windows(eph, kFn06, kJo62, s, astro::LeapSecondTable::builtin());
 }

@@ -33,9 +33,9 @@ TEST(Dpol, FoldedLikeALinearPolarisation) {
   EXPECT_DOUBLE_EQ(dpol_deg(0.0, 90.0), 90.0);
   EXPECT_DOUBLE_EQ(dpol_deg(0.0, -90.0), 90.0);
   EXPECT_DOUBLE_EQ(dpol_deg(-170.0, 170.0), -20.0);
-  for (double a = -180.0; a <= 180.0; a += 7.5) {
-    for (double b = -180.0; b <= 180.0; b += 11.0) {
-      const double d = dpol_deg(a, b);
+  for (int i = 0; i <= 48; ++i) {
+    for (int j = 0; j <= 32; ++j) {
+      const double d = dpol_deg(-180.0 + 7.5 * i, -180.0 + 11.0 * j);
       EXPECT_GT(d, -90.0);
       EXPECT_LE(d, 90.0);
     }
