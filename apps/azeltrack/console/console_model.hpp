@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -54,7 +55,8 @@ class ConsoleModel {
   /// act(). A model without a planner refuses with 404.
   virtual void moon_windows(const std::string& query, ActDone done) {
     (void)query;
-    done(ActResult{{}, ApiError(404, "", "no Moon planner here")});
+    const ActDone answer = std::move(done);
+    answer(ActResult{{}, ApiError(404, "", "no Moon planner here")});
   }
 };
 
