@@ -1,34 +1,47 @@
 #include "azt/eme/azel_dat.hpp"
 
+#include <array>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 
 namespace azt::eme {
 namespace {
 
 constexpr int kSecondsPerDay = 86400;
 
+/// Right-aligned in `width` characters (wider when it must be), as Fortran's fixed formats.
+std::string padded(std::string text, std::size_t width) {
+  return text.size() >= width ? text : std::string(width - text.size(), ' ') + text;
+}
+
+/// `value` with `decimals` digits after the point (Fortran fW.D), locale-free.
+std::string fixed(double value, int decimals, std::size_t width) {
+  std::array<char, 64> buf{};
+  const auto r =
+      std::to_chars(buf.data(), buf.data() + buf.size(), value, std::chars_format::fixed, decimals);
+  return padded(std::string(buf.data(), r.ptr), width);
+}
+
+std::string two_digits(int v) { return (v < 10 ? "0" : "") + std::to_string(v); }
+
 std::string clock_text(double utc_s_of_day) {
   const int s = static_cast<int>(std::floor(utc_s_of_day)) % kSecondsPerDay;
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "%02d:%02d:%02d", s / 3600, s / 60 % 60, s % 60);
-  return buf;
+  return two_digits(s / 3600) + ":" + two_digits(s / 60 % 60) + ":" + two_digits(s % 60);
 }
 
 std::string place_line(const std::string& clock, double az, double el, const char* name) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%s,%5.1f,%5.1f,%s\n", clock.c_str(), az, el, name);
-  return buf;
+  return clock + "," + fixed(az, 1, 5) + "," + fixed(el, 1, 5) + "," + name + "\n";
 }
 
 }  // namespace
 
 std::string azel_dat_text(const AzelDat& d) {
   const std::string clock = clock_text(d.utc_s_of_day);
-  char doppler[128];
-  std::snprintf(doppler, sizeof doppler, "%5d,%8.1f,%8.2f,%8.1f,%8.2f,Doppler, %c\n",
-                static_cast<int>(d.freq_mhz), std::round(d.dx_doppler_hz), d.dx_dfdt_hz_min,
-                std::round(d.self_doppler_hz), d.self_dfdt_hz_min, d.transmitting ? 'T' : 'R');
+  const std::string doppler =
+      padded(std::to_string(static_cast<int>(d.freq_mhz)), 5) + "," +
+      fixed(std::round(d.dx_doppler_hz), 1, 8) + "," + fixed(d.dx_dfdt_hz_min, 2, 8) + "," +
+      fixed(std::round(d.self_doppler_hz), 1, 8) + "," + fixed(d.self_dfdt_hz_min, 2, 8) +
+      ",Doppler, " + (d.transmitting ? "T" : "R") + "\n";
   return place_line(clock, d.moon_az_deg, d.moon_el_deg, "Moon") +
          place_line(clock, d.sun_az_deg, d.sun_el_deg, "Sun") +
          place_line(clock, d.source_az_deg, d.source_el_deg, "Source") + doppler;
