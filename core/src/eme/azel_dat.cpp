@@ -10,7 +10,7 @@ namespace {
 constexpr int kSecondsPerDay = 86400;
 
 /// Right-aligned in `width` characters (wider when it must be), as Fortran's fixed formats.
-std::string padded(std::string text, std::size_t width) {
+std::string padded(const std::string& text, std::size_t width) {
   return text.size() >= width ? text : std::string(width - text.size(), ' ') + text;
 }
 
