@@ -53,6 +53,7 @@ async function api(method, route, body, token) {
   return { status: res.status, json: await res.json().catch(() => null) };
 }
 const state = async () => (await api('GET', '/api/state')).json;
+const apiGet = async (route) => api('GET', route);
 
 async function startDaemon() {
   const log = fs.openSync(path.join(tmp, 'daemon.log'), 'a');
@@ -438,6 +439,26 @@ async function main() {
       await until('the GPS page again', () => page.isVisible('#screen-gps'), 3000);
     });
     stopGpsfake();
+
+    await scenario('the Moon planner finds the common windows as the operator types', page, async () => {
+      await page.click('#nav-main');
+      await page.click('#planner-link');
+      await until('the planner', () => page.isVisible('#screen-planner'), 3000);
+      await page.fill('#planner-days', '5');
+      await page.fill('#planner-dx', 'JO62QM');
+      await until('the windows', async () => (await page.$$('#planner-rows tr')).length > 0
+        && (await text(page, '#planner-msg')).includes('JO62QM'), 10000);
+      // The same question to the API (after the page's: one search runs at a time).
+      const api = (await apiGet('/api/moon-windows?dx_grid=JO62QM&days=5&min_el=0&dx_min_el=0')).json;
+      const rows = (await page.$$('#planner-rows tr')).length;
+      if (rows !== api.windows.length) throw new Error(`${rows} rows, the API ${api.windows.length} windows`);
+      if (api.windows.length < 3) throw new Error(`5 days, ${api.windows.length} windows`);
+      const first = await text(page, '#planner-rows tr:first-child td:first-child');
+      if (!first.includes(api.windows[0].start.slice(11, 16))) throw new Error(`first window ${first} vs ${api.windows[0].start}`);
+      await page.fill('#planner-dx', 'ZZ99');
+      await until('the refusal', async () => (await text(page, '#planner-msg')).startsWith('Not found:'), 10000);
+      if ((await page.$$('#planner-rows tr')).length !== 0) throw new Error('rows kept after a refusal');
+    });
 
     await scenario('the Network page lists the interfaces', page, async () => {
       await page.click('#ico-eth');

@@ -7,11 +7,12 @@ import { drawSky, loadSky } from './sky.js';
 import { loadTargets } from './targets.js';
 import { drawTilt, loadConfig } from './setup.js';
 import { renderStationPage } from './station.js';
+import { openPlanner } from './planner.js';
 
 export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
 // Pages without a tab of their own (the phone's tab bar has no room): reached from the header's
 // status icons and from Setup, whose tab stays lit on them.
-export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup' };
+export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main' };
 
 export function show(name) {
   if (!SCREENS.includes(name) && !SUBSCREENS[name]) name = 'main';
@@ -27,6 +28,7 @@ export function show(name) {
   if (name === 'sky') { loadSky(); drawSky(true); }
   if (name === 'setup' || name === 'antenna' || name === 'manual') loadConfig();
   if (name === 'antenna') drawTilt();
-  if (SUBSCREENS[name]) renderStationPage(name, true);
+  if (name === 'planner') openPlanner();
+  else if (SUBSCREENS[name]) renderStationPage(name, true);
 }
 export function go(name) { if (location.hash === `#${name}`) show(name); else location.hash = name; }

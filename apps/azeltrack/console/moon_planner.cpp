@@ -48,7 +48,9 @@ Plan plan_from(const std::string& query, const SkyConfig& sky, double now_unix_s
   try {
     p.dx = observer_from_grid(p.dx_grid, 0.0);
   } catch (const UsageError& e) {
-    throw ApiError(400, "dx_grid", e.what());
+    std::string why = e.what();  // "--grid: locator …": the planner's field is dx_grid
+    if (why.rfind("--grid: ", 0) == 0) why.erase(0, 8);
+    throw ApiError(400, "dx_grid", "dx_grid: " + why);
   }
   p.band = query_value(query, "band").value_or(sky.band_name);
   const astro::AmateurBand* band = astro::find_band(p.band);
