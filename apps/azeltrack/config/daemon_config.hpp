@@ -114,8 +114,8 @@ struct DaemonConfig {
   GpioConfig gpio;
   HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
   SatellitesConfig satellites;
-  GpsConfig gps;    ///< [gps]: the receiver through gpsd
-  TimeConfig time;  ///< [time]: chrony watched, its servers set from the console
+  GpsConfig gps;         ///< [gps]: the receiver through gpsd
+  TimeConfig time;       ///< [time]: chrony watched, its servers set from the console
   ExportConfig exports;  ///< [export]: files for other programs (azel.dat)
   NetServerConfig rotctld{"127.0.0.1", 4533};
   /// A rotctld client silent this long is disconnected (0: never); Gpredict polls every second.

@@ -111,10 +111,10 @@ class StationDaemon {
   SatelliteTracker satellites_;
   RateLimitedLog log_;
   RecentEvents events_;
-  RecentEvents motions_;                   ///< accepted motion commands, with their sources
-  std::unique_ptr<GpsReceiver> gps_;       ///< [gps]: gpsd, the GPS state and the site survey
-  std::unique_ptr<ClockWatch> clock_;      ///< [time]: is the clock to be trusted
-  std::unique_ptr<NetworkWatch> network_;  ///< the links, for the console
+  RecentEvents motions_;                     ///< accepted motion commands, with their sources
+  std::unique_ptr<GpsReceiver> gps_;         ///< [gps]: gpsd, the GPS state and the site survey
+  std::unique_ptr<ClockWatch> clock_;        ///< [time]: is the clock to be trusted
+  std::unique_ptr<NetworkWatch> network_;    ///< the links, for the console
   std::unique_ptr<AzelDatExport> azel_dat_;  ///< [export] azel_dat; none when not set
   StationCommands commands_;
   StationService service_;
