@@ -23,11 +23,6 @@ struct MoonWindowOptions {
   bool json = false;
 };
 
-constexpr double kUnixEpochMjd = 40587.0;
-constexpr double kSecondsPerDay = 86400.0;
-
-double unix_of(const astro::UtcInstant& t) { return (t.mjd() - kUnixEpochMjd) * kSecondsPerDay; }
-
 orbit::HorizonMask station_mask(const std::string& option, const std::string& mask,
                                 const std::string& min_el_option, const std::string& min_el) {
   return mask.empty() ? parse_horizon_mask(min_el_option, min_el)
@@ -37,11 +32,11 @@ orbit::HorizonMask station_mask(const std::string& option, const std::string& ma
 eme::MoonWindowSettings settings_from(const MoonWindowOptions& o) {
   eme::MoonWindowSettings s;
   if (o.from.empty()) {
-    s.from_unix_s = unix_of(utc_now());
+    s.from_unix_s = utc_now().unix_seconds();
   } else {
     const auto t = astro::parse_iso8601_utc(o.from);
     if (!t) throw UsageError("--from: " + t.error().message);
-    s.from_unix_s = unix_of(*t);
+    s.from_unix_s = t->unix_seconds();
   }
   s.days = parse_number_option("--days", o.days);
   if (!(s.days > 0.0 && s.days <= 366.0)) throw UsageError("--days must be in (0, 366]");

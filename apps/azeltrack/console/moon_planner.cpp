@@ -18,8 +18,6 @@ namespace {
 
 using json = nlohmann::json;
 
-constexpr double kUnixEpochMjd = 40587.0;
-constexpr double kSecondsPerDay = 86400.0;
 constexpr double kMaxDays = 60.0;
 
 double number(const std::string& query, const char* key, double fallback, double lo, double hi) {
@@ -64,7 +62,7 @@ Plan plan_from(const std::string& query, const SkyConfig& sky, double now_unix_s
   if (const auto from = query_value(query, "from")) {
     const auto t = astro::parse_iso8601_utc(*from);
     if (!t) throw ApiError(400, "from", "from: " + t.error().message);
-    s.from_unix_s = (t->mjd() - kUnixEpochMjd) * kSecondsPerDay;
+    s.from_unix_s = t->unix_seconds();
   }
   return p;
 }

@@ -85,6 +85,10 @@ UtcInstant utc_plus(const UtcInstant& from, double seconds) {
 
 double UtcInstant::mjd() const { return (jd.jd1 - kMjdZeroJd) + jd.jd2; }
 
+double UtcInstant::unix_seconds() const {
+  return (jd.jd1 - kMjdZeroJd - kUnixEpochMjd) * kSecondsPerDay + jd.jd2 * kSecondsPerDay;
+}
+
 Result<TimeScales> make_time_scales(const UtcInstant& utc, double dut1_s,
                                     const LeapSecondTable& table) {
   if (!std::isfinite(dut1_s) || std::abs(dut1_s) > kDut1HardLimitS) {

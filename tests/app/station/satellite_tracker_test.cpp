@@ -31,8 +31,7 @@ std::string aos(SatelliteTracker& t, double unix_s) {
 }
 
 double unix_of(const nlohmann::json& iso) {
-  constexpr double kUnixEpochMjd = 40587.0;
-  return (astro::parse_iso8601_utc(iso.get<std::string>())->mjd() - kUnixEpochMjd) * 86400.0;
+  return astro::parse_iso8601_utc(iso.get<std::string>())->unix_seconds();
 }
 
 const astro::Observer kFn06{46.18958, -79.39375, 301.0};

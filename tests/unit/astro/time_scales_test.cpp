@@ -115,6 +115,17 @@ TEST(UtcFromUnix, KeepsSubMillisecondPartOfModernTimestamps) {
   EXPECT_NEAR(t.jd.jd2 * 86400.0, 21600.000125, 3e-7);
 }
 
+TEST(UtcFromUnix, UnixSecondsIsTheInverse) {
+  EXPECT_EQ(UtcInstant::from_unix_seconds(0.0).unix_seconds(), 0.0);
+  EXPECT_EQ(UtcInstant::from_unix_seconds(1741932000.0).unix_seconds(), 1741932000.0);
+  EXPECT_NEAR(UtcInstant::from_unix_seconds(1741932000.000125).unix_seconds(), 1741932000.000125,
+              3e-7);
+  EXPECT_NEAR(UtcInstant::from_unix_seconds(-0.5).unix_seconds(), -0.5, 1e-9);
+  const auto parsed = azt::astro::parse_iso8601_utc("2025-03-01T00:00:00Z");
+  ASSERT_TRUE(parsed.ok());
+  EXPECT_EQ(parsed->unix_seconds(), 1740787200.0);
+}
+
 TEST(UtcFromUnix, HandlesTimesBefore1970) {
   const auto t = UtcInstant::from_unix_seconds(-0.5);  // 1969-12-31T23:59:59.5Z
   EXPECT_EQ(t.jd.jd1, 2440586.5);

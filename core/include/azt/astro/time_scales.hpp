@@ -28,6 +28,9 @@ struct UtcInstant {
   /// Whole days go to jd1 and the time of day to jd2, so sub-microsecond digits survive. A
   /// non-finite input gives a non-finite instant, which make_time_scales() rejects.
   static UtcInstant from_unix_seconds(double unix_s);
+  /// Unix time of the instant: the inverse of from_unix_seconds (days and the time of day apart,
+  /// so the sub-microsecond digits survive).
+  [[nodiscard]] double unix_seconds() const;
   /// Modified Julian Date of the instant (UTC day count + fraction).
   [[nodiscard]] double mjd() const;
 };
