@@ -117,11 +117,14 @@ double TiltTable::correction_el_deg(double az_deg) const {
 
 CorrectedPosition apply_corrections(double raw_az_deg, double raw_el_deg,
                                     const PositionCorrections& corrections) {
-  const double az =
-      normalize_az_deg(raw_az_deg + corrections.offsets.az_deg - corrections.user.az_deg());
-  const double el = raw_el_deg + corrections.offsets.el_deg - corrections.user.el_deg();
+  const AzEl mount{normalize_az_deg(raw_az_deg + corrections.offsets.az_deg),
+                   normalize_el_deg(raw_el_deg + corrections.offsets.el_deg)};
+  const AzEl beam = calibration::corrected_reading(mount, corrections.model);
+  const double az = normalize_az_deg(beam.az_deg - corrections.user.az_deg());
+  const double el = beam.el_deg - corrections.user.el_deg();
   const double tilt = corrections.tilt.correction_el_deg(az);
-  return CorrectedPosition{az, normalize_el_deg(el + tilt), tilt};
+  return CorrectedPosition{az, normalize_el_deg(el + tilt), tilt, beam.az_deg - mount.az_deg,
+                           beam.el_deg - mount.el_deg};
 }
 
 }  // namespace azt::control

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "azt/calibration/pointing_model.hpp"
 #include "azt/util/result.hpp"
 
 namespace azt::control {
@@ -114,23 +115,30 @@ class TiltTable {
   std::array<double, kEntries> entries_deg_{};
 };
 
-/// Everything the Offset / ± / UP / DWN / tilt screens configure.
+/// Everything the Offset / ± / UP / DWN / tilt screens configure, and the fitted pointing model
+/// ([pointing], issue 16 §3: where the beam really points for what the encoders read).
 struct PositionCorrections {
   AxisOffsets offsets;
   UserCorrections user;
   TiltTable tilt;
+  calibration::PointingTerms model;
 };
 
 /// The corrected reading, and the tilt correction that went into it (for display).
 struct CorrectedPosition {
-  double az_deg = 0.0;       ///< [0, 360)
-  double el_deg = 0.0;       ///< [−90, 270)
-  double tilt_el_deg = 0.0;  ///< the tilt table's contribution
+  double az_deg = 0.0;        ///< [0, 360)
+  double el_deg = 0.0;        ///< [−90, 270)
+  double tilt_el_deg = 0.0;   ///< the tilt table's contribution
+  double model_az_deg = 0.0;  ///< the pointing model's contribution
+  double model_el_deg = 0.0;
 };
 
-/// Applies, in the seed's order: encoder offset (added), user correction (subtracted: see the
-/// sign conventions above), tilt (added; looked up at the azimuth corrected by the first two
-/// steps, because the table is indexed by where the antenna really points).
+/// Applies, in the seed's order: encoder offset (added), then the pointing model (the offset
+/// reading is the mount's angles; the model says where the beam points for them), user
+/// correction (subtracted: see the sign conventions above), tilt (added; looked up at the
+/// azimuth corrected by the steps before, because the table is indexed by where the antenna
+/// really points). The model and the tilt table overlap (AN and AW are a tilt): a station that
+/// fits the model leaves the table at zero.
 CorrectedPosition apply_corrections(double raw_az_deg, double raw_el_deg,
                                     const PositionCorrections& corrections);
 

@@ -1,0 +1,25 @@
+#pragma once
+// How far the beam misses over the sky (issue 16 §3): a mount that really behaves as `actual`,
+// pointed by a controller that believes `model`, sent to a grid of sky directions. With the
+// model equal to the mount, the error is zero everywhere; with no model, it is what the mount's
+// errors cost the operator.
+
+#include <cstddef>
+
+#include "azt/calibration/pointing_model.hpp"
+
+namespace azt::calibration {
+
+struct BeamError {
+  double rms_deg = 0.0;
+  double max_deg = 0.0;
+  std::size_t directions = 0;
+};
+
+/// Over azimuth 0–345° every 15° and elevation `min_el_deg`–`max_el_deg` every 5°: the angle
+/// between each direction and where the beam points when the controller believes it points
+/// there.
+BeamError beam_error_over_sky(const PointingTerms& actual, const PointingTerms& model,
+                              double min_el_deg = 10.0, double max_el_deg = 80.0);
+
+}  // namespace azt::calibration
