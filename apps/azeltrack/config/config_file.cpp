@@ -140,7 +140,8 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
                                  "log",
                                  "gps",
                                  "time",
-                                 "export"})) {
+                                 "export",
+                                 "pointing"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }

@@ -3,7 +3,9 @@
 #include <cstdint>
 
 #include "azt/proto/hub_frame.hpp"
+#include "azt/util/format_number.hpp"
 #include "config/config_file.hpp"
+#include "config/pointing_config.hpp"
 #include "config/station_setup_config.hpp"
 
 namespace azt::app {
@@ -70,7 +72,7 @@ sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& moun
   sim::PlantSetup plant;
   const ConfigSection sim_section =
       file.section("sim", {"az", "el", "frame_version", "frame_loss", "byte_corruption", "seed",
-                           "hub", "hub_firmware"});
+                           "hub", "hub_firmware", "mount_errors", "receiver"});
   const std::initializer_list<std::string_view> plant_keys = {
       "time_constant_s", "backlash_deg", "stiction_duty", "start_deg",   "min_deg",
       "max_deg",         "fault",        "fault_at_s",    "fault_counts"};
@@ -86,18 +88,50 @@ sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& moun
   read_plant_fault(sim_section.child("az", plant_keys), true, plant);
   read_plant_fault(sim_section.child("el", plant_keys), false, plant);
   read_link(sim_section, plant);
+  plant.pointing_errors = mount_errors_from(sim_section);
   return plant;
 }
 
 SimHubConfig sim_hub_from(const ConfigFile& file) {
-  const ConfigSection s = file.section("sim", {"az", "el", "frame_version", "frame_loss",
-                                               "byte_corruption", "seed", "hub", "hub_firmware"});
+  const ConfigSection s =
+      file.section("sim", {"az", "el", "frame_version", "frame_loss", "byte_corruption", "seed",
+                           "hub", "hub_firmware", "mount_errors", "receiver"});
   SimHubConfig hub;
   const std::string kind = s.text("hub").value_or("model");
   if (kind != "model" && kind != "firmware") s.fail("hub", "must be \"model\" or \"firmware\"");
   hub.firmware = kind == "firmware";
   hub.elf = s.text("hub_firmware").value_or("");
   return hub;
+}
+
+SimReceiverConfig sim_receiver_from(const ConfigFile& file) {
+  const ConfigSection s =
+      file.section("sim", {"az", "el", "frame_version", "frame_loss", "byte_corruption", "seed",
+                           "hub", "hub_firmware", "mount_errors", "receiver"})
+          .child("receiver", {"beamwidth_deg", "tsys_k", "noise_db", "rate_hz", "dish_m",
+                              "efficiency", "sun_k", "moon_k", "flux_mhz", "seed"});
+  SimReceiverConfig c;
+  sim::ReceiverSetup& r = c.receiver;
+  const auto positive = [&s](std::string_view key, double fallback, double max) {
+    const double v = s.number(key).value_or(fallback);
+    if (!(v > 0.0 && v <= max)) s.fail(key, "must be above 0 and at most " + format_number(max));
+    return v;
+  };
+  r.beamwidth_deg = positive("beamwidth_deg", r.beamwidth_deg, 30.0);
+  r.tsys_k = positive("tsys_k", r.tsys_k, 1e5);
+  r.rate_hz = positive("rate_hz", r.rate_hz, 100.0);
+  r.dish_m = positive("dish_m", r.dish_m, 100.0);
+  r.efficiency = positive("efficiency", r.efficiency, 1.0);
+  c.sun_k = positive("sun_k", c.sun_k, 1e8);
+  c.moon_k = positive("moon_k", c.moon_k, 1e4);
+  r.noise_db = s.number("noise_db").value_or(r.noise_db);
+  if (!(r.noise_db >= 0.0 && r.noise_db <= 10.0)) s.fail("noise_db", "must be 0 to 10");
+  if (auto seed = s.integer("seed")) r.seed = static_cast<std::uint64_t>(*seed);
+  c.flux_mhz = s.integer("flux_mhz").value_or(c.flux_mhz);
+  if (c.flux_mhz != 1296 && c.flux_mhz != 2304 && c.flux_mhz != 10368) {
+    s.fail("flux_mhz", "must be 1296, 2304 or 10368 (the catalogue's flux densities)");
+  }
+  return c;
 }
 
 SimConfig sim_config_from(const ConfigFile& file) {
@@ -107,6 +141,7 @@ SimConfig sim_config_from(const ConfigFile& file) {
   config.setup.station = station_setup_from(file, config.mount);
   config.setup.plant = plant_setup_from(file, config.mount, config.setup.station);
   config.hub = sim_hub_from(file);
+  config.receiver = sim_receiver_from(file);
   return config;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 
+#include "azt/sim/radio_receiver.hpp"
 #include "azt/sim/station_sim.hpp"
 #include "config/mount_config.hpp"
 #include "config/sky_config.hpp"
@@ -22,11 +24,23 @@ struct SimHubConfig {
   std::string elf;  ///< [sim] hub_firmware; empty: firmware/encoder-hub.elf beside the program
 };
 
+/// [sim.receiver]: the simulated receiver of pointing scans (issue 16 §3): its beam, noise and
+/// reading rate, the dish (for the radio sources' antenna temperatures at the catalogue's flux
+/// for flux_mhz), and the Sun's and Moon's brightness temperatures at the band. The defaults are
+/// a 10 m dish at 23 cm: a 1.6° beam, the quiet Sun at about 170 000 K, the Moon at 220 K.
+struct SimReceiverConfig {
+  sim::ReceiverSetup receiver;
+  double sun_k = 170000.0;
+  double moon_k = 220.0;
+  std::int64_t flux_mhz = 1296;
+};
+
 struct SimConfig {
   SkyConfig sky;
   MountConfig mount;
   sim::StationSimSetup setup;
   SimHubConfig hub;
+  SimReceiverConfig receiver;
 };
 
 /// [sim] hub and hub_firmware. Throws UsageError naming the key.
@@ -37,6 +51,9 @@ SimHubConfig sim_hub_from(const ConfigFile& file);
 /// UsageError naming the key on any invalid value.
 sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& mount,
                                  const control::StationSetup& station);
+
+/// [sim.receiver]. Throws UsageError naming the key.
+SimReceiverConfig sim_receiver_from(const ConfigFile& file);
 
 /// Throws UsageError naming the key on any missing or invalid value.
 SimConfig sim_config_from(const ConfigFile& file);

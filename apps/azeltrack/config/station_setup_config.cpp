@@ -6,6 +6,7 @@
 #include "azt/control/corrections.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "config/config_file.hpp"
+#include "config/pointing_config.hpp"
 
 namespace azt::app {
 namespace {
@@ -111,6 +112,7 @@ control::StationSetup station_setup_from(const ConfigFile& file, const MountConf
   station.corrections =
       read_corrections(file.section("corrections", {"az_offset_deg", "el_offset_deg", "az_user_deg",
                                                     "el_user_deg", "tilt_el_deg"}));
+  station.corrections.model = station_pointing_from(file);
   return station;
 }
 

@@ -33,7 +33,7 @@ double wrap_360(double deg) {
 double wrap_180(double deg) { return wrap_360(deg + 180.0) - 180.0; }
 
 control::AzEl to_az_el(const Vec& v) {
-  const double horizontal = std::hypot(v[0], v[1]);
+  const double horizontal = std::hypot(v[0], v[1]);  // atan2 needs no unit vector
   return {wrap_360(std::atan2(v[0], v[1]) / kRadPerDeg), std::atan2(v[2], horizontal) / kRadPerDeg};
 }
 
@@ -144,14 +144,37 @@ double separation_deg(const control::AzEl& a, const control::AzEl& b) {
   return std::atan2(std::sqrt(dot(c, c)), dot(u, v)) / kRadPerDeg;
 }
 
+namespace {
+
+/// The tangent plane at `source`: unit vectors of increasing azimuth and elevation there.
+struct TangentPlane {
+  Vec centre;
+  Vec along_az;
+  Vec along_el;
+};
+
+TangentPlane tangent_plane(const control::AzEl& source) {
+  const double az = source.az_deg * kRadPerDeg, el = source.el_deg * kRadPerDeg;
+  return {direction(source.az_deg, source.el_deg),
+          {std::cos(az), -std::sin(az), 0.0},
+          {-std::sin(el) * std::sin(az), -std::sin(el) * std::cos(az), std::cos(el)}};
+}
+
+}  // namespace
+
 SkyOffset offset_between(const control::AzEl& source, const control::AzEl& beam) {
-  return {wrap_180(beam.az_deg - source.az_deg) * std::cos(source.el_deg * kRadPerDeg),
-          beam.el_deg - source.el_deg};
+  const TangentPlane t = tangent_plane(source);
+  const Vec b = direction(beam.az_deg, beam.el_deg);
+  const double depth = dot(b, t.centre);
+  return {std::atan(dot(b, t.along_az) / depth) / kRadPerDeg,
+          std::atan(dot(b, t.along_el) / depth) / kRadPerDeg};
 }
 
 control::AzEl apply_offset(const control::AzEl& source, const SkyOffset& offset) {
-  const double cos_el = std::max(std::cos(source.el_deg * kRadPerDeg), 1e-6);
-  return {wrap_360(source.az_deg + offset.xel_deg / cos_el), source.el_deg + offset.el_deg};
+  const TangentPlane t = tangent_plane(source);
+  const double xi = std::tan(offset.xel_deg * kRadPerDeg);
+  const double eta = std::tan(offset.el_deg * kRadPerDeg);
+  return to_az_el(t.centre + xi * t.along_az + eta * t.along_el);  // to_az_el normalises
 }
 
 }  // namespace azt::calibration

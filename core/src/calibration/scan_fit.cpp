@@ -14,7 +14,8 @@ namespace {
 const double kFourLn2 = 4.0 * std::log(2.0);
 
 struct Point {
-  double x = 0.0;
+  SkyOffset planned;
+  double x = 0.0;  ///< where the antenna pointed
   double y = 0.0;
   double power = 0.0;  ///< linear
 };
@@ -27,7 +28,8 @@ std::vector<Point> good_points(const std::vector<ScanSample>& samples, std::size
   std::vector<Point> out;
   for (const ScanSample& s : samples) {
     if (s.power_db && std::isfinite(*s.power_db)) {
-      out.push_back({s.point.offset.xel_deg, s.point.offset.el_deg, linear(*s.power_db)});
+      const SkyOffset at = s.pointed.value_or(s.point.offset);
+      out.push_back({s.point.offset, at.xel_deg, at.el_deg, linear(*s.power_db)});
     } else {
       ++missing;
     }
@@ -53,10 +55,12 @@ double low_level(std::vector<double> powers) {
 struct Peak {
   double centre_deg = 0.0;
   double width_deg = 0.0;
-  double amplitude = 0.0;  ///< linear, above the baseline
-  double baseline = 0.0;   ///< linear, at the centre
-  double rms = 0.0;        ///< linear residual rms
-  double rms_db = 0.0;     ///< residual rms in dB (the receiver's noise as it reads it)
+  double amplitude = 0.0;       ///< linear, above the baseline
+  double baseline = 0.0;        ///< linear, at the centre
+  double rms = 0.0;             ///< linear residual rms
+  double rms_db = 0.0;          ///< residual rms in dB (the receiver's noise as it reads it)
+  double centre_std_deg = 0.0;  ///< the fit's standard error of the centre
+  double other_std_deg = 0.0;   ///< a raster's: of the other centre coordinate
 };
 
 /// rms of measured − fitted, in dB.
@@ -89,7 +93,15 @@ Result<Peak> fit_line(const std::vector<double>& s, const std::vector<double>& p
   std::vector<double> r(s.size()), model(s.size());
   f(q, r);
   for (std::size_t i = 0; i < s.size(); ++i) model[i] = p[i] + r[i];
-  return Peak{q[3], std::fabs(q[4]), q[2], q[0] + q[1] * q[3], fit.rms_residual, rms_db(p, model)};
+  const double centre_std = fit.std_errors.size() == 5 ? fit.std_errors[3] : 0.0;
+  return Peak{q[3],
+              std::fabs(q[4]),
+              q[2],
+              q[0] + q[1] * q[3],
+              fit.rms_residual,
+              rms_db(p, model),
+              centre_std,
+              0.0};
 }
 
 /// Round Gaussian + constant baseline over the grid: p = b + A·exp(−4 ln2 r²/W²).
@@ -118,7 +130,15 @@ Result<Peak> fit_grid(const std::vector<Point>& pts, double width, double& y_cen
     measured[i] = pts[i].power;
     model[i] = pts[i].power + r[i];
   }
-  return Peak{q[2], std::fabs(q[4]), q[1], q[0], fit.rms_residual, rms_db(measured, model)};
+  const bool has_errors = fit.std_errors.size() == 5;
+  return Peak{q[2],
+              std::fabs(q[4]),
+              q[1],
+              q[0],
+              fit.rms_residual,
+              rms_db(measured, model),
+              has_errors ? fit.std_errors[2] : 0.0,
+              has_errors ? fit.std_errors[3] : 0.0};
 }
 
 /// The checks every fitted peak must pass; `what` names the line in the message.
@@ -146,6 +166,7 @@ ScanFit to_scan_fit(const Peak& x, const Peak& y, double y_centre, std::size_t u
                     std::size_t missing) {
   ScanFit out;
   out.peak = {x.centre_deg, y_centre};
+  out.peak_std = {x.centre_std_deg, &x == &y ? x.other_std_deg : y.centre_std_deg};
   out.width_xel_deg = x.width_deg;
   out.width_el_deg = y.width_deg;
   out.peak_db = to_db(1.0 + x.amplitude / x.baseline);
@@ -158,11 +179,11 @@ ScanFit to_scan_fit(const Peak& x, const Peak& y, double y_centre, std::size_t u
 Result<ScanFit> fit_cross(const std::vector<Point>& pts, std::size_t missing, double bw) {
   std::vector<double> xs, xp, ys, yp;
   for (const Point& pt : pts) {
-    if (pt.y == 0.0) {
+    if (pt.planned.el_deg == 0.0) {
       xs.push_back(pt.x);
       xp.push_back(pt.power);
     }
-    if (pt.x == 0.0) {
+    if (pt.planned.xel_deg == 0.0) {
       ys.push_back(pt.y);
       yp.push_back(pt.power);
     }
@@ -212,7 +233,7 @@ Result<Peak> five_point_axis(double p_minus, double p0, double p_plus, double h)
   const double w2 = 2.0 * kFourLn2 * h * h / curvature;
   const double s0 = w2 * std::log(p_plus / p_minus) / (4.0 * kFourLn2 * h);
   const double amplitude = p0 * std::exp(kFourLn2 * s0 * s0 / w2);
-  return Peak{s0, std::sqrt(w2), amplitude, 0.0, 0.0, 0.0};
+  return Peak{s0, std::sqrt(w2), amplitude, 0.0, 0.0, 0.0, 0.0, 0.0};
 }
 
 Result<ScanFit> fit_five_point(const std::vector<ScanSample>& samples, double bw) {

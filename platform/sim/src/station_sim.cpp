@@ -9,8 +9,7 @@
 #include <cmath>
 #include <utility>
 
-#include "azt/control/ported_station.hpp"
-#include "azt/sim/simulated_station.hpp"
+#include "azt/sim/station_loop.hpp"
 
 namespace azt::sim {
 namespace {
@@ -36,60 +35,6 @@ struct Accumulator {
   [[nodiscard]] double rms() const {
     return n == 0 ? 0.0 : std::sqrt(sum_sq / static_cast<double>(n));
   }
-};
-
-/// The daemon's station (PortedStation) over a simulated station's ports, and the plants' truth.
-class StationLoop {
- public:
-  StationLoop(const StationSimSetup& setup, std::unique_ptr<SimulatedHub> hub)
-      : StationLoop(setup, make_simulated_station(
-                               setup.plant, hub ? std::move(hub) : make_model_hub(setup.plant))) {}
-
-  /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
-  void tick(double t_s, const std::optional<AzEl>& demand, const AzEl& rate_deg_s) {
-    control::Demand d;
-    d.position = demand;
-    station_.tick(t_s, d, rate_deg_s);
-    const control::Duties duties = station().duties();
-    const std::array<double, 2> duty{duties.az, duties.el};
-    const std::array<control::AxisStatus, 2> axes{station().az(), station().el()};
-    for (std::size_t i = 0; i < 2; ++i) {
-      if (axes.at(i).fault != control::FaultKind::None) {
-        max_duty_after_fault_ = std::max(max_duty_after_fault_, std::fabs(duty.at(i)));
-      }
-    }
-  }
-
-  [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
-  [[nodiscard]] const AxisPlant& az_plant() const { return rig_->plants().az(); }
-  [[nodiscard]] const AxisPlant& el_plant() const { return rig_->plants().el(); }
-  [[nodiscard]] const control::StationController& station() const { return station_.station(); }
-  [[nodiscard]] proto::HubCounters hub_counters() const { return rig_->hub().counters(); }
-
-  void collect_faults(std::vector<std::string>& out, double t_s) {
-    const std::pair<const char*, control::AxisStatus> axes[] = {{"az", station().az()},
-                                                                {"el", station().el()}};
-    for (std::size_t i = 0; i < 2; ++i) {
-      const auto& [name, axis] = axes[i];
-      if (axis.fault != control::FaultKind::None && !fault_reported_[i]) {
-        fault_reported_[i] = true;
-        out.push_back(std::string(name) + ": " + std::string(control::to_string(axis.fault)) +
-                      " at " + std::to_string(t_s) + " s: " + axis.reason);
-      }
-    }
-  }
-
- private:
-  StationLoop(const StationSimSetup& setup, SimulatedStation sim)
-      : rig_(std::move(sim.rig)),
-        station_(station_control_config(setup),
-                 AzEl{setup.plant.az.start_deg, setup.plant.el.start_deg},
-                 setup.station.corrections, std::move(sim.ports)) {}
-
-  std::shared_ptr<const PlantRig> rig_;
-  control::PortedStation station_;
-  std::array<bool, 2> fault_reported_{};
-  double max_duty_after_fault_ = 0.0;
 };
 
 AxisMetrics finish_axis(const Accumulator& acc, std::uint64_t starts, double hours, double travel) {

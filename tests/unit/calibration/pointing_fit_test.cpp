@@ -32,7 +32,7 @@ std::vector<PointingObservation> observe(const PointingTerms& mount_truth, std::
     EXPECT_TRUE(mount);
     mount->az_deg += noise(rng);
     mount->el_deg += noise(rng);
-    out.push_back({*mount, sky});
+    out.push_back({*mount, sky, true, true, {}});
   }
   return out;
 }

@@ -108,14 +108,31 @@ TEST(PointingModel, NearTheZenithTheAzimuthCorrectionIsHeld) {
   }
 }
 
-TEST(PointingModel, OffsetsRoundTripOnTheSky) {
+TEST(PointingModel, OffsetsAreTangentPlaneCoordinates) {
   const control::AzEl source{200.0, 60.0};
-  const SkyOffset o{0.5, -0.25};
-  const control::AzEl moved = apply_offset(source, o);
-  EXPECT_NEAR(moved.az_deg, 201.0, 1e-12);  // 0.5° of cross-elevation at E = 60° is 1° of azimuth
-  const SkyOffset back = offset_between(source, moved);
-  EXPECT_NEAR(back.xel_deg, 0.5, 1e-12);
-  EXPECT_NEAR(back.el_deg, -0.25, 1e-12);
+  // Small offsets are ΔA·cos E and ΔE.
+  const control::AzEl near = apply_offset(source, {0.01, -0.005});
+  EXPECT_NEAR(near.az_deg, 200.02, 1e-5);
+  EXPECT_NEAR(near.el_deg, 59.995, 1e-5);
+  // Along the tangent plane's axes the offset is the great-circle distance itself.
+  const control::AzEl across = apply_offset(source, {2.0, 0.0});
+  EXPECT_NEAR(separation_deg(source, across), 2.0, 1e-9);
+  const control::AzEl up = apply_offset(source, {0.0, -3.0});
+  EXPECT_NEAR(up.az_deg, 200.0, 1e-9);
+  EXPECT_NEAR(up.el_deg, 57.0, 1e-9);
+  // Near the zenith a cross-elevation line stays a line: 2° across is 2° away, not 2°/cos E of
+  // azimuth along a circle of constant elevation.
+  const control::AzEl high{10.0, 86.0};
+  EXPECT_NEAR(separation_deg(high, apply_offset(high, {2.0, 0.0})), 2.0, 1e-9);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> az(0.0, 360.0), el(0.0, 89.0), off(-5.0, 5.0);
+  for (int i = 0; i < 200; ++i) {
+    const control::AzEl s{az(rng), el(rng)};
+    const SkyOffset o{off(rng), off(rng)};
+    const SkyOffset back = offset_between(s, apply_offset(s, o));
+    EXPECT_NEAR(back.xel_deg, o.xel_deg, 1e-9);
+    EXPECT_NEAR(back.el_deg, o.el_deg, 1e-9);
+  }
   EXPECT_NEAR(separation_deg({0.0, 0.0}, {90.0, 0.0}), 90.0, 1e-12);
   EXPECT_NEAR(separation_deg({10.0, 89.0}, {190.0, 89.0}), 2.0, 1e-9);
 }

@@ -26,7 +26,7 @@ std::vector<ScanSample> measure(const std::vector<ScanPoint>& plan, const Source
     const double dx = p.offset.xel_deg - s.xel_deg, dy = p.offset.el_deg - s.el_deg;
     const double g =
         std::exp(-4.0 * std::log(2.0) * (dx * dx + dy * dy) / (s.width_deg * s.width_deg));
-    out.push_back({p, 10.0 * std::log10(1.0 + s.rise * g) + noise(rng)});
+    out.push_back({p, 10.0 * std::log10(1.0 + s.rise * g) + noise(rng), std::nullopt});
   }
   return out;
 }

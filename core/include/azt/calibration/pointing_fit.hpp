@@ -15,10 +15,18 @@
 namespace azt::calibration {
 
 /// One scan's result: the mount angles (after the encoder offset) at which the beam was on the
-/// source, and where the source was on the sky at that moment.
+/// source, and where the source was on the sky at that moment. A scan whose two lines were
+/// measured minutes apart gives one observation per line, each with the moment of its own line
+/// and only the offset that line measured (the source, and the mount's error, move meanwhile).
 struct PointingObservation {
   control::AzEl mount;
   control::AzEl sky;
+  bool has_xel = true;  ///< the cross-elevation offset was measured at this moment
+  bool has_el = true;   ///< the elevation offset was
+  /// The scan fit's standard error of each offset. When every measured offset has one, the fit
+  /// weights each by it (a Sun scan at 25 dB places the beam far better than Taurus A at 1 dB);
+  /// otherwise all count alike.
+  SkyOffset sigma;
 };
 
 /// Which terms to fit, in PointingTerms's order (IA, IE, CA, NPAE, AN, AW, SAG); the others are
@@ -35,7 +43,8 @@ struct PointingFit {
   std::size_t observations = 0;
 };
 
-/// Fails with the reason when there are fewer observations than the fitted terms plus one, when
+/// Fails with the reason when there are fewer measured offsets than twice the fitted terms plus
+/// two (a scan measures two), when
 /// the sky coverage cannot separate the terms (a singular fit: e.g. all sources at one
 /// elevation cannot tell CA from IA), or a term comes out beyond ±10°.
 Result<PointingFit> fit_pointing_model(const std::vector<PointingObservation>& observations,

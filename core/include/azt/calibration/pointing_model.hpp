@@ -61,15 +61,19 @@ control::AzEl corrected_reading(const control::AzEl& mount, const PointingTerms&
 /// Great-circle angle between two sky directions, degrees.
 double separation_deg(const control::AzEl& a, const control::AzEl& b);
 
-/// The offset of `beam` from `source` as the scans measure it: cross-elevation (the azimuth
-/// difference times cos E of the source, degrees on the sky) and elevation.
+/// An offset from a source as the scans use it: coordinates in the plane tangent to the sky at
+/// the source (the gnomonic projection), along increasing azimuth (cross-elevation) and
+/// elevation, in degrees. Small offsets are ΔA·cos E and ΔE; unlike those, they stay true
+/// lines on the sky near the zenith, where a line of constant elevation is a tight circle.
 struct SkyOffset {
   double xel_deg = 0.0;
   double el_deg = 0.0;
 };
+
+/// The offset of `beam` from `source` (tangent-plane coordinates; |offset| < 90°).
 SkyOffset offset_between(const control::AzEl& source, const control::AzEl& beam);
 
-/// `source` moved by `offset` (xel along the azimuth circle at the source's elevation).
+/// `source` moved by `offset`: the inverse of offset_between.
 control::AzEl apply_offset(const control::AzEl& source, const SkyOffset& offset);
 
 }  // namespace azt::calibration

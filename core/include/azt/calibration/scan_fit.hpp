@@ -19,10 +19,15 @@ namespace azt::calibration {
 struct ScanSample {
   ScanPoint point;
   std::optional<double> power_db;
+  /// Where the antenna pointed, relative to the source, by its encoders (a controller holds a
+  /// position within its window, not exactly on the point); nullopt: at point.offset. The fit
+  /// uses it as the coordinate; the planned point decides which line a reading belongs to.
+  std::optional<SkyOffset> pointed;
 };
 
 struct ScanFit {
   SkyOffset peak;              ///< add this to the ephemeris to put the beam on the source
+  SkyOffset peak_std;          ///< the fit's standard error of each (0 for a five-point scan)
   double width_xel_deg = 0.0;  ///< measured full width at half maximum, cross-elevation
   double width_el_deg = 0.0;   ///< and in elevation (the same for a raster's round beam)
   double peak_db = 0.0;        ///< the source's rise above the baseline (Y-factor), dB

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "azt/calibration/pointing_model.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "azt/sim/axis_plant.hpp"
 #include "azt/sim/model_hub.hpp"
@@ -28,6 +29,9 @@ struct PlantSetup {
   LinkFaults link;
   std::vector<ScheduledFault> faults;  ///< any order: injected in time order
   std::uint64_t seed = 1;              ///< for the link faults
+  /// Where the beam really points for the mount's angles ([sim.mount_errors], issue 16 §3): the
+  /// plants turn and the encoders read true, but the beam is off as on a real, imperfect mount.
+  calibration::PointingTerms pointing_errors;
 };
 
 }  // namespace azt::sim

@@ -1,0 +1,208 @@
+#include "cli/simulate_calibration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "azt/astro/catalogue.hpp"
+#include "azt/sim/calibration_sim.hpp"
+#include "azt/sim/sky_track.hpp"
+#include "common/sky_setup.hpp"
+#include "common/usage_error.hpp"
+
+namespace azt::app {
+namespace {
+
+constexpr double kSunSizeDeg = 0.53;   // the optical disc; the radio Sun is a little larger
+constexpr double kMoonSizeDeg = 0.52;  // mean apparent diameter
+
+struct SkyContext {
+  std::unique_ptr<astro::Ephemeris> ephemeris;
+  astro::UtcInstant start;
+};
+
+SkyContext sky_context(const SimConfig& c, const CalibrationScenario& o) {
+  SkyContext ctx{open_ephemeris(c.sky.settings.ephemeris), utc_now()};
+  if (!o.from.empty()) {
+    auto parsed = astro::parse_iso8601_utc(o.from);
+    if (!parsed) throw UsageError("--from: " + parsed.error().message);
+    ctx.start = *parsed;
+  }
+  time_scales_at(ctx.start, c.sky.settings.dut1_s);  // validates the instant
+  return ctx;
+}
+
+sim::SkyTrack track_of(const SimConfig& c, const SkyContext& ctx, const astro::Target& target) {
+  sim::SkyTrackSetup t;
+  t.ephemeris = ctx.ephemeris.get();
+  t.target = target;
+  t.observer = c.sky.settings.observer;
+  t.atmosphere = c.sky.settings.atmosphere;
+  t.start = ctx.start;
+  t.dut1_s = c.sky.settings.dut1_s;
+  t.leap_table = &leap_table();
+  return sim::make_sky_track(t);
+}
+
+std::optional<double> flux_at(const astro::RadioSource& s, std::int64_t mhz) {
+  if (mhz == 2304) return s.flux_2304_jy;
+  if (mhz == 10368) return s.flux_10368_jy;
+  return s.flux_1296_jy;
+}
+
+/// The Sun, the Moon and every catalogue source with a flux at the receiver's band.
+std::vector<sim::CalibrationSource> sources(const SimConfig& c, const SkyContext& ctx) {
+  const sim::SimulatedReceiver rx(c.receiver.receiver);
+  std::vector<sim::CalibrationSource> out;
+  out.push_back({"sun", track_of(c, ctx, astro::Target::sun()),
+                 rx.disc_k(c.receiver.sun_k, kSunSizeDeg), kSunSizeDeg});
+  out.push_back({"moon", track_of(c, ctx, astro::Target::moon()),
+                 rx.disc_k(c.receiver.moon_k, kMoonSizeDeg), kMoonSizeDeg});
+  for (const astro::RadioSource& s : astro::radio_sources()) {
+    if (const auto flux = flux_at(s, c.receiver.flux_mhz)) {
+      out.push_back({std::string(s.key), track_of(c, ctx, astro::Target::radio_source(s)),
+                     rx.point_k(*flux), 0.0});
+    }
+  }
+  return out;
+}
+
+sim::CalibrationSimSetup setup_for(const SimConfig& c, const SkyContext& ctx, double hours) {
+  sim::CalibrationSimSetup s;
+  s.station = c.setup;
+  s.receiver = c.receiver.receiver;
+  s.sources = sources(c, ctx);
+  s.duration_s = hours * 3600.0;
+  return s;
+}
+
+nlohmann::json terms_json(const calibration::PointingTerms& t) {
+  return {{"ia_deg", t.ia_deg},     {"ie_deg", t.ie_deg}, {"ca_deg", t.ca_deg},
+          {"npae_deg", t.npae_deg}, {"an_deg", t.an_deg}, {"aw_deg", t.aw_deg},
+          {"sag_deg", t.sag_deg}};
+}
+
+nlohmann::json beam_error_json(const calibration::BeamError& e) {
+  return {{"residual_rms_deg", e.rms_deg},
+          {"residual_max_deg", e.max_deg},
+          {"directions", e.directions}};
+}
+
+/// Where the controller had to point, relative to the source, for the beam to be on it: what a
+/// scan should find, known here because the mount's errors are the simulation's.
+std::optional<calibration::SkyOffset> true_offset(const SimConfig& c, const control::AzEl& sky) {
+  const auto mount = calibration::mount_for_sky(sky, c.setup.plant.pointing_errors);
+  if (!mount) return std::nullopt;
+  const auto believed = calibration::corrected_reading(*mount, c.setup.station.corrections.model);
+  return calibration::offset_between(sky, believed);
+}
+
+nlohmann::json scan_json(const SimConfig& c, const sim::ScanRecord& r,
+                         const astro::UtcInstant& start) {
+  nlohmann::json j{{"source", r.source},
+                   {"time", astro::format_iso8601_utc(astro::utc_plus(start, r.t_s))},
+                   {"az_deg", r.sky.az_deg},
+                   {"el_deg", r.sky.el_deg},
+                   {"scans", r.scans}};
+  if (!r.fit) {
+    j["refused"] = r.refused;
+    return j;
+  }
+  j["xel_offset_deg"] = r.fit->peak.xel_deg;
+  j["el_offset_deg"] = r.fit->peak.el_deg;
+  j["width_xel_deg"] = r.fit->width_xel_deg;
+  j["width_el_deg"] = r.fit->width_el_deg;
+  j["peak_db"] = r.fit->peak_db;
+  j["noise_db"] = r.fit->noise_db;
+  // Each line's offset at its own moment (calibration_sim.hpp).
+  const auto xel_truth = true_offset(c, r.sky_xel);
+  const auto el_truth = true_offset(c, r.sky);
+  if (xel_truth && el_truth) {
+    j["true_xel_offset_deg"] = xel_truth->xel_deg;
+    j["true_el_offset_deg"] = el_truth->el_deg;
+  }
+  return j;
+}
+
+double largest_difference(const calibration::PointingTerms& a,
+                          const calibration::PointingTerms& b) {
+  const auto va = a.as_array(), vb = b.as_array();
+  double worst = 0.0;
+  for (std::size_t i = 0; i < va.size(); ++i)
+    worst = std::max(worst, std::fabs(va.at(i) - vb.at(i)));
+  return worst;
+}
+
+double cpu_since(std::clock_t start) {
+  return static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+}
+
+}  // namespace
+
+int run_calibrate_scenario(const SimConfig& config, const CalibrationScenario& o) {
+  const SkyContext ctx = sky_context(config, o);
+  const std::clock_t cpu = std::clock();
+  const sim::CalibrationSimResult r = sim::simulate_calibration(setup_for(config, ctx, o.hours));
+  nlohmann::json scans = nlohmann::json::array();
+  for (const sim::ScanRecord& s : r.scans) scans.push_back(scan_json(config, s, ctx.start));
+  const calibration::PointingTerms& truth = config.setup.plant.pointing_errors;
+  nlohmann::json j{{"scenario", "calibrate"},
+                   {"injected", terms_json(truth)},
+                   {"before", beam_error_json(r.before)},
+                   {"after", beam_error_json(r.after)},
+                   {"scans", scans},
+                   {"faults", r.faults},
+                   {"simulated_s", r.simulated_s},
+                   {"cpu_s", cpu_since(cpu)}};
+  if (r.fit) {
+    j["fitted"] = terms_json(r.fit->terms);
+    j["std_errors"] = terms_json(r.fit->std_errors);
+    j["largest_term_error_deg"] = largest_difference(r.fit->terms, truth);
+    j["observation_rms_deg"] = {{"before", r.fit->rms_before_deg}, {"after", r.fit->rms_deg}};
+  } else {
+    j["fit_refused"] = r.fit_refused;
+  }
+  std::cout << (o.json ? j.dump() : j.dump(2)) << '\n';
+  return r.fit ? 0 : 1;
+}
+
+int run_scan_scenario(const SimConfig& config, const CalibrationScenario& o) {
+  if (o.source.empty()) throw UsageError("scan needs --source (sun, moon or a radio source)");
+  const SkyContext ctx = sky_context(config, o);
+  const sim::CalibrationSimSetup setup = setup_for(config, ctx, o.hours);
+  const auto found =
+      std::find_if(setup.sources.begin(), setup.sources.end(),
+                   [&o](const sim::CalibrationSource& s) { return s.name == o.source; });
+  if (found == setup.sources.end()) {
+    throw UsageError("--source must be sun, moon or a catalogue source with a flux at the band");
+  }
+  const std::clock_t cpu = std::clock();
+  const sim::ScanRecord r = sim::simulate_single_scan(setup, *found);
+  nlohmann::json j{
+      {"scenario", "scan"}, {"scan", scan_json(config, r, ctx.start)}, {"cpu_s", cpu_since(cpu)}};
+  if (r.fit) {
+    // The offsets as the Offset screen takes them (mount degrees: what to add to the azimuth
+    // and elevation), found and true, each at its line's moment.
+    const auto az_offset = [](const control::AzEl& sky, const control::AzEl& at) {
+      return std::remainder(at.az_deg - sky.az_deg, 360.0);
+    };
+    j["found"] = {
+        {"az_offset_deg", az_offset(r.sky_xel, calibration::apply_offset(r.sky_xel, r.fit->peak))},
+        {"el_offset_deg", calibration::apply_offset(r.sky, r.fit->peak).el_deg - r.sky.el_deg}};
+    const calibration::PointingTerms& errors = config.setup.plant.pointing_errors;
+    const auto mount_xel = calibration::mount_for_sky(r.sky_xel, errors);
+    const auto mount_el = calibration::mount_for_sky(r.sky, errors);
+    if (mount_xel && mount_el) {
+      j["true"] = {{"az_offset_deg", az_offset(r.sky_xel, *mount_xel)},
+                   {"el_offset_deg", mount_el->el_deg - r.sky.el_deg}};
+    }
+  }
+  std::cout << (o.json ? j.dump() : j.dump(2)) << '\n';
+  return r.fit ? 0 : 1;
+}
+
+}  // namespace azt::app
