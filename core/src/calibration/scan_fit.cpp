@@ -107,6 +107,7 @@ Result<Peak> fit_line(const std::vector<double>& s, const std::vector<double>& p
 /// Round Gaussian + constant baseline over the grid: p = b + A·exp(−4 ln2 r²/W²).
 Result<Peak> fit_grid(const std::vector<Point>& pts, double width, double& y_centre) {
   std::vector<double> powers;
+  powers.reserve(pts.size());
   for (const Point& pt : pts) powers.push_back(pt.power);
   const auto top = std::max_element(
       pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.power < b.power; });

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "azt/calibration/scan_session.hpp"
 #include "azt/sim/station_loop.hpp"
 
 namespace azt::sim {
@@ -15,8 +16,7 @@ using calibration::ScanSample;
 using calibration::SkyOffset;
 using control::AzEl;
 
-constexpr double kMaxSettleS = 120.0;  ///< a point the antenna cannot reach in this is missed
-constexpr double kIdleStepS = 600.0;   ///< nothing to scan: wait this long and look again
+constexpr double kIdleStepS = 600.0;  ///< nothing to scan: wait this long and look again
 
 double wrap_180(double deg) { return std::remainder(deg, 360.0); }
 
@@ -41,21 +41,24 @@ class ScanBench {
     while (t_ < until) step(std::nullopt, AzEl{});
   }
 
-  /// Sends the beam to `source` + `offset` and measures there: settle, then dwell.
-  /// A point the antenna does not settle on within kMaxSettleS is not measured (missing).
-  ScanSample measure(const CalibrationSource& source, const ScanPoint& point, AzEl& sky_now) {
-    const SkyOffset& off = point.offset;
-    double still_since = -1.0;
-    for (const double start = t_; t_ - start < kMaxSettleS;) {
-      follow(source, off);
-      const bool still = !loop_.station().az().moving && !loop_.station().el().moving;
-      if (!still) still_since = -1.0;
-      if (still && still_since < 0.0) still_since = t_;
-      if (still_since >= 0.0 && t_ - still_since >= setup_.settle_s) {
-        return dwell(source, point, sky_now);
+  /// Runs `session` to its end on `source`: the station follows source + the session's offset
+  /// every tick, the receiver reads at its rate.
+  void run(calibration::ScanSession& session, const CalibrationSource& source) {
+    const double period = 1.0 / setup_.receiver.rate_hz;
+    double next_reading = t_ + period;
+    while (!session.done()) {
+      follow(source, *session.offset());
+      const auto src = source.track(t_);
+      const auto believed = loop_.station().sky_position(t_);
+      std::optional<SkyOffset> pointed;
+      if (src && believed) pointed = calibration::offset_between(*src, *believed);
+      const bool driving = loop_.station().az().moving || loop_.station().el().moving;
+      session.tick(t_, driving, loop_.station().encoder_reading(), pointed);
+      if (t_ >= next_reading) {
+        session.reading(t_, receiver_.read_db(true_beam(), sky_at(t_)));
+        next_reading += period;
       }
     }
-    return ScanSample{point, std::nullopt, std::nullopt};
   }
 
   /// The emitters at `t_s`.
@@ -94,46 +97,6 @@ class ScanBench {
     return calibration::beam_on_sky(mount, setup_.station.plant.pointing_errors);
   }
 
-  /// Averages `dwell_s` worth of readings taken while the antenna stands still: the controller
-  /// not driving and the encoders reading what they read one reading earlier (a reading while an
-  /// axis moves, or coasts after the drive stops, pairs the power with a position the encoders
-  /// report a frame late: a bias along the source's motion). Gives up after three times as long.
-  /// Averages `dwell_s` worth of readings taken while the antenna stands still: the controller
-  /// not driving and the encoders reading what they read one reading earlier (a reading while an
-  /// axis moves, or coasts after the drive stops, pairs the power with a position the encoders
-  /// report a frame late: a bias along the source's motion). Gives up after three times as long.
-  ScanSample dwell(const CalibrationSource& source, const ScanPoint& point, AzEl& sky_now) {
-    const double period = 1.0 / setup_.receiver.rate_hz;
-    const auto wanted = static_cast<int>(std::lround(setup_.dwell_s * setup_.receiver.rate_hz));
-    double power = 0.0, xel = 0.0, el = 0.0;
-    int good = 0;
-    std::optional<control::AzEl> last_reading;
-    for (const double give_up = t_ + 3.0 * setup_.dwell_s; good < wanted && t_ < give_up;) {
-      const double until = t_ + period;
-      while (t_ < until) follow(source, point.offset);
-      const auto src = source.track(t_);
-      const auto believed = loop_.station().sky_position(t_);
-      const auto reading = loop_.station().encoder_reading();
-      const bool unchanged = reading && last_reading && reading->az_deg == last_reading->az_deg &&
-                             reading->el_deg == last_reading->el_deg;
-      last_reading = reading;
-      const bool still = !loop_.station().az().moving && !loop_.station().el().moving && unchanged;
-      if (!src || !believed || !still) continue;
-      power += std::pow(10.0, receiver_.read_db(true_beam(), sky_at(t_)) / 10.0);
-      const SkyOffset at = calibration::offset_between(*src, *believed);
-      xel += at.xel_deg;
-      el += at.el_deg;
-      sky_now = *src;
-      ++good;
-    }
-    ScanSample sample{point, std::nullopt, std::nullopt};
-    if (good == 0) return sample;  // no reading: missing, counted by the fit
-    const double n = good;
-    sample.power_db = 10.0 * std::log10(power / n);
-    sample.pointed = SkyOffset{xel / n, el / n};
-    return sample;
-  }
-
   const CalibrationSimSetup& setup_;
   StationLoop loop_;
   SimulatedReceiver receiver_;
@@ -143,47 +106,27 @@ class ScanBench {
 
 struct ScanOutcome {
   Result<calibration::ScanFit> fit = fail("not scanned");
-  AzEl sky_xel;  ///< the source when the cross-elevation line was measured (its middle)
-  AzEl sky_el;   ///< and when the elevation line was
+  AzEl sky_xel;  ///< the source when the cross-elevation line's readings centre
+  AzEl sky_el;   ///< and when the elevation line's do
 };
 
-/// The order to measure a plan in. `there_and_back` (a cross scan): each line, then the same
-/// line reversed, so that the line's readings centre on one instant, the middle of its two
-/// passes (the mount's error changes as the source moves: a line's offset belongs to its own
-/// moment).
-std::vector<ScanPoint> measuring_order(const std::vector<ScanPoint>& plan, bool there_and_back) {
-  if (!there_and_back) return plan;
-  const auto half = static_cast<std::ptrdiff_t>(plan.size() / 2);
-  std::vector<ScanPoint> out(plan.begin(), plan.begin() + half);
-  out.insert(out.end(), plan.rend() - half, plan.rend());
-  out.insert(out.end(), plan.begin() + half, plan.end());
-  out.insert(out.end(), plan.rbegin(), plan.rend() - half);
-  return out;
-}
-
-/// The scan's points about `centre`, measured in measuring_order.
-ScanOutcome run_scan(ScanBench& bench, const CalibrationSource& source,
-                     const calibration::ScanSpec& spec, SkyOffset centre, bool there_and_back) {
-  auto plan = calibration::plan_scan(spec);
-  if (!plan) return {plan.error(), {}, {}};
-  const std::vector<ScanPoint> points = measuring_order(plan.value(), there_and_back);
-  // The instants each line's readings centre on: the turn of its pass (there and back), or the
-  // middle of the scan.
-  const std::size_t line = plan->size() / 2;
-  const std::size_t xel_at = there_and_back ? line : plan->size() / 2;
-  const std::size_t el_at = there_and_back ? 3 * line : plan->size() / 2;
-  std::vector<ScanSample> samples;
+/// One scan of `source` about `centre`, as the daemon runs it (calibration::ScanSession).
+ScanOutcome run_scan(ScanBench& bench, const CalibrationSimSetup& setup,
+                     const CalibrationSource& source, const calibration::ScanSpec& spec,
+                     SkyOffset centre) {
+  calibration::ScanTiming timing;
+  timing.settle_s = setup.settle_s;
+  timing.dwell_s = setup.dwell_s;
+  auto session = calibration::ScanSession::start(spec, timing, centre, bench.now());
+  if (!session) return {session.error(), {}, {}};
+  bench.run(session.value(), source);
   ScanOutcome out;
-  for (const ScanPoint& p : points) {
-    ScanPoint at = p;
-    at.offset = {p.offset.xel_deg + centre.xel_deg, p.offset.el_deg + centre.el_deg};
-    AzEl sky_now;
-    samples.push_back(bench.measure(source, at, sky_now));
-    samples.back().point = p;  // the line it belongs to; `pointed` holds where it was
-    if (samples.size() == xel_at) out.sky_xel = sky_now;
-    if (samples.size() == el_at) out.sky_el = sky_now;
-  }
-  out.fit = calibration::fit_scan(spec.kind, samples, spec.beamwidth_deg);
+  out.fit = session->fit();
+  const auto at = [&source](std::optional<double> t) {
+    return t ? source.track(*t).value_or(AzEl{}) : AzEl{};
+  };
+  out.sky_xel = at(session->xel_moment_s());
+  out.sky_el = at(session->el_moment_s());
   return out;
 }
 
@@ -202,10 +145,10 @@ ScanRecord scan_source(ScanBench& bench, const CalibrationSimSetup& setup,
                        const CalibrationSource& source) {
   ScanRecord rec;
   rec.source = source.name;
-  ScanOutcome first = run_scan(bench, source, scan_spec(setup, ScanKind::Cross), {}, false);
+  ScanOutcome first = run_scan(bench, setup, source, scan_spec(setup, ScanKind::Cross), {});
   rec.scans = 1;
   if (!first.fit) {
-    first = run_scan(bench, source, scan_spec(setup, ScanKind::Raster), {}, false);
+    first = run_scan(bench, setup, source, scan_spec(setup, ScanKind::Raster), {});
     ++rec.scans;
   }
   if (!first.fit) {
@@ -214,7 +157,7 @@ ScanRecord scan_source(ScanBench& bench, const CalibrationSimSetup& setup,
     return rec;
   }
   ScanOutcome refine =
-      run_scan(bench, source, scan_spec(setup, ScanKind::Cross), first.fit->peak, true);
+      run_scan(bench, setup, source, scan_spec(setup, ScanKind::Cross), first.fit->peak);
   ++rec.scans;
   rec.t_s = bench.now();
   rec.sky_xel = refine.sky_xel;

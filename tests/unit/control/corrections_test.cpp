@@ -207,3 +207,29 @@ TEST(Normalize, AzimuthAndElevationRanges) {
 
 }  // namespace
 }  // namespace azt::control
+
+namespace azt::control {
+namespace {
+
+TEST(Corrections, ThePointingModelActsAfterTheEncoderOffsetAndBeforeTheUserCorrection) {
+  // The model says where the beam points for the mount's (offset-corrected) angles: an
+  // elevation index error of 0.2° (the encoder reads 0.2° high) lowers the reading by 0.2°; the
+  // user's UP still raises the pointing on top of it; the contributions are shown.
+  PositionCorrections c;
+  c.offsets = AxisOffsets::make(1.0, 0.5).value();
+  c.model.ie_deg = 0.2;
+  c.model.ia_deg = -0.3;
+  c.user = UserCorrections::from_deg(0.0, 0.1).value();
+  const CorrectedPosition p = apply_corrections(100.0, 30.0, c);
+  EXPECT_NEAR(p.az_deg, 101.3, 1e-9);
+  EXPECT_NEAR(p.el_deg, 30.5 - 0.2 - 0.1, 1e-9);
+  EXPECT_NEAR(p.model_az_deg, 0.3, 1e-9);
+  EXPECT_NEAR(p.model_el_deg, -0.2, 1e-9);
+  // No model: nothing changes and nothing is shown.
+  const CorrectedPosition plain = apply_corrections(100.0, 30.0, PositionCorrections{});
+  EXPECT_DOUBLE_EQ(plain.az_deg, 100.0);
+  EXPECT_DOUBLE_EQ(plain.model_el_deg, 0.0);
+}
+
+}  // namespace
+}  // namespace azt::control
