@@ -141,7 +141,8 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
                                  "gps",
                                  "time",
                                  "export",
-                                 "pointing"})) {
+                                 "pointing",
+                                 "receiver"})) {
       file.fail("unknown table or key '" + std::string(key.str()) + "'");
     }
   }

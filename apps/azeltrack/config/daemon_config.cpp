@@ -365,6 +365,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   read_servers(file, c);
   const ConfigSection sats = file.section("satellites", {"file", "mask"});
   c.gps = gps_config_from(file);
+  c.receiver = receiver_config_from(file);
   c.time = time_config_from(file);
   c.exports = export_config_from(file);
   c.satellites.file = sats.text("file").value_or("");

@@ -226,6 +226,7 @@ json DaemonConsole::state() {
           {"time", p_.clock != nullptr ? p_.clock->to_json() : json(nullptr)},
           {"network", p_.network ? p_.network() : json(nullptr)},
           {"gps", p_.gps ? p_.gps() : json{{"state", "off"}}},
+          {"receiver", p_.receiver ? p_.receiver() : json{{"source", "none"}, {"state", "off"}}},
           {"faults", p_.antenna.faults()},
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
           {"commands", p_.motions != nullptr ? p_.motions->to_json() : json::array()},

@@ -53,6 +53,8 @@ struct ConsoleParts {
   ClockWatch* clock = nullptr;
   /// The network links (issue 15 §3; null when not given: `network` is null).
   std::function<nlohmann::json()> network;
+  /// The receiver of pointing scans (issue 16 §3; null when not given: `receiver` is off).
+  std::function<nlohmann::json()> receiver;
 };
 
 class DaemonConsole final : public ConsoleModel {

@@ -28,6 +28,7 @@
 #include "station/gps_receiver.hpp"
 #include "station/guarded_antenna.hpp"
 #include "station/network_watch.hpp"
+#include "station/power_receiver.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
 #include "station/sequencer_runner.hpp"
@@ -116,6 +117,7 @@ class StationDaemon {
   std::unique_ptr<ClockWatch> clock_;        ///< [time]: is the clock to be trusted
   std::unique_ptr<NetworkWatch> network_;    ///< the links, for the console
   std::unique_ptr<AzelDatExport> azel_dat_;  ///< [export] azel_dat; none when not set
+  std::unique_ptr<PowerReceiver> receiver_;  ///< [receiver]: the power readings of scans
   StationCommands commands_;
   StationService service_;
   boost::asio::signal_set signals_;

@@ -105,6 +105,9 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       io_, NetworkWatchParts{5.0, status_off_loop(), [] { return read_network_reading(); },
                              [](const std::string& line) { spdlog::info("{}", line); }});
   azel_dat_ = make_azel_dat_export();
+  receiver_ = std::make_unique<PowerReceiver>(
+      io_, config_.receiver, [this] { return now_s(); },
+      [](const std::string& line) { spdlog::warn("{}", line); });
 }
 
 std::unique_ptr<AzelDatExport> StationDaemon::make_azel_dat_export() {
@@ -318,17 +321,30 @@ void StationDaemon::open_console() {
   }
   console_ = std::make_unique<ConsoleServer>(
       io_,
-      ConsoleParts{config_, store_, *ephemeris_, sky_, modes_, commands_, *antenna_, &satellites_,
-                   [this] { return now_s(); }, [] { return unix_now_s(); }, servers,
+      ConsoleParts{config_,
+                   store_,
+                   *ephemeris_,
+                   sky_,
+                   modes_,
+                   commands_,
+                   *antenna_,
+                   &satellites_,
+                   [this] { return now_s(); },
+                   [] { return unix_now_s(); },
+                   servers,
                    [this] {
                      nlohmann::json io = guard_->state();
                      io["sequencer"] = sequencer_->state();
                      return io;
                    },
-                   off_loop(), &events_, &motions_,
+                   off_loop(),
+                   &events_,
+                   &motions_,
                    [](const std::string& line) { spdlog::warn("{}", line); },
-                   [this] { return gps_->to_json(); }, clock_.get(),
-                   [this] { return network_->to_json(); }},
+                   [this] { return gps_->to_json(); },
+                   clock_.get(),
+                   [this] { return network_->to_json(); },
+                   [this] { return receiver_->to_json(); }},
       [](const std::string& line) { spdlog::warn("{}", line); });
   spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
 }

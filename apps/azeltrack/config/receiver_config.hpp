@@ -1,0 +1,25 @@
+#pragma once
+// [receiver] (issue 16 §3): where the power readings of pointing scans come from. `rtl_power`:
+// its CSV lines from a FIFO or a file it appends to (`rtl_power -f … -i 1 - > PATH`; one line,
+// one reading: a range that fits one hop); `udp`: datagrams of one dB value per line from any SDR
+// program; `none`: no receiver (the default).
+
+#include <string>
+
+namespace azt::app {
+
+class ConfigFile;
+
+struct ReceiverConfig {
+  enum class Source { None, RtlPower, Udp };
+  Source source = Source::None;
+  std::string path;                ///< rtl_power: the FIFO or file
+  std::string bind = "127.0.0.1";  ///< udp
+  unsigned short port = 0;         ///< udp
+  double stale_s = 2.0;            ///< no reading for this long: the receiver is silent
+};
+
+/// Throws UsageError naming the key on any invalid value.
+ReceiverConfig receiver_config_from(const ConfigFile& file);
+
+}  // namespace azt::app
