@@ -8,6 +8,7 @@
 
 #include "azt/astro/bands.hpp"
 #include "azt/astro/time_scales.hpp"
+#include "azt/calibration/scan_plan.hpp"
 #include "azt/timekeeping/ntp_servers.hpp"
 #include "common/sky_report.hpp"
 #include "common/usage_error.hpp"
@@ -227,6 +228,7 @@ json DaemonConsole::state() {
           {"network", p_.network ? p_.network() : json(nullptr)},
           {"gps", p_.gps ? p_.gps() : json{{"state", "off"}}},
           {"receiver", p_.receiver ? p_.receiver() : json{{"source", "none"}, {"state", "off"}}},
+          {"scan", p_.scanner ? p_.scanner->to_json() : json{{"state", "idle"}}},
           {"faults", p_.antenna.faults()},
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
           {"commands", p_.motions != nullptr ? p_.motions->to_json() : json::array()},
@@ -369,6 +371,16 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     done(ActResult{});
     return;
   }
+  if (action == "scan") {
+    done(ActResult{act_scan(body, source), std::nullopt});
+    return;
+  }
+  if (action == "scan/stop") {
+    if (p_.scanner != nullptr) p_.scanner->stop("stopped by " + source);
+    done(ActResult{p_.scanner != nullptr ? p_.scanner->to_json() : json{{"state", "idle"}},
+                   std::nullopt});
+    return;
+  }
   if (action == "faults/clear") {
     p_.antenna.clear_faults();
     p_.log(source + ": latched faults cleared");
@@ -382,6 +394,7 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
       {"config/band", &DaemonConsole::act_band},
       {"config/dx", &DaemonConsole::act_dx},
       {"config/offsets", &DaemonConsole::act_offsets},
+      {"scan/apply", &DaemonConsole::act_scan_apply},
       {"config/tilt", &DaemonConsole::act_tilt},
       {"config/park", &DaemonConsole::act_park},
       {"config/control", &DaemonConsole::act_control},
@@ -427,6 +440,70 @@ TargetRequest DaemonConsole::target_request(const json& body) {
     return PositionTarget{number(body, "az_deg"), number(body, "el_deg")};
   }
   throw ApiError(400, "name", "expected name, ra_deg/dec_deg, park or az_deg/el_deg");
+}
+
+/// The scan's settings from the request, checked before anything moves (the plan's own
+/// refusals name their field first: "beamwidth_deg must be …").
+std::pair<calibration::ScanSpec, calibration::ScanTiming> scan_settings(const json& body) {
+  calibration::ScanSpec spec;
+  if (body.contains("kind")) {
+    auto kind = calibration::parse_scan_kind(text(body, "kind"));
+    if (!kind) throw ApiError(400, "kind", kind.error().message);
+    spec.kind = *kind;
+  }
+  spec.beamwidth_deg = number(body, "beamwidth_deg");
+  if (body.contains("points_per_line")) {
+    spec.points_per_line = static_cast<std::size_t>(
+        whole_number(body, "points_per_line", 5, 101, "points_per_line must be odd, 5 to 101"));
+  }
+  spec.half_span_beams = optional_number(body, "half_span_beams").value_or(spec.half_span_beams);
+  spec.reference_beams = optional_number(body, "reference_beams").value_or(spec.reference_beams);
+  calibration::ScanTiming timing;
+  timing.settle_s = optional_number(body, "settle_s").value_or(timing.settle_s);
+  timing.dwell_s = optional_number(body, "dwell_s").value_or(timing.dwell_s);
+  if (!(timing.settle_s >= 0.0 && timing.settle_s <= 60.0)) {
+    throw ApiError(400, "settle_s", "settle_s must be 0 to 60");
+  }
+  if (!(timing.dwell_s > 0.0 && timing.dwell_s <= 60.0)) {
+    throw ApiError(400, "dwell_s", "dwell_s must be above 0 and at most 60");
+  }
+  if (auto plan = calibration::plan_scan(spec); !plan) {
+    const std::string& why = plan.error().message;
+    throw ApiError(400, why.substr(0, why.find(' ')), why);
+  }
+  return {spec, timing};
+}
+
+json DaemonConsole::act_scan(const json& body, const std::string& source) {
+  if (p_.scanner == nullptr) throw ApiError(503, "", "no pointing scans here");
+  const auto [spec, timing] = scan_settings(body);
+  const std::string name = text(body, "source");
+  if (auto ready = p_.scanner->ready(p_.monotonic_s()); !ready) {
+    throw ApiError(503, "", ready.error().message);
+  }
+  json pointed = act_target(json{{"name", name}}, source);  // tracks the source, or refuses
+  if (!p_.sky.target()) throw ApiError(400, "source", "a scan needs a sky source");
+  auto started = p_.scanner->start(p_.sky.target()->name, spec, timing, p_.monotonic_s());
+  if (!started) throw ApiError(503, "", started.error().message);
+  p_.log(source + ": pointing scan of " + p_.sky.target()->name);
+  pointed["scan"] = p_.scanner->to_json();
+  return pointed;
+}
+
+void DaemonConsole::act_scan_apply(const json& /*body*/, ActDone done) {
+  if (p_.scanner == nullptr || !p_.scanner->found()) {
+    throw ApiError(409, "", "no scan result to apply: run a scan to its end first");
+  }
+  const ScanOffsets found = *p_.scanner->found();
+  // The beam was on the source where the readings said source + found: take it off the reading.
+  const control::AxisOffsets& now = p_.config.station.corrections.offsets;
+  const double az = now.az_deg - found.az_offset_deg;
+  const double el = now.el_deg - found.el_offset_deg;
+  if (auto ok = control::AxisOffsets::make(az, el); !ok) {
+    throw ApiError(409, "", "the offsets would go out of range: " + ok.error().message);
+  }
+  p_.scanner->applied();
+  act_offsets(json{{"az_offset_deg", az}, {"el_offset_deg", el}}, std::move(done));
 }
 
 json DaemonConsole::act_target(const json& body, const std::string& source) {

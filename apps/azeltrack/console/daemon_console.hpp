@@ -20,6 +20,7 @@
 #include "console/console_model.hpp"
 #include "console/moon_planner.hpp"
 #include "station/clock_watch.hpp"
+#include "station/pointing_scanner.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
 #include "station/sky_follower.hpp"
@@ -55,6 +56,8 @@ struct ConsoleParts {
   std::function<nlohmann::json()> network;
   /// The receiver of pointing scans (issue 16 §3; null when not given: `receiver` is off).
   std::function<nlohmann::json()> receiver;
+  /// Pointing scans (issue 16 §3; null: none here, `scan` is idle and scans are refused).
+  PointingScanner* scanner = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -88,6 +91,10 @@ class DaemonConsole final : public ConsoleModel {
   /// The console's target body, parsed into the one request type (a malformed field: ApiError).
   static TargetRequest target_request(const nlohmann::json& body);
   nlohmann::json act_target(const nlohmann::json& body, const std::string& source);
+  /// POST /api/scan: points at the source and starts a pointing scan (issue 16 §3).
+  nlohmann::json act_scan(const nlohmann::json& body, const std::string& source);
+  /// POST /api/scan/apply: the last scan's offsets into [corrections] (saved atomically).
+  void act_scan_apply(const nlohmann::json& body, ActDone done);
   // The settings: each validates the body at once (ApiError), then saves off the loop.
   void act_correction(const nlohmann::json& body, ActDone done);
   void act_station(const nlohmann::json& body, ActDone done);

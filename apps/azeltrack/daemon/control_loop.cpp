@@ -83,8 +83,10 @@ void StationDaemon::tick() {
     if (modes_.mode() == control::Mode::Track) {
       fix = sky_.at(unix_now_s());
     }
-    const control::Demand demand = modes_.demand(fix ? std::optional(fix->position) : std::nullopt);
+    const std::optional<control::AzEl> source = fix ? std::optional(fix->position) : std::nullopt;
+    const control::Demand demand = modes_.demand(scan_aim(source));
     antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
+    scan_tick(now, source);
   }
   report_faults();
   // Mode changes by PC programs and new faults reach open consoles at once.
@@ -95,6 +97,32 @@ void StationDaemon::tick() {
     if (console_) console_->push_now();
   }
   notifier_.watchdog();
+}
+
+std::optional<control::AzEl> StationDaemon::scan_aim(const std::optional<control::AzEl>& source) {
+  if (!scanner_->running()) return source;
+  // The scan ends with any other command (STOP, another target, a PC program) or a fault.
+  const bool on_source = modes_.mode() == control::Mode::Track && sky_.target() &&
+                         sky_.target()->name == scanner_->source();
+  if (!on_source) {
+    scanner_->stop("stopped: the station was given another command");
+  } else if (!antenna_->faults().empty()) {
+    scanner_->stop("stopped: " + antenna_->faults().front());
+  }
+  if (!scanner_->running() || !source) return source;
+  return scanner_->aim(*source);
+}
+
+void StationDaemon::scan_tick(double now, const std::optional<control::AzEl>& source) {
+  if (!scanner_->running()) return;
+  const auto position = antenna_->position(now);
+  std::optional<control::AzEl> believed;
+  if (position) believed = control::AzEl{position->az_deg, position->el_deg};
+  scanner_->tick(now, !position || position->moving, antenna_->encoder_reading(), source, believed);
+  if (!scanner_->running()) {
+    spdlog::info("scan of {}: {}", scanner_->source(), scanner_->to_json().value("state", ""));
+    if (console_) console_->push_now();
+  }
 }
 
 void StationDaemon::report_faults() {

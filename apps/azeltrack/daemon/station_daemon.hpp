@@ -28,6 +28,7 @@
 #include "station/gps_receiver.hpp"
 #include "station/guarded_antenna.hpp"
 #include "station/network_watch.hpp"
+#include "station/pointing_scanner.hpp"
 #include "station/power_receiver.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
@@ -84,6 +85,11 @@ class StationDaemon {
   void arm_tick();
   void tick();
   void report_faults();
+  /// While a pointing scan runs: the position to demand (the source plus the scan's offset),
+  /// ending the scan on any other command or a fault; otherwise `source` as it is.
+  std::optional<control::AzEl> scan_aim(const std::optional<control::AzEl>& source);
+  /// After the antenna's tick: the scan sees the antenna and the receiver's readings.
+  void scan_tick(double now, const std::optional<control::AzEl>& source);
   /// An exception escaped a handler: the loop's state is unknown, so the station goes safe and
   /// the process exits (systemd restarts it, motionless until a client asks).
   void fail_safe(const std::string& why);
@@ -112,12 +118,13 @@ class StationDaemon {
   SatelliteTracker satellites_;
   RateLimitedLog log_;
   RecentEvents events_;
-  RecentEvents motions_;                     ///< accepted motion commands, with their sources
-  std::unique_ptr<GpsReceiver> gps_;         ///< [gps]: gpsd, the GPS state and the site survey
-  std::unique_ptr<ClockWatch> clock_;        ///< [time]: is the clock to be trusted
-  std::unique_ptr<NetworkWatch> network_;    ///< the links, for the console
-  std::unique_ptr<AzelDatExport> azel_dat_;  ///< [export] azel_dat; none when not set
-  std::unique_ptr<PowerReceiver> receiver_;  ///< [receiver]: the power readings of scans
+  RecentEvents motions_;                      ///< accepted motion commands, with their sources
+  std::unique_ptr<GpsReceiver> gps_;          ///< [gps]: gpsd, the GPS state and the site survey
+  std::unique_ptr<ClockWatch> clock_;         ///< [time]: is the clock to be trusted
+  std::unique_ptr<NetworkWatch> network_;     ///< the links, for the console
+  std::unique_ptr<AzelDatExport> azel_dat_;   ///< [export] azel_dat; none when not set
+  std::unique_ptr<PowerReceiver> receiver_;   ///< [receiver]: the power readings of scans
+  std::unique_ptr<PointingScanner> scanner_;  ///< a pointing scan, while one runs
   StationCommands commands_;
   StationService service_;
   boost::asio::signal_set signals_;

@@ -108,6 +108,8 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   receiver_ = std::make_unique<PowerReceiver>(
       io_, config_.receiver, [this] { return now_s(); },
       [](const std::string& line) { spdlog::warn("{}", line); });
+  scanner_ = std::make_unique<PointingScanner>(
+      config_.receiver.source == ReceiverConfig::Source::None ? nullptr : &receiver_->feed());
 }
 
 std::unique_ptr<AzelDatExport> StationDaemon::make_azel_dat_export() {
@@ -344,7 +346,8 @@ void StationDaemon::open_console() {
                    [this] { return gps_->to_json(); },
                    clock_.get(),
                    [this] { return network_->to_json(); },
-                   [this] { return receiver_->to_json(); }},
+                   [this] { return receiver_->to_json(); },
+                   scanner_.get()},
       [](const std::string& line) { spdlog::warn("{}", line); });
   spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
 }
