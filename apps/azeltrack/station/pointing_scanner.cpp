@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "azt/calibration/pointing_model.hpp"
 
@@ -57,12 +58,12 @@ void PointingScanner::tick(double now_s, bool driving, const std::optional<contr
   session_->tick(now_s, driving, encoders, pointed);
   if (!had_xel && session_->xel_moment_s()) sky_xel_ = source_now;
   if (!had_el && session_->el_moment_s()) sky_el_ = source_now;
-  for (const calibration::PowerReading& r : feed_->readings_since(last_reading_s_)) {
+  // The readings that arrived since the last tick (oldest first), each passed on once.
+  const std::vector<calibration::PowerReading> fresh = feed_->readings_since(last_reading_s_);
+  for (const calibration::PowerReading& r : fresh) {
     if (r.t_s > last_reading_s_) session_->reading(r.t_s, r.power_db);
   }
-  if (const auto newest = feed_->readings_since(last_reading_s_); !newest.empty()) {
-    last_reading_s_ = newest.back().t_s;
-  }
+  if (!fresh.empty()) last_reading_s_ = fresh.back().t_s;
   if (session_->done()) finish();
 }
 

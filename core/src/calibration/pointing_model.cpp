@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "azt/control/axis_geometry.hpp"
+
 namespace azt::calibration {
 namespace {
 
@@ -25,10 +27,7 @@ Vec direction(double az_deg, double el_deg) {
   return {std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el)};
 }
 
-double wrap_360(double deg) {
-  const double w = std::fmod(deg, 360.0);
-  return w < 0.0 ? w + 360.0 : w;
-}
+using control::wrap_360;
 
 double wrap_180(double deg) { return wrap_360(deg + 180.0) - 180.0; }
 
