@@ -45,6 +45,7 @@ with open(os.path.join(TMP, "sats.tle"), "wb") as f:
 with open(CONFIG, "w") as f:
     f.write("# a comment that every save must keep\n" + station_toml(PORT, mount_rate_deg_s=10.0) + f"""[satellites]
 file = "sats.tle"
+beamwidth_deg = 30.0
 [[spacecraft]]
 name = "Moon table"
 file = "{os.path.join(ROOT, "tests/data/horizons/moon_vectors_csv_kms.txt")}"
@@ -140,6 +141,10 @@ try:
     check(code == 200 and t["name"] == "sat:ISS (ZARYA)" and t["satellite"]["phase"] in
           ("waiting for AOS", "tracking") and t["satellite"]["aos"] < t["satellite"]["los"],
           f"track sat:iss: {code} {r} {t}")
+    loss = t["satellite"].get("planned_loss", {})
+    check(loss.get("beyond_deg") == 15.0 and loss.get("seconds", -1) >= 0.0 and
+          (loss["seconds"] == 0.0) == (loss.get("from") is None),
+          f"the planned loss, half of [satellites] beamwidth_deg, before AOS: {loss}")
     path = request("GET", "/api/sky?hours=1")[1]["pass_path"]
     # Every 10 s and the pass's end: a grazing pass of a few seconds still has AOS and LOS.
     check(len(path) >= 2 and path[0]["utc"] < path[-1]["utc"],

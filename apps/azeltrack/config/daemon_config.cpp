@@ -363,7 +363,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
                 c.sequencer.outputs.size());
   read_antenna(file, c);
   read_servers(file, c);
-  const ConfigSection sats = file.section("satellites", {"file", "mask"});
+  const ConfigSection sats = file.section("satellites", {"file", "mask", "beamwidth_deg"});
   c.gps = gps_config_from(file);
   c.receiver = receiver_config_from(file);
   c.time = time_config_from(file);
@@ -374,6 +374,10 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
     (void)parse_horizon_mask("mask", c.satellites.mask);
   } catch (const UsageError& e) {
     sats.fail("mask", std::string(e.what()).substr(6));
+  }
+  c.satellites.beamwidth_deg = sats.number("beamwidth_deg").value_or(20.0);
+  if (!(c.satellites.beamwidth_deg > 0.0 && c.satellites.beamwidth_deg <= 180.0)) {
+    sats.fail("beamwidth_deg", "must be above 0 and at most 180");
   }
   c.web = read_web(
       file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));

@@ -89,6 +89,9 @@ struct GpioConfig {
 struct SatellitesConfig {
   std::string file;        ///< TLE or OMM; relative to the configuration's directory; empty: none
   std::string mask = "0";  ///< horizon: one elevation, or "AZ:MIN_EL,…" sectors
+  /// The satellite antenna's half-power beamwidth: a moment of a pass beyond half of it from the
+  /// satellite counts as lost (the pass planner's loss, issue 16 §4).
+  double beamwidth_deg = 20.0;
 };
 
 /// [web]: the console's HTTP server and who may act through it (docs/web-api.md).

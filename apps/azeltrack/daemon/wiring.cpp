@@ -240,6 +240,7 @@ SatelliteSettings StationDaemon::satellite_settings() const {
   s.dut1_s = config_.sky.settings.dut1_s;
   s.site = config_.sky.settings.observer;
   s.mount = track::mount_geometry(config_.station);  // the mount's, not the plant's
+  s.mount.loss_error_deg = config_.satellites.beamwidth_deg / 2.0;
   return s;
 }
 

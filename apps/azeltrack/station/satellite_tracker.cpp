@@ -23,6 +23,13 @@ std::string iso(double unix_s) {
   return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
 }
 
+/// The log's word on a pass the mount cannot fly on the satellite throughout.
+std::string loss_note(const track::PassPlan& plan) {
+  if (plan.loss_s <= 0.0) return "";
+  return ", " + std::to_string(std::lround(plan.loss_s)) + " s planned beyond " +
+         std::to_string(std::lround(plan.loss_error_deg)) + "° from " + iso(plan.loss_from_s);
+}
+
 }  // namespace
 
 SatelliteTracker::SatelliteTracker(SatelliteSettings settings,
@@ -147,7 +154,7 @@ void SatelliteTracker::plan_next(double unix_s, double mount_az_deg) {
   for (double* t : {&next.pass.aos_s, &next.pass.tca_s, &next.pass.los_s}) *t += unix_s;
   log_("satellites: " + sat->elements.label() + " next pass AOS " + iso(next.pass.aos_s) +
        ", max el " + std::to_string(static_cast<int>(std::lround(p.max_el_deg))) + "°" +
-       (next.plan.flip ? ", flipped" : ""));
+       (next.plan.flip ? ", flipped" : "") + loss_note(next.plan));
   problem_.clear();
   planned_ = std::move(next);
 }
@@ -212,6 +219,14 @@ nlohmann::json SatelliteTracker::status(double unix_s) const {
     j["max_el_deg"] = planned_->pass.max_el_deg;
     j["flip"] = planned_->plan.flip;
     j["planned_max_error_deg"] = planned_->plan.max_error_deg;
+    // The planned loss, known before AOS: how long the beam will be further than half the
+    // beamwidth from the satellite (a swing through the travel, or a wait at a stop), and when.
+    const track::PassPlan& plan = planned_->plan;
+    j["planned_loss"] = {
+        {"seconds", plan.loss_s},
+        {"beyond_deg", plan.loss_error_deg},
+        {"from", plan.loss_s > 0.0 ? nlohmann::json(iso(plan.loss_from_s)) : nullptr},
+        {"to", plan.loss_s > 0.0 ? nlohmann::json(iso(plan.loss_to_s)) : nullptr}};
   } else {
     j["phase"] = "no pass planned";
   }

@@ -70,6 +70,7 @@ track::MountGeometry mount_geometry(const StationSimSetup& setup) {
   m.el = setup.station.el_range;
   m.max_az_rate_deg_s = setup.plant.az.max_rate_deg_s;
   m.max_el_rate_deg_s = setup.plant.el.max_rate_deg_s;
+  m.ramp_s = setup.station.az_control.ramp_s + setup.station.az_control.time_constant_s;
   return m;
 }
 
@@ -93,6 +94,8 @@ Result<PassSimResult> simulate_pass(const std::vector<track::SkyPoint>& sky,
 
   PassSimResult out;
   out.flip = plan.value().flip;
+  out.planned_max_error_deg = plan.value().max_error_deg;
+  out.planned_loss_s = plan.value().loss_s;
   const auto& track = plan.value().track;
   for (std::size_t i = 1; i < track.size(); ++i) {
     out.pass_span_deg += std::fabs(track[i].az_deg - track[i - 1].az_deg);
@@ -141,6 +144,7 @@ Result<PassSimResult> simulate_pass(const std::vector<track::SkyPoint>& sky,
     const double accepted = track::separation_deg(planned.az_deg, planned.el_deg, sat_az, sat_el);
     out.max_error_deg = std::max(out.max_error_deg, err);
     out.max_excess_deg = std::max(out.max_excess_deg, err - accepted);
+    if (err > mount.loss_error_deg) out.loss_s += dt;
     sum_sq += err * err;
     ++n;
   }

@@ -14,8 +14,10 @@ namespace {
 
 constexpr double kEpochUnixS = 1709296200.0;  // 2024-03-01 12:30 UTC, the element set's epoch
 
-SatelliteTracker iss_tracker(const astro::Observer& site) {
+SatelliteTracker iss_tracker(const astro::Observer& site,
+                             const track::MountGeometry& mount = track::MountGeometry{}) {
   SatelliteSettings s;
+  s.mount = mount;
   s.file = AZT_TEST_DATA_DIR "/sat/iss_2024.tle";
   s.site = site;
   SatelliteTracker t(s, [](const std::string&) {});
@@ -70,6 +72,34 @@ TEST(SatelliteTrackerSite, APassUnderWayIsFinishedAsPlanned) {
   const std::string next_there = aos(t, los_s + 10.0);
   EXPECT_NE(next_there, first["aos"].get<std::string>());
   EXPECT_NE(next_there, next_here);
+}
+
+// Issue 16 §4: the loss a pass will cost is known before AOS. A rotator with 90° of travel cannot
+// follow the ISS across the sky; a flip mount follows every pass.
+TEST(SatelliteTrackerLoss, ThePlannedLossIsReportedBeforeAOS) {
+  track::MountGeometry short_travel;
+  short_travel.az = control::AzimuthRange{0.0, 90.0};
+  short_travel.loss_error_deg = 5.0;
+  SatelliteTracker t = iss_tracker(kFn06, short_travel);
+  ASSERT_TRUE(t.follow("25544", kEpochUnixS, 0.0));
+  (void)aos(t, kEpochUnixS);
+  const auto st = t.status(kEpochUnixS);
+  ASSERT_EQ(st["phase"], "waiting for AOS");
+  const auto& loss = st["planned_loss"];
+  EXPECT_GT(loss["seconds"].get<double>(), 10.0);
+  EXPECT_DOUBLE_EQ(loss["beyond_deg"].get<double>(), 5.0);
+  EXPECT_GE(unix_of(loss["from"]), unix_of(st["aos"]) - 1.0);
+  EXPECT_LE(unix_of(loss["to"]), unix_of(st["los"]) + 1.0);
+  EXPECT_LE(loss["seconds"].get<double>(), unix_of(loss["to"]) - unix_of(loss["from"]) + 1e-6);
+
+  track::MountGeometry flip;
+  flip.el = control::ElevationRange{0.0, 180.0};
+  SatelliteTracker f = iss_tracker(kFn06, flip);
+  ASSERT_TRUE(f.follow("25544", kEpochUnixS, 0.0));
+  (void)aos(f, kEpochUnixS);
+  const auto none = f.status(kEpochUnixS)["planned_loss"];
+  EXPECT_EQ(none["seconds"].get<double>(), 0.0);
+  EXPECT_TRUE(none["from"].is_null());
 }
 
 }  // namespace

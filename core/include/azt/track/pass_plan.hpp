@@ -1,22 +1,25 @@
 #pragma once
-// Pointing through a satellite pass (issue 7 §2). The plan is made once, at AOS, for the whole
-// pass, so the antenna never unwinds mid-way:
+// Pointing through a satellite pass (issue 7 §2, issue 16 §4). The plan is made once, before
+// AOS, for the whole pass, so the antenna never re-plans mid-way:
 //
-//  * the mount azimuth is the sky track unwrapped (continuous) and shifted by whole turns to fit
-//    the rotator's travel, choosing, among the shifts that fit, the one nearest where the mount
-//    stands (least pre-positioning). A pass that sweeps more than any shift holds (north-crossing
-//    passes on a 0–360° rotator, some on 450°) waits at the stop for the part it cannot reach:
-//    an accepted error, never an unwind;
-//  * on a flip mount (elevation travel to 180°) the pass may be flown flipped, az + 180° and
-//    el' = 180° − el, which moves a crossing of the north stop to the south; or normal up to the
-//    highest point and flipped after it, which takes an overhead pass over the top instead of
-//    swinging the azimuth;
-//  * where the track asks more than the mount's rates (the keyhole near the zenith of a 90°
-//    mount), the path is rate limited forwards and backwards in time and the two averaged: the
-//    swing starts early by half as much as it ends late, centred on the pass's highest point,
-//    where cos(el) makes an azimuth error cost least.
-// The option with the least worst-case pointing error wins; then the least pre-positioning; then
-// not flipping.
+//  * the mount azimuth is a path no faster than the mount's rate, found as the one that keeps the
+//    beam nearest the satellite at its worst moment (a minimax over the pass, exact for the
+//    azimuth: rate_limited_path.hpp). At each moment the beam is within e of the satellite for
+//    azimuths within asin(sin e / cos el) of its azimuth, the elevation set to the best for that
+//    azimuth, so near the zenith (the keyhole of a 90° mount) the path may lag and lead, and it
+//    does so where cos(el) makes it cheapest;
+//  * the azimuth may stand in any turn of the travel (on a 450° rotator a north crossing runs on
+//    into the overlap); on a flip mount (elevation travel to 180°) in any half turn, since az +
+//    180° at 180° − el is the same direction: a north crossing flown flipped, an overhead pass over
+//    the top, a near-overhead pass tilted past the zenith rather than swung round;
+//  * when no path stays within `loss_error_deg` of the satellite throughout (the pass sweeps more
+//    than the travel), the plan loses the least time it can: one stretch in which the beam may be
+//    off, placed where it is shortest (near the zenith, for high passes, where the azimuth is
+//    cheapest to swing) and, among equally short ones, where the worst error is least. The mount
+//    either swings once through its travel there or waits at a stop; the loss is reported before
+//    AOS;
+//  * the path begins in the turn nearest where the mount stands (least pre-positioning), and a
+//    flip mount is flipped only where flipping helps.
 
 #include <vector>
 
@@ -43,6 +46,13 @@ struct MountGeometry {
   control::ElevationRange el;
   double max_az_rate_deg_s = 6.0;
   double max_el_rate_deg_s = 3.0;
+  /// A moment of the pass is lost when the beam is further than this from the satellite: half
+  /// the antenna's beamwidth (3 dB down).
+  double loss_error_deg = 10.0;
+  /// How long the azimuth takes to reach full speed from rest (the controller's soft start and
+  /// the motor's response): a swing is that much longer at either end than its path, and the
+  /// loss reported includes it.
+  double ramp_s = 1.3;
   /// Elevation travel to 180°: the mount can look past the zenith.
   [[nodiscard]] bool can_flip() const { return el.max_deg >= 179.999; }
 };
@@ -54,7 +64,11 @@ struct PassPlan {
   bool flip = false;
   std::vector<MountPoint> track;  ///< at the sky samples' instants
   double az_travel_deg = 0.0;     ///< along the planned track
-  double max_error_deg = 0.0;     ///< the worst pointing error the plan itself accepts (keyhole)
+  double max_error_deg = 0.0;     ///< the worst pointing error the plan itself accepts
+  double loss_error_deg = 10.0;   ///< the error beyond which a moment counts as lost
+  double loss_s = 0.0;            ///< how long the plan points further than that
+  double loss_from_s = 0.0;       ///< the first lost moment (when loss_s > 0)
+  double loss_to_s = 0.0;         ///< the last lost moment
   /// The planned mount position at `t_s`, interpolated; the first point before the pass (where to
   /// pre-position), the last after it.
   [[nodiscard]] MountPoint at(double t_s) const;

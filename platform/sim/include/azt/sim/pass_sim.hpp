@@ -39,6 +39,11 @@ struct PassSimResult {
   double az_travel_deg = 0.0;  ///< the shaft, from AOS to LOS
   double pass_span_deg = 0.0;  ///< azimuth the planned path must sweep (unwrapped, total)
   int unwinds = 0;  ///< demand jumps of 180° or more between ticks (re-planning mid-pass)
+  /// The time the beam was further than the mount's loss_error_deg from the satellite.
+  double loss_s = 0.0;
+  /// What the plan reported before AOS: its own worst error and lost time.
+  double planned_max_error_deg = 0.0;
+  double planned_loss_s = 0.0;
   std::vector<std::string> faults;
 };
 
