@@ -15,10 +15,30 @@ quantities from the formulas of WSJT-X's lib/astro.f90 (WSJTX/wsjtx on GitHub, s
 The Sun's separation is astropy's; the lit fraction is from the phase angle at the Moon between
 the Sun and the observer (vectors, not the elongation formula azeltrack uses).
 
+The echo widths (WSJT-X's Width and DxWid) follow three files; line numbers are those of
+WSJTX/wsjtx at commit c04dd8d (May 2026; the three files unchanged since July 2022):
+  - lib/ephem.f90, subroutine ephem, lines 27-31 and 73: the Moon's topocentric apparent RA/Dec
+    (true equator and equinox of date) one minute before the instant (jj=1) and at it (jj=2),
+    each handed to libration() with the UTC Julian date;
+  - lib/libration.f90, subroutine libration, lines 12-35: the optical libration of Meeus,
+    Astronomical Algorithms ch. 53 (no physical libration; W without Meeus's nutation term): RA/Dec
+    precessed to J2000 (sla_PRECES) and turned into ecliptic longitude and latitude of date
+    (sla_EQECL); I = 1.54242 deg, F = 93.2720993 + 483202.0175273 T - 0.0034029 T^2 deg,
+    Omega = 2.182439196 - 33.7570446085 T + 3.6236526e-5 T^2 rad, W = lambda - Omega,
+    A = atan2(sin W cos beta cos I - sin beta sin I, cos W cos beta), l = A - F,
+    b = asin(-sin W cos beta sin I - sin beta cos I);
+  - lib/astro0.f90, subroutine astro0, lines 25-47: dl, db = the change of l, b over that
+    minute in degrees, for the station (1) and the DX (2); width1 = 0.5*6741*f_GHz*2*sqrt(dl1^2 +
+    db1^2) (self echo), width2 = 0.5*6741*f_GHz*sqrt((dl1 + dl2)^2 + (db1 + db2)^2) (DX echo).
+Here the RA/Dec are astropy's TETE seen from the station. sla_PRECES to J2000 followed by
+sla_EQECL's own precession back to the date cancel (but for EQECL being handed jd - 2400000 as
+an MJD, half a day's precession, 0.07"), so the ecliptic of date is reached by one rotation
+through the IAU 1976 mean obliquity (sla_ECMAT), as EQECL applies it.
+
 Usage: /usr/bin/python3 eme_oracle.py CASES.csv OUT.csv
 CASES.csv: id,utc_iso,lat1_deg,lon1_deg,height1_m,lat2_deg,lon2_deg,height2_m,freq_mhz
 OUT.csv:   id,az1_deg,el1_deg,par1_deg,par2_deg,dpol_deg,mnr_db,ecl_lon_deg,tsky_k,dgrd_db,
-           sun_sep_deg,illumination,dist1_km
+           sun_sep_deg,illumination,dist1_km,width1_hz,width2_hz
 """
 import csv
 import math
@@ -59,6 +79,57 @@ def ecliptic_longitude(ra_deg, dec_deg):
     return (math.degrees(math.atan2(ye, x))) % 360.0
 
 
+def wrap_pi(x):
+    """x (radians, numpy) wrapped into [-pi, pi)."""
+    import numpy as np
+    return np.mod(x + np.pi, 2.0 * np.pi) - np.pi
+
+
+def optical_libration(jd_utc, ra_rad, dec_rad):
+    """WSJT-X lib/libration.f90 (Meeus ch. 53) on numpy arrays: the sub-observer point (l, b) in
+    radians for topocentric apparent RA/Dec of date at UTC Julian date jd_utc."""
+    import numpy as np
+    t = (jd_utc - 2451545.0) / 36525.0
+    # sla_ECMAT: the IAU 1976 mean obliquity of date, arcseconds.
+    eps = np.radians((84381.448 - 46.8150 * t - 0.00059 * t * t + 0.001813 * t ** 3) / 3600.0)
+    x = np.cos(dec_rad) * np.cos(ra_rad)
+    y = np.cos(dec_rad) * np.sin(ra_rad)
+    z = np.sin(dec_rad)
+    lam = np.arctan2(y * np.cos(eps) + z * np.sin(eps), x)
+    beta = np.arcsin(-y * np.sin(eps) + z * np.cos(eps))
+    inc = np.radians(1.54242)
+    f = np.radians(np.mod(93.2720993 + 483202.0175273 * t - 0.0034029 * t * t, 360.0))
+    omega = 2.182439196 - 33.7570446085 * t + 3.6236526e-5 * t * t
+    w = lam - omega
+    a = np.arctan2(np.sin(w) * np.cos(beta) * np.cos(inc) - np.sin(beta) * np.sin(inc),
+                   np.cos(w) * np.cos(beta))
+    lon = wrap_pi(a - f)  # libration.f90 lines 33-34 fold 'round the back' angles
+    lat = np.arcsin(-np.sin(w) * np.cos(beta) * np.sin(inc) - np.sin(beta) * np.cos(inc))
+    return lon, lat
+
+
+def libration_change_deg(t, loc):
+    """ephem.f90: (dl, db) in degrees over the minute before each instant, seen from loc."""
+    import numpy as np
+    import astropy.units as u
+    from astropy.coordinates import TETE, get_body
+    points = []
+    for ti in (t - 60.0 * u.s, t):
+        tete = get_body("moon", ti, loc).transform_to(TETE(obstime=ti, location=loc))
+        points.append(optical_libration(ti.utc.jd1 + ti.utc.jd2, tete.ra.rad, tete.dec.rad))
+    dl = np.degrees(wrap_pi(points[1][0] - points[0][0]))
+    return dl, np.degrees(points[1][1] - points[0][1])
+
+
+def echo_widths_hz(change1, change2, freq_mhz):
+    """astro0.f90 lines 39-47: self and DX echo widths (Hz) from each station's (dl, db)."""
+    import numpy as np
+    (dl1, db1), (dl2, db2) = change1, change2
+    hz_per_deg_min = 0.5 * 6741.0 * freq_mhz / 1000.0
+    return (hz_per_deg_min * 2.0 * np.hypot(dl1, db1),
+            hz_per_deg_min * np.hypot(dl1 + dl2, db1 + db2))
+
+
 def nint(x):
     return int(math.floor(x + 0.5)) if x >= 0 else -int(math.floor(-x + 0.5))
 
@@ -85,6 +156,8 @@ def main(argv):
         moon = get_body("moon", t, loc)
         altaz = moon.transform_to(AltAz(obstime=t, location=loc, pressure=0 * u.hPa))
         places.append((loc, moon, altaz))
+    width1, width2 = echo_widths_hz(libration_change_deg(t, places[0][0]),
+                                    libration_change_deg(t, places[1][0]), col("freq_mhz"))
     loc1, moon1, altaz1 = places[0]
     tete1 = moon1.transform_to(TETE(obstime=t, location=loc1))
     sun1 = get_body("sun", t, loc1)
@@ -97,7 +170,8 @@ def main(argv):
     with open(argv[2], "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["id", "az1_deg", "el1_deg", "par1_deg", "par2_deg", "dpol_deg", "mnr_db",
-                    "ecl_lon_deg", "tsky_k", "dgrd_db", "sun_sep_deg", "illumination", "dist1_km"])
+                    "ecl_lon_deg", "tsky_k", "dgrd_db", "sun_sep_deg", "illumination", "dist1_km",
+                    "width1_hz", "width2_hz"])
         for i, r in enumerate(rows):
             az1, el1 = altaz1.az.deg[i], altaz1.alt.deg[i]
             az2, el2 = places[1][2].az.deg[i], places[1][2].alt.deg[i]
@@ -118,7 +192,7 @@ def main(argv):
             tskymin = 13.0 * (408.0e6 / freq) ** 2.6
             dgrd = -10.0 * math.log10((tsky + 80.0) / (tskymin + 80.0)) + dbmoon
             w.writerow([r["id"], az1, el1, p1, p2, dpol, mnr, lon, tsky, dgrd, sep[i],
-                        (1.0 + cos_i[i]) / 2.0, dist])
+                        (1.0 + cos_i[i]) / 2.0, dist, width1[i], width2[i]])
     return 0
 
 
