@@ -4,12 +4,11 @@
 #include <cmath>
 
 #include "azt/control/axis_geometry.hpp"
+#include "azt/util/angles.hpp"
 
 namespace azt::calibration {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kRadPerDeg = kPi / 180.0;
 /// Within this of the zenith the azimuth correction is held (see corrected_reading).
 constexpr double kZenithHoldDeg = 5.0;
 

@@ -1,4 +1,5 @@
 #include "azt/eme/libration.hpp"
+#include "azt/util/angles.hpp"
 
 #include <array>
 #include <cmath>
@@ -6,8 +7,6 @@
 namespace azt::eme {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kRadPerDeg = kPi / 180.0;
 constexpr double kJ2000Jd = 2451545.0;
 constexpr double kDaysPerCentury = 36525.0;
 constexpr double kWidthHzPerGhzDegPerMin = 0.5 * 6741.0;  // WSJT-X lib/astro0.f90

@@ -5,14 +5,10 @@
 #include "azt/eme/libration.hpp"
 #include "azt/eme/polarisation.hpp"
 #include "azt/eme/sky_temperature.hpp"
+#include "azt/util/angles.hpp"
 
 namespace azt::eme {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kRadPerDeg = kPi / 180.0;
-
-}  // namespace
+namespace {}  // namespace
 
 double separation_deg(double ra1_deg, double dec1_deg, double ra2_deg, double dec2_deg) {
   // Vincenty's formula on the sphere: accurate from arcseconds to 180°.

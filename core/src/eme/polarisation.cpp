@@ -1,12 +1,11 @@
 #include "azt/eme/polarisation.hpp"
+#include "azt/util/angles.hpp"
 
 #include <cmath>
 
 namespace azt::eme {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kRadPerDeg = kPi / 180.0;
 constexpr double kMnrFloor = 0.056234;  // 10^(−25/20): MNR is shown up to 25 dB
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "azt/eme/sky_temperature.hpp"
+#include "azt/util/angles.hpp"
 
 #include <array>
 #include <cmath>
@@ -6,8 +7,6 @@
 namespace azt::eme {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kRadPerDeg = kPi / 180.0;
 constexpr double kCmbK = 2.7;
 constexpr double kSpectralIndex = 2.6;
 constexpr double kTableMhz = 144.0;

@@ -1,4 +1,5 @@
 #include "azt/orbit/passes.hpp"
+#include "azt/util/angles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +7,6 @@
 
 namespace azt::orbit {
 namespace {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 struct Sample {
   double t = 0.0;
@@ -76,7 +75,7 @@ class Search {
   [[nodiscard]] double step(const Sample& s, double lowest) const {
     const double gap_deg = lowest - s.look.el_deg;
     if (gap_deg <= 1.0 || s_.horizon_km <= 0.0 || s_.max_speed_km_s <= 0.0) return s_.base_step_s;
-    return std::max(s_.base_step_s, 0.8 * gap_deg * kDegToRad * s_.horizon_km / s_.max_speed_km_s);
+    return std::max(s_.base_step_s, 0.8 * gap_deg * kRadPerDeg * s_.horizon_km / s_.max_speed_km_s);
   }
 
   /// After a pass, sampling starts again just after its end.

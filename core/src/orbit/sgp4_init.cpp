@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "azt/orbit/sgp4.hpp"
+#include "azt/util/angles.hpp"
 #include "sgp4_internal.hpp"
 
 namespace azt::orbit {
@@ -30,12 +31,11 @@ const Gravity& wgs72() {
 }
 
 double gmst_1982(double jd_ut1) {
-  constexpr double kDegToRad = std::numbers::pi / 180.0;
   const double tut1 = (jd_ut1 - 2451545.0) / 36525.0;
   // Seconds of sidereal time (Aoki et al. 1982), then 1/240 to degrees.
   double temp = -6.2e-6 * tut1 * tut1 * tut1 + 0.093104 * tut1 * tut1 +
                 (876600.0 * 3600 + 8640184.812866) * tut1 + 67310.54841;
-  temp = std::fmod(temp * kDegToRad / 240.0, kTwoPi);
+  temp = std::fmod(temp * kRadPerDeg / 240.0, kTwoPi);
   if (temp < 0.0) temp += kTwoPi;
   return temp;
 }
@@ -199,17 +199,16 @@ Sgp4::Sgp4(Elements elements, const Sgp4Model& model)
 
 Result<Sgp4> Sgp4::make(const Elements& elements) {
   if (Result<bool> ok = validate(elements); !ok) return ok.error();
-  constexpr double kDegToRad = std::numbers::pi / 180.0;
   // rad/min per rev/day, written as the reference writes it (1440 / 2π, then a division).
   constexpr double kXpdotp = 1440.0 / (2.0 * std::numbers::pi);
   Sgp4Model m;
   m.epoch_days_1950 = (elements.epoch_jd + elements.epoch_jd_frac) - 2433281.5;
   m.bstar = elements.bstar;
   m.ecco = elements.eccentricity;
-  m.argpo = elements.arg_perigee_deg * kDegToRad;
-  m.inclo = elements.inclination_deg * kDegToRad;
-  m.mo = elements.mean_anomaly_deg * kDegToRad;
-  m.nodeo = elements.raan_deg * kDegToRad;
+  m.argpo = elements.arg_perigee_deg * kRadPerDeg;
+  m.inclo = elements.inclination_deg * kRadPerDeg;
+  m.mo = elements.mean_anomaly_deg * kRadPerDeg;
+  m.nodeo = elements.raan_deg * kRadPerDeg;
   m.no_kozai = elements.mean_motion_rev_day / kXpdotp;
 
   const InitlTerms t = initl(m);

@@ -6,11 +6,10 @@
 #include <numbers>
 
 #include "azt/track/rate_limited_path.hpp"
+#include "azt/util/angles.hpp"
 
 namespace azt::track {
 namespace {
-
-constexpr double kRad = std::numbers::pi / 180.0;
 /// Halvings of the error bracket: 180° / 2^18 is 2.5 arcseconds.
 constexpr int kBisections = 18;
 /// Equally short lost stretches compared for their worst error: a handful spread over the pass.
@@ -40,14 +39,15 @@ std::vector<double> centred_rate_limit(const std::vector<double>& t, const std::
 /// it, the elevation set to the satellite's projection on the plane the elevation axis sweeps:
 /// cos(el)·|sin Δaz| ≤ sin(err). Once err reaches the zenith distance, any azimuth will do.
 double half_width_deg(double err_deg, double el_deg) {
-  const double s = std::sin(std::min(err_deg, 90.0) * kRad) / std::cos(el_deg * kRad);
-  return s >= 1.0 ? 180.0 : std::asin(s) / kRad;
+  const double s = std::sin(std::min(err_deg, 90.0) * kRadPerDeg) / std::cos(el_deg * kRadPerDeg);
+  return s >= 1.0 ? 180.0 : std::asin(s) / kRadPerDeg;
 }
 
 /// The error an azimuth `delta_deg` off costs at `el_deg` with the best elevation.
 double off_by_deg(double delta_deg, double el_deg) {
-  return std::asin(std::min(1.0, std::cos(el_deg * kRad) * std::fabs(std::sin(delta_deg * kRad)))) /
-         kRad;
+  return std::asin(std::min(
+             1.0, std::cos(el_deg * kRadPerDeg) * std::fabs(std::sin(delta_deg * kRadPerDeg)))) /
+         kRadPerDeg;
 }
 
 /// The pass as the planner sees it, and the azimuths its mount may take.
@@ -229,8 +229,9 @@ double elevation_for(double el_deg, double delta_deg, const MountGeometry& m) {
   } else if (lost) {
     e = behind ? 180.0 - el_deg : el_deg;
   } else {
-    e = std::atan2(std::sin(el_deg * kRad), std::cos(el_deg * kRad) * std::cos(delta_deg * kRad)) /
-        kRad;
+    e = std::atan2(std::sin(el_deg * kRadPerDeg),
+                   std::cos(el_deg * kRadPerDeg) * std::cos(delta_deg * kRadPerDeg)) /
+        kRadPerDeg;
   }
   return std::clamp(e, m.el.min_deg, m.can_flip() ? m.el.max_deg : std::min(m.el.max_deg, 90.0));
 }
@@ -277,16 +278,16 @@ PassPlan assemble(const Planner& p, const std::vector<double>& az_cmd) {
 }  // namespace
 
 double separation_deg(double az1_deg, double el1_deg, double az2_deg, double el2_deg) {
-  const double a1 = az1_deg * kRad;
-  const double e1 = el1_deg * kRad;
-  const double a2 = az2_deg * kRad;
-  const double e2 = el2_deg * kRad;
+  const double a1 = az1_deg * kRadPerDeg;
+  const double e1 = el1_deg * kRadPerDeg;
+  const double a2 = az2_deg * kRadPerDeg;
+  const double e2 = el2_deg * kRadPerDeg;
   // Vincenty's form: well conditioned at every angle.
   const double da = a2 - a1;
   const double x = std::sin(e1) * std::sin(e2) + std::cos(e1) * std::cos(e2) * std::cos(da);
   const double y1 = std::cos(e2) * std::sin(da);
   const double y2 = std::cos(e1) * std::sin(e2) - std::sin(e1) * std::cos(e2) * std::cos(da);
-  return std::atan2(std::hypot(y1, y2), x) / kRad;
+  return std::atan2(std::hypot(y1, y2), x) / kRadPerDeg;
 }
 
 SkyPoint mount_to_sky(const MountPoint& m) {

@@ -6,11 +6,10 @@
 
 #include "azt/control/station_controller.hpp"
 #include "azt/sim/axis_plant.hpp"
+#include "azt/util/angles.hpp"
 
 namespace azt::sim {
 namespace {
-
-constexpr double kRad = std::numbers::pi / 180.0;
 constexpr double kEarthKm = 6371.0;
 constexpr double kMuKm3S2 = 398600.4418;
 
@@ -18,8 +17,8 @@ using V3 = std::array<double, 3>;  // east, north, up
 
 /// The sky direction of the satellite at arc `theta` from its nearest point.
 track::SkyPoint look(const SyntheticPass& p, double t, double theta) {
-  const double d = p.offset_deg * kRad;
-  const double a = p.nearest_az_deg * kRad;
+  const double d = p.offset_deg * kRadPerDeg;
+  const double a = p.nearest_az_deg * kRadPerDeg;
   // Unit vectors from the Earth's centre, in the site's east/north/up axes.
   const V3 c{std::sin(d) * std::sin(a), std::sin(d) * std::cos(a), std::cos(d)};
   // Along the track, perpendicular to the site–nearest-point plane: azimuth a + 90° when
@@ -32,17 +31,17 @@ track::SkyPoint look(const SyntheticPass& p, double t, double theta) {
              r * (std::cos(theta) * c[2] + std::sin(theta) * along[2])};
   const V3 rho{s[0], s[1], s[2] - kEarthKm};
   const double range = std::sqrt(rho[0] * rho[0] + rho[1] * rho[1] + rho[2] * rho[2]);
-  double az = std::atan2(rho[0], rho[1]) / kRad;
+  double az = std::atan2(rho[0], rho[1]) / kRadPerDeg;
   if (az < 0.0) az += 360.0;
-  return {t, az, std::asin(rho[2] / range) / kRad};
+  return {t, az, std::asin(rho[2] / range) / kRadPerDeg};
 }
 
 }  // namespace
 
 double synthetic_max_el_deg(double altitude_km, double offset_deg) {
-  const double d = offset_deg * kRad;
+  const double d = offset_deg * kRadPerDeg;
   const double ratio = kEarthKm / (kEarthKm + altitude_km);
-  return std::atan2(std::cos(d) - ratio, std::sin(d)) / kRad;
+  return std::atan2(std::cos(d) - ratio, std::sin(d)) / kRadPerDeg;
 }
 
 std::vector<track::SkyPoint> synthetic_pass(const SyntheticPass& p) {
@@ -50,7 +49,7 @@ std::vector<track::SkyPoint> synthetic_pass(const SyntheticPass& p) {
   const double rate = std::sqrt(kMuKm3S2 / (r * r * r));  // rad/s along the orbit
   // Visible while the arc from the site is below acos(R / r) (spherical horizon).
   const double horizon = std::acos(kEarthKm / r);
-  const double d = p.offset_deg * kRad;
+  const double d = p.offset_deg * kRadPerDeg;
   if (d >= horizon) return {};
   const double half = std::acos(std::cos(horizon) / std::cos(d));  // arc from nearest to horizon
   std::vector<track::SkyPoint> out;
