@@ -12,6 +12,7 @@
 #include "azt/control/modes.hpp"
 #include "azt/control/station_controller.hpp"
 #include "azt/proto/rotator_service.hpp"
+#include "azt/sim/plant_rig.hpp"
 #include "config/daemon_config.hpp"
 
 namespace boost::asio {
@@ -62,8 +63,10 @@ struct HardwarePorts;
 std::unique_ptr<AntennaBackend> make_hardware_backend(boost::asio::io_context& io,
                                                       const DaemonConfig& config,
                                                       HardwarePorts ports);
-/// The simulated antenna of the [sim] tables, in real time.
-std::unique_ptr<AntennaBackend> make_sim_backend(const DaemonConfig& config);
+/// The simulated antenna of the [sim] tables, in real time; `truth`, when given, receives the
+/// rig behind it (the plants' true shaft angles, for the simulated receiver).
+std::unique_ptr<AntennaBackend> make_sim_backend(
+    const DaemonConfig& config, std::shared_ptr<const sim::PlantRig>* truth = nullptr);
 /// A Hamlib rotator ([hamlib]); throws UsageError naming the model/device when it cannot open.
 std::unique_ptr<AntennaBackend> make_hamlib_backend(const DaemonConfig& config);
 

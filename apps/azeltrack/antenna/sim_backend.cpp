@@ -8,8 +8,10 @@
 
 namespace azt::app {
 
-std::unique_ptr<AntennaBackend> make_sim_backend(const DaemonConfig& config) {
+std::unique_ptr<AntennaBackend> make_sim_backend(const DaemonConfig& config,
+                                                 std::shared_ptr<const sim::PlantRig>* truth) {
   auto station = sim::make_simulated_station(config.sim, make_sim_hub(config.sim, config.sim_hub));
+  if (truth != nullptr) *truth = station.rig;
   std::string describe = station.rig->hub().describe();
   return make_station_backend(sim::station_control_config(config.simulated()), config.start_mount(),
                               config.station.corrections, std::move(station.ports),

@@ -8,17 +8,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "azt/astro/catalogue.hpp"
 #include "azt/sim/calibration_sim.hpp"
 #include "azt/sim/sky_track.hpp"
 #include "common/sky_setup.hpp"
 #include "common/usage_error.hpp"
+#include "station/sky_emitters.hpp"
 
 namespace azt::app {
 namespace {
-
-constexpr double kSunSizeDeg = 0.53;   // the optical disc; the radio Sun is a little larger
-constexpr double kMoonSizeDeg = 0.52;  // mean apparent diameter
 
 struct SkyContext {
   std::unique_ptr<astro::Ephemeris> ephemeris;
@@ -48,25 +45,11 @@ sim::SkyTrack track_of(const SimConfig& c, const SkyContext& ctx, const astro::T
   return sim::make_sky_track(t);
 }
 
-std::optional<double> flux_at(const astro::RadioSource& s, std::int64_t mhz) {
-  if (mhz == 2304) return s.flux_2304_jy;
-  if (mhz == 10368) return s.flux_10368_jy;
-  return s.flux_1296_jy;
-}
-
 /// The Sun, the Moon and every catalogue source with a flux at the receiver's band.
 std::vector<sim::CalibrationSource> sources(const SimConfig& c, const SkyContext& ctx) {
-  const sim::SimulatedReceiver rx(c.receiver.receiver);
   std::vector<sim::CalibrationSource> out;
-  out.push_back({"sun", track_of(c, ctx, astro::Target::sun()),
-                 rx.disc_k(c.receiver.sun_k, kSunSizeDeg), kSunSizeDeg});
-  out.push_back({"moon", track_of(c, ctx, astro::Target::moon()),
-                 rx.disc_k(c.receiver.moon_k, kMoonSizeDeg), kMoonSizeDeg});
-  for (const astro::RadioSource& s : astro::radio_sources()) {
-    if (const auto flux = flux_at(s, c.receiver.flux_mhz)) {
-      out.push_back({std::string(s.key), track_of(c, ctx, astro::Target::radio_source(s)),
-                     rx.point_k(*flux), 0.0});
-    }
+  for (const SkyEmitter& e : sky_emitters(c.receiver)) {
+    out.push_back({e.name, track_of(c, ctx, e.target), e.peak_k, e.size_deg});
   }
   return out;
 }

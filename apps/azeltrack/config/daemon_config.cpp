@@ -351,6 +351,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.station = sim.setup.station;
   c.sim = sim.setup.plant;
   c.sim_hub = sim.hub;
+  c.sim_receiver = sim.receiver;
   read_start_target(file, c);
   c.sequencer =
       read_sequencer(file.section("sequencer", {"outputs", "delay_ms", "delays_ms", "debounce_ms",
@@ -366,6 +367,10 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   const ConfigSection sats = file.section("satellites", {"file", "mask", "beamwidth_deg"});
   c.gps = gps_config_from(file);
   c.receiver = receiver_config_from(file);
+  if (c.receiver.source == ReceiverConfig::Source::Sim && c.backend != BackendKind::Sim) {
+    file.section("receiver", {"source", "path", "bind", "port", "stale_s"})
+        .fail("source", "\"sim\" hears the simulated antenna: [antenna] backend must be \"sim\"");
+  }
   c.time = time_config_from(file);
   c.exports = export_config_from(file);
   c.satellites.file = sats.text("file").value_or("");

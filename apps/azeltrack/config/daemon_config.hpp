@@ -110,6 +110,7 @@ struct DaemonConfig {
   control::StationSetup station;      ///< what the controller knows, for every backend
   sim::PlantSetup sim;                ///< [sim.*]: the simulated plants (the `sim` backend only)
   SimHubConfig sim_hub;               ///< [sim] hub: the plain model or the hub firmware
+  SimReceiverConfig sim_receiver;     ///< [sim.receiver]: for [receiver] source = "sim"
   std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
   BackendKind backend = BackendKind::Sim;  ///< [antenna] backend
   linux_os::HamlibConfig hamlib;

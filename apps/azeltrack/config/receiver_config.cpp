@@ -12,8 +12,10 @@ ReceiverConfig receiver_config_from(const ConfigFile& file) {
     c.source = ReceiverConfig::Source::RtlPower;
   } else if (source == "udp") {
     c.source = ReceiverConfig::Source::Udp;
+  } else if (source == "sim") {
+    c.source = ReceiverConfig::Source::Sim;
   } else if (source != "none") {
-    s.fail("source", "must be \"none\", \"rtl_power\" or \"udp\"");
+    s.fail("source", "must be \"none\", \"rtl_power\", \"udp\" or \"sim\"");
   }
   c.path = s.text("path").value_or("");
   if (c.source == ReceiverConfig::Source::RtlPower && (c.path.empty() || c.path.front() != '/')) {

@@ -2,7 +2,8 @@
 // [receiver] (issue 16 §3): where the power readings of pointing scans come from. `rtl_power`:
 // its CSV lines from a FIFO or a file it appends to (`rtl_power -f … -i 1 - > PATH`; one line,
 // one reading: a range that fits one hop); `udp`: datagrams of one dB value per line from any SDR
-// program; `none`: no receiver (the default).
+// program; `sim`: the simulated receiver ([sim.receiver]) through the simulated antenna's true
+// beam (the `sim` backend only); `none`: no receiver (the default).
 
 #include <string>
 
@@ -11,7 +12,7 @@ namespace azt::app {
 class ConfigFile;
 
 struct ReceiverConfig {
-  enum class Source { None, RtlPower, Udp };
+  enum class Source { None, RtlPower, Udp, Sim };
   Source source = Source::None;
   std::string path;                ///< rtl_power: the FIFO or file
   std::string bind = "127.0.0.1";  ///< udp

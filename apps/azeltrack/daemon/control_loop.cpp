@@ -86,6 +86,7 @@ void StationDaemon::tick() {
     const std::optional<control::AzEl> source = fix ? std::optional(fix->position) : std::nullopt;
     const control::Demand demand = modes_.demand(scan_aim(source));
     antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
+    receiver_->tick(now);
     scan_tick(now, source);
   }
   report_faults();

@@ -33,6 +33,7 @@
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
 #include "station/sequencer_runner.hpp"
+#include "station/simulated_power.hpp"
 #include "station/sky_follower.hpp"
 #include "station/station_commands.hpp"
 #include "station/station_service.hpp"
@@ -73,6 +74,8 @@ class StationDaemon {
   Offload status_off_loop();
   /// [export] azel_dat: WSJT-X's azel.dat every second.
   std::unique_ptr<AzelDatExport> make_azel_dat_export();
+  /// [receiver] source = "sim": the simulated receiver, hearing the sim backend's true beam.
+  void simulate_receiver();
   void open_servers();
   void open_console();
   /// A refusal a client was given: in the journal (at most 10 lines a minute per client) and in
@@ -114,6 +117,9 @@ class StationDaemon {
   std::unique_ptr<linux_os::GpioInput> ptt_;
   std::unique_ptr<SequencerRunner> sequencer_;
   GuardedAntenna* guard_ = nullptr;
+  /// The `sim` backend's plants (the truth its simulated receiver hears through); declared
+  /// before antenna_, whose making sets it.
+  std::shared_ptr<const sim::PlantRig> sim_truth_;
   std::unique_ptr<AntennaBackend> antenna_;
   SatelliteTracker satellites_;
   RateLimitedLog log_;

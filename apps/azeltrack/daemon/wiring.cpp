@@ -15,6 +15,7 @@
 #include "azt/track/pass_plan.hpp"
 #include "azt/util/valid_utf8.hpp"
 #include "common/horizon_mask_option.hpp"
+#include "common/sky_report.hpp"
 #include "common/sky_setup.hpp"
 #include "common/target_request.hpp"
 #include "common/usage_error.hpp"
@@ -108,8 +109,28 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   receiver_ = std::make_unique<PowerReceiver>(
       io_, config_.receiver, [this] { return now_s(); },
       [](const std::string& line) { spdlog::warn("{}", line); });
+  if (config_.receiver.source == ReceiverConfig::Source::Sim) simulate_receiver();
   scanner_ = std::make_unique<PointingScanner>(
       config_.receiver.source == ReceiverConfig::Source::None ? nullptr : &receiver_->feed());
+}
+
+void StationDaemon::simulate_receiver() {
+  SimulatedPowerParts parts;
+  parts.receiver = config_.sim_receiver;
+  parts.mount_errors = config_.sim.pointing_errors;
+  parts.sky_at = [this](double unix_s) {
+    return sky_snapshot(*ephemeris_, config_.sky.settings,
+                        astro::UtcInstant::from_unix_seconds(unix_s));
+  };
+  // The simulated encoders read the shafts true: the beam is the shafts through the mount's
+  // errors, whatever [corrections] the operator sets on top.
+  parts.shafts_deg = [truth = sim_truth_]() -> std::optional<control::AzEl> {
+    if (!truth) return std::nullopt;
+    return control::AzEl{truth->plants().az().shaft_deg(), truth->plants().el().shaft_deg()};
+  };
+  auto power = std::make_shared<SimulatedPower>(std::move(parts));
+  receiver_->simulate([power] { return power->read_db(unix_now_s()); },
+                      config_.sim_receiver.receiver.rate_hz);
 }
 
 std::unique_ptr<AzelDatExport> StationDaemon::make_azel_dat_export() {
@@ -190,7 +211,7 @@ std::unique_ptr<AntennaBackend> StationDaemon::make_backend() {
   if (config_.backend == BackendKind::Hardware) {
     return make_hardware_backend(io_, config_, HardwarePorts::linux_devices(gpio_.get()));
   }
-  return make_sim_backend(config_);
+  return make_sim_backend(config_, &sim_truth_);
 }
 
 std::unique_ptr<SequencerRunner> StationDaemon::make_sequencer() {

@@ -15,6 +15,20 @@ calibration::PowerFeedSettings settings(const ReceiverConfig& config) {
   return s;
 }
 
+std::string source_name(ReceiverConfig::Source s) {
+  switch (s) {
+    case ReceiverConfig::Source::RtlPower:
+      return "rtl_power";
+    case ReceiverConfig::Source::Udp:
+      return "udp";
+    case ReceiverConfig::Source::Sim:
+      return "sim";
+    case ReceiverConfig::Source::None:
+      break;
+  }
+  return "none";
+}
+
 }  // namespace
 
 PowerReceiver::PowerReceiver(boost::asio::io_context& io, const ReceiverConfig& config,
@@ -46,6 +60,21 @@ PowerReceiver::PowerReceiver(boost::asio::io_context& io, const ReceiverConfig& 
   }
 }
 
+void PowerReceiver::simulate(std::function<std::optional<double>()> read, double rate_hz) {
+  simulated_ = std::move(read);
+  period_s_ = 1.0 / rate_hz;
+  next_s_ = now_s_();
+}
+
+void PowerReceiver::tick(double now_s) {
+  if (!simulated_) return;
+  if (now_s - next_s_ > 1.0) next_s_ = now_s;  // a stalled loop does not read a burst after
+  while (next_s_ <= now_s) {
+    if (const auto db = simulated_()) feed_.accept(now_s, *db);
+    next_s_ += period_s_;
+  }
+}
+
 void PowerReceiver::rtl_power_line(std::string_view line) {
   const auto sweep = proto::parse_rtl_power_line(line);
   if (!sweep) {
@@ -72,7 +101,7 @@ nlohmann::json PowerReceiver::to_json() const {
   const double now = now_s_();
   const auto latest = feed_.latest(now);
   const calibration::PowerFeedCounts counts = feed_.counts();
-  json j{{"source", config_.source == ReceiverConfig::Source::Udp ? "udp" : "rtl_power"},
+  json j{{"source", source_name(config_.source)},
          {"state", latest ? "receiving" : "silent"},
          {"power_db", latest ? json(latest->power_db) : json(nullptr)},
          {"age_s", latest ? json(now - latest->t_s) : json(nullptr)},

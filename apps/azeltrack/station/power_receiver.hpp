@@ -2,10 +2,12 @@
 // The receiver whose power the pointing scans read (issue 16 §3, [receiver]): rtl_power's CSV
 // lines from a FIFO or file (linux_os::LineFeed) or dB lines in UDP datagrams, each reading or
 // malformed line handed to the core's PowerFeed, which counts good, malformed and missing
-// readings. Everything on the daemon's loop; nothing waits for the receiver.
+// readings; or, with `sim`, the simulated receiver read at its rate on the control tick.
+// Everything on the daemon's loop; nothing waits for the receiver.
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -31,6 +33,12 @@ class PowerReceiver {
   [[nodiscard]] nlohmann::json to_json() const;
   [[nodiscard]] const calibration::PowerFeed& feed() const { return feed_; }
 
+  /// `[receiver] source = "sim"`: `read` gives a reading now (nullopt: none to be had), taken
+  /// `rate_hz` times a second by tick().
+  void simulate(std::function<std::optional<double>()> read, double rate_hz);
+  /// The control tick: the simulated receiver's readings due by `now_s` (monotonic).
+  void tick(double now_s);
+
  private:
   void rtl_power_line(std::string_view line);
   void datagram(std::string_view datagram);
@@ -42,6 +50,9 @@ class PowerReceiver {
   std::string problem_;
   std::unique_ptr<linux_os::LineFeed> lines_;
   std::unique_ptr<linux_os::UdpDatagramServer> udp_;
+  std::function<std::optional<double>()> simulated_;
+  double period_s_ = 0.2;
+  double next_s_ = 0.0;
 };
 
 }  // namespace azt::app
