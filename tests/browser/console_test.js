@@ -7,6 +7,7 @@
 'use strict';
 const { chromium } = require('playwright-core');
 const { spawn, spawnSync } = require('child_process');
+const dgram = require('dgram');
 const fs = require('fs');
 const net = require('net');
 const os = require('os');
@@ -27,6 +28,8 @@ let port = 0;
 let base = '';
 let gpsdPort = 0;
 let gpsfake = null;
+let udpPort = 0;
+let feeder = null;
 
 const freePort = () => new Promise((resolve, reject) => {
   const s = net.createServer();
@@ -76,6 +79,43 @@ function stopGpsfake() {
   // gpsd killed leaves its shared-memory export (key 0x4770 then the port in hex) behind.
   spawnSync('ipcrm', ['-M', `0x4770${gpsdPort.toString(16).padStart(4, '0')}`], { stdio: 'ignore' });
 }
+// The receiver for the pointing scans (issue 16 §3), as tests/integration/scan_test.py is one: a
+// Gaussian beam of BEAM_DEG on a source TRUE_AZ_DEG / TRUE_EL_DEG away from where the ephemeris
+// puts it (the target in /api/state), seen from where the encoders read, sent as dB lines over UDP
+// ([receiver] udp) every 100 ms.
+const BEAM_DEG = 1.0;
+const TRUE_AZ_DEG = 0.4;
+const TRUE_EL_DEG = -0.25;
+function beamPowerDb(s) {
+  const a = s.antenna || {}; const t = s.target || {};
+  if (!a.known || typeof t.az_deg !== 'number' || typeof t.el_deg !== 'number') return 0;
+  const srcAz = t.az_deg + TRUE_AZ_DEG; const srcEl = t.el_deg + TRUE_EL_DEG;
+  const dAz = ((a.encoder_az_deg - srcAz + 540) % 360) - 180;
+  const d2 = (dAz * Math.cos((srcEl * Math.PI) / 180)) ** 2 + (a.encoder_el_deg - srcEl) ** 2;
+  return 10 * Math.log10(1 + 3 * Math.exp((-4 * Math.LN2 * d2) / BEAM_DEG ** 2));
+}
+function startFeeder() {
+  const sock = dgram.createSocket('udp4');
+  let on = true;
+  const done = (async () => {
+    while (on) {
+      try {
+        const s = await state();
+        if (s) sock.send(`${beamPowerDb(s).toFixed(4)} dB\n`, udpPort, '127.0.0.1');
+      } catch (e) { /* the daemon restarting */ }
+      await sleep(100);
+    }
+    sock.close();
+  })();
+  feeder = { stop: async () => { on = false; await done; } };
+}
+async function stopFeeder() {
+  if (!feeder) return;
+  const f = feeder;
+  feeder = null;
+  await f.stop();
+}
+
 const hasProgram = (name) => spawnSync('sh', ['-c', `command -v ${name}`], { stdio: 'ignore' }).status === 0;
 
 async function stopDaemon() {
@@ -100,7 +140,8 @@ function tleWithEpochNow() {
 }
 
 function writeConfig() {
-  // 16-bit encoders and no movement window, so 0.01° steps are visible; a fast plant.
+  // 16-bit encoders and no movement window, so 0.01° steps are visible; a fast plant (a quick
+  // motor, so that the final approach to each point of a pointing scan takes a second, not four).
   fs.writeFileSync(config, `schema_version = 2
 [station]
 grid = "FN06HE"
@@ -112,9 +153,11 @@ name = "stop"
 [mount.az]
 max_rate_deg_s = 10.0
 encoder_bits = 16
+time_constant_s = 0.1
 [mount.el]
 max_rate_deg_s = 10.0
 encoder_bits = 16
+time_constant_s = 0.1
 [sim.az]
 start_deg = 180.0
 [sim.el]
@@ -136,6 +179,10 @@ chrony_socket = "${path.join(tmp, 'nonexistent.sock')}"
 poll_s = 1
 manage_chrony = true
 sources_file = "${sourcesFile}"
+[receiver]
+source = "udp"
+port = ${udpPort}
+stale_s = 2.0
 `);
   fs.mkdirSync(path.dirname(sourcesFile), { recursive: true });
   fs.writeFileSync(path.join(path.dirname(config), 'sats.tle'), tleWithEpochNow());
@@ -202,6 +249,7 @@ async function serveWebDir(ctx, dir) {
 async function main() {
   port = await freePort();
   gpsdPort = await freePort();
+  udpPort = await freePort();
   base = `http://127.0.0.1:${port}`;
   writeConfig();
   await startDaemon();
@@ -300,6 +348,15 @@ async function main() {
       const sat = (await state()).target.satellite;
       if (!sat || !sat.aos || !['waiting for AOS', 'tracking'].includes(sat.phase)) {
         throw new Error(`satellite status: ${JSON.stringify(sat)}`);
+      }
+      // The pass on the main screen, with the loss the plan reports before AOS.
+      await page.click('#nav-main');
+      await until('the pass line on the main screen', () => page.isVisible('#sat-row'), 5000);
+      const line = await text(page, '#sat-pass');
+      const loss = (await state()).target.satellite.planned_loss;
+      const said = loss.seconds > 0 ? `${Math.round(loss.seconds)} s beyond` : 'no loss planned';
+      if (!/^(AOS|LOS) \d\d:\d\d · max \d+°/.test(line) || !line.includes(said)) {
+        throw new Error(`pass line: ${line} (planned loss ${JSON.stringify(loss)})`);
       }
       await page.click('#nav-sky');
       await until('the planned pass on the sky plot', async () => (await page.$('#sky-pass-path')) !== null, 8000);
@@ -460,6 +517,150 @@ async function main() {
       if ((await page.$$('#planner-rows tr')).length !== 0) throw new Error('rows kept after a refusal');
     });
 
+    // Issue 16 §3: the pointing-scan page. The test is the receiver (startFeeder, above).
+    const sd3 = (v) => { const t = v.toFixed(3); return `${t.startsWith('-') ? t : `+${t}`}°`; };
+    // The plot as drawn: each circle's sample index, position and title; each curve's points.
+    const plotted = () => page.evaluate(() => {
+      const one = (id) => {
+        const svg = document.getElementById(id);
+        const curve = svg.querySelector('path.fitc');
+        const centre = svg.querySelector('line.fitx');
+        return {
+          circles: [...svg.querySelectorAll('circle.spt')].map((c) => ({ i: Number(c.dataset.i), shared: c.classList.contains('shared'),
+            x: Number(c.getAttribute('cx')), y: Number(c.getAttribute('cy')), title: c.textContent })),
+          curve: curve ? (curve.getAttribute('d').match(/-?[\d.]+ -?[\d.]+/g) || []).map((p) => p.split(' ').map(Number)) : [],
+          centre: centre ? { deg: Number(centre.dataset.deg), x: Number(centre.getAttribute('x1')) } : null,
+        };
+      };
+      return { xel: one('scan-plot-xel'), el: one('scan-plot-el') };
+    });
+    const scanSource = (targets) => targets.filter((t) => ['sun', 'moon', 'source'].includes(t.kind) && t.el_deg >= 20 && t.el_deg <= 70)
+      .sort((a, b) => (b.kind === 'source') - (a.kind === 'source') || b.el_deg - a.el_deg)[0];
+
+    await scenario('the pointing scan: refused without readings, a five-point scan plotted and fitted, its offsets applied', page, async () => {
+      await login(page);
+      await page.click('#nav-main');
+      await page.click('#scan-link-moon');
+      await until('the scan page', () => page.isVisible('#screen-scan'), 3000);
+      if ((await page.getAttribute('#nav-targets', 'aria-selected')) !== 'true') throw new Error('the Targets tab is not lit on the scan page');
+      // The form: Sun, Moon and the daemon's radio sources; the three kinds; Stop and Apply idle.
+      const targets = (await api('GET', '/api/targets')).json.targets;
+      const names = JSON.stringify(targets.filter((t) => ['sun', 'moon', 'source'].includes(t.kind)).map((t) => t.name));
+      await until('the sources in the form', async () => JSON.stringify(await page.$$eval('#scan-source option', (o) => o.map((x) => x.value))) === names, 5000);
+      if (!names.includes('"Sun"') || !names.includes('"Moon"')) throw new Error(`sources: ${names}`);
+      const kinds = await page.$$eval('#scan-kind option', (o) => o.map((x) => x.value));
+      if (kinds.join(',') !== 'cross,five-point,raster') throw new Error(`kinds: ${kinds}`);
+      for (const id of ['#scan-beam', '#scan-start', '#scan-stop', '#scan-apply']) if (!(await page.isVisible(id))) throw new Error(`${id} is not shown`);
+      if (!(await page.isDisabled('#scan-stop')) || !(await page.isDisabled('#scan-apply'))) throw new Error('Stop or Apply is enabled with no scan');
+      // No readings yet: said plainly, and a scan is refused naming the receiver; nothing moves.
+      await until('the receiver line to say there are no readings', async () => /no readings — a scan needs them/.test(await text(page, '#scan-receiver')), 5000);
+      const src = scanSource(targets);
+      if (!src) { console.log('     (no source between 20° and 70° now: the scan itself is not tested)'); return; }
+      await page.selectOption('#scan-source', src.name);
+      await page.selectOption('#scan-kind', 'five-point');
+      await page.click('#scan-more summary');
+      await page.fill('#scan-ref', '2.5');
+      await page.fill('#scan-settle', '0');
+      await page.fill('#scan-dwell', '0.4');
+      await page.fill('#scan-beam', '40');  // the plan refuses it before the receiver is asked
+      await page.click('#scan-start');
+      await until('the beamwidth refused', async () => /^Not started: beamwidth_deg /.test(await text(page, '#scan-msg')), 5000);
+      if (!(await page.$eval('#scan-beam', (e) => e.classList.contains('bad')))) throw new Error('the beamwidth field is not marked');
+      await page.fill('#scan-beam', String(BEAM_DEG));
+      const before = await state();
+      await page.click('#scan-start');
+      await until('the refusal naming the receiver', async () => /^Not started: .*receiver/.test(await text(page, '#scan-msg')), 5000);
+      if (!(await page.$eval('#scan-msg', (e) => e.classList.contains('error')))) throw new Error('the refusal is not shown as an error');
+      const after = await state();
+      if (after.mode !== before.mode || after.scan.state === 'running') throw new Error(`a refused scan changed ${before.mode} to ${after.mode}, scan ${after.scan.state}`);
+      // Readings: the receiver line shows the latest and the counts.
+      startFeeder();
+      await until('a reading on the receiver line', async () => {
+        const r = (await state()).receiver;
+        return r.state === 'receiving' && new RegExp(`: -?\\d+\\.\\d\\d dB, .*good [1-9]\\d*, malformed ${r.malformed}`).test(await text(page, '#scan-receiver'));
+      }, 5000);
+      const t0 = Date.now();
+      await page.click('#scan-start');
+      await until('the scan running', async () => (await state()).scan.state === 'running' && /^Scanning /.test(await text(page, '#scan-state')), 5000);
+      if (await page.isDisabled('#scan-stop')) throw new Error('Stop is disabled while scanning');
+      // The points plotted as they come, each once (the point on the source in both plots).
+      await until('the points read so far plotted', async () => {
+        const s = (await state()).scan;
+        if (s.state !== 'running' || s.samples.length < 2) return false;
+        const p = await plotted();
+        return p.xel.circles.length + p.el.circles.filter((c) => !c.shared).length === s.samples.length;
+      }, 90000, 200);
+      await until('the end of the scan', async () => (await state()).scan.state !== 'running', 120000, 500);
+      const sc = (await state()).scan;
+      console.log(`     (five-point scan of ${src.name} at el ${src.el_deg.toFixed(0)}°: ${sc.state} after ${((Date.now() - t0) / 1000).toFixed(1)} s)`);
+      if (sc.state !== 'done') throw new Error(`the scan ended ${sc.state}: ${sc.reason}`);
+      const p = await until('every sample plotted once, with the fitted curves', async () => {
+        const q = await plotted();
+        const ids = [...q.xel.circles, ...q.el.circles.filter((c) => !c.shared)].map((c) => c.i).sort((a, b) => a - b);
+        return JSON.stringify(ids) === JSON.stringify(sc.samples.map((_, i) => i)) && q.xel.curve.length > 100 && q.el.curve.length > 100 && q;
+      }, 3000);
+      for (const c of [...p.xel.circles, ...p.el.circles]) {
+        if (!c.title.includes(`${sc.samples[c.i].power_db.toFixed(2)} dB`)) throw new Error(`circle ${c.i}: “${c.title}”, the sample ${JSON.stringify(sc.samples[c.i])}`);
+      }
+      const shared = p.el.circles.filter((c) => c.shared).map((c) => c.i);
+      const onSource = sc.samples.map((s, i) => [s, i]).filter(([s]) => Math.hypot(s.xel_deg, s.el_deg) < 0.1).map(([, i]) => i);
+      if (JSON.stringify(shared) !== JSON.stringify(onSource)) throw new Error(`the point on the source in the elevation plot: ${shared} (on the source: ${onSource})`);
+      // Each curve peaks at the fitted centre and passes through the readings (a five-point fit is exact).
+      for (const [axis, q, centre] of [['xel', p.xel, sc.fit.xel_offset_deg], ['el', p.el, sc.fit.el_offset_deg]]) {
+        if (!q.centre || Math.abs(q.centre.deg - centre) > 1e-9) throw new Error(`${axis}: the centre line at ${JSON.stringify(q.centre)}, the fit ${centre}`);
+        const topY = Math.min(...q.curve.map((c) => c[1]));
+        const top = q.curve.filter((c) => c[1] < topY + 0.5).map((c) => c[0]);  // the flat top, to the pixel
+        const topX = (Math.min(...top) + Math.max(...top)) / 2;
+        if (Math.abs(topX - q.centre.x) > 4) throw new Error(`${axis}: the curve peaks at x ${topX}, the centre is at ${q.centre.x}`);
+        for (const c of q.circles) {
+          const k = q.curve.findIndex((pt) => pt[0] >= c.x);
+          if (k < 1) throw new Error(`${axis}: circle ${c.i} outside the curve`);
+          const [a, b] = [q.curve[k - 1], q.curve[k]];
+          const y = a[1] + ((b[1] - a[1]) * (c.x - a[0])) / (b[0] - a[0] || 1);
+          if (Math.abs(y - c.y) > 4) throw new Error(`${axis}: circle ${c.i} at y ${c.y}, the curve at ${y.toFixed(1)}`);
+        }
+      }
+      // The result: the offsets found, shown; then applied, once. The beam was on the source where
+      // the encoders read source + TRUE, and the controller's reading is the encoders' less the
+      // operator's corrections (+0.05° of elevation from the scenario above).
+      const found = sc.found;
+      const was = (await state()).corrections;
+      if (Math.abs(found.az_offset_deg - (TRUE_AZ_DEG - was.az_user_deg)) > 0.03 ||
+          Math.abs(found.el_offset_deg - (TRUE_EL_DEG - was.el_user_deg)) > 0.03) throw new Error(`found ${JSON.stringify(found)} with corrections ${JSON.stringify(was)}`);
+      await until('the found offsets on the page', async () => (await text(page, '#scan-found')) === `az ${sd3(found.az_offset_deg)} · el ${sd3(found.el_offset_deg)}`, 3000);
+      if (!(await text(page, '#scan-width')).includes(`${sc.fit.width_xel_deg.toFixed(3)}°`)) throw new Error(`width: ${await text(page, '#scan-width')}`);
+      if (!(await text(page, '#scan-peak')).startsWith(`${sc.fit.peak_db.toFixed(2)} dB`)) throw new Error(`peak: ${await text(page, '#scan-peak')}`);
+      if (await page.isDisabled('#scan-apply')) throw new Error('Apply is disabled with a result to apply');
+      await page.click('#scan-apply');
+      const want = [was.az_offset_deg - found.az_offset_deg, was.el_offset_deg - found.el_offset_deg];
+      await until('the new offsets in the controller', async () => {
+        const c = (await state()).corrections;
+        return Math.abs(c.az_offset_deg - want[0]) < 1e-9 && Math.abs(c.el_offset_deg - want[1]) < 1e-9;
+      }, 5000);
+      const saved = (await api('GET', '/api/config')).json.corrections;
+      if (Math.abs(saved.az_offset_deg - want[0]) > 1e-9 || Math.abs(saved.el_offset_deg - want[1]) > 1e-9) throw new Error(`saved: ${JSON.stringify(saved)}`);
+      await until('the new offsets on the page', async () => (await text(page, '#scan-msg')).startsWith(`Applied and saved: encoder offsets az ${sd3(want[0])}, el ${sd3(want[1])}`), 5000);
+      await until('Apply disabled: applied once', () => page.isDisabled('#scan-apply'), 3000);
+    });
+
+    await scenario('a running scan stops from the page', page, async () => {
+      if (!feeder) { console.log('     (skipped: no scan above)'); return; }
+      await page.click('#nav-targets');
+      await page.click('#scan-link-targets');
+      await until('the scan page', () => page.isVisible('#screen-scan'), 3000);
+      await page.selectOption('#scan-kind', 'cross');
+      await page.fill('#scan-points', '5');
+      await page.click('#scan-start');
+      await until('the scan running', async () => (await state()).scan.state === 'running' && !(await page.isDisabled('#scan-stop')), 5000);
+      await page.click('#scan-stop');
+      await until('the scan stopped', async () => (await state()).scan.state === 'stopped' && /^Stopped: /.test(await text(page, '#scan-state')), 5000);
+      if (!(await text(page, '#scan-msg')).startsWith('Scan stopped')) throw new Error(`message: ${await text(page, '#scan-msg')}`);
+      const s = await state();
+      if (s.mode !== 'TRACK') throw new Error(`after the stop: ${s.mode}`);
+      if (!(await page.isDisabled('#scan-stop')) || (await page.isDisabled('#scan-start'))) throw new Error('Stop still enabled, or Start not');
+    });
+    await stopFeeder();
+
     await scenario('the Network page lists the interfaces', page, async () => {
       await page.click('#ico-eth');
       await until('the Network page', () => page.isVisible('#screen-network'), 3000);
@@ -481,7 +682,7 @@ async function main() {
           .map((id) => { const r = document.getElementById(id).getBoundingClientRect(); return { id, l: r.left, r: r.right, w: r.width }; }));
         for (const b of boxes) if (b.w <= 0 || b.l < 0 || b.r > width) throw new Error(`${b.id} is off a ${width} px screen: ${JSON.stringify(b)}`);
       }
-      for (const s of ['gps', 'time', 'network']) {
+      for (const s of ['gps', 'time', 'network', 'scan']) {
         await page.evaluate((n) => { location.hash = n; }, s);
         await until(`the ${s} page`, () => page.isVisible(`#screen-${s}`), 3000);
         const w = await page.evaluate(() => document.documentElement.scrollWidth);
@@ -527,6 +728,7 @@ async function main() {
     }
   } finally {
     stopGpsfake();
+    await stopFeeder();
     await ctx.close();
     await stopDaemon();
     fs.rmSync(userDataDir, { recursive: true, force: true });

@@ -8,7 +8,8 @@ import { request } from './api.js';
 import { refreshSession, setLoggedIn, showLogin } from './session.js';
 
 // An action (POST/PUT). 401 opens the login form; a 403 (stale CSRF token) re-reads the session
-// once and retries. errEl: the form's .error element that shows a refusal instead of a toast.
+// once and retries. errEl: the form's .error element that shows a refusal instead of a toast;
+// quiet: neither (the caller shows the refusal itself); form: its field named by a 400 is marked.
 export async function act(label, method, path, body, opts = {}) {
   const btn = opts.btn;
   if (btn) btn.classList.add('busy');
@@ -27,7 +28,8 @@ export async function act(label, method, path, body, opts = {}) {
   }
   if (!r.ok) {
     const msg = r.data.error || (r.status ? `HTTP ${r.status}` : 'no answer from the controller');
-    if (opts.errEl) { setText(opts.errEl, msg); markField(opts.form, r.data.field); } else toast(`${label}: ${msg}`, 'err');
+    if (opts.errEl) setText(opts.errEl, msg); else if (!opts.quiet) toast(`${label}: ${msg}`, 'err');
+    markField(opts.form, r.data.field);
     return r;
   }
   if (opts.errEl) setText(opts.errEl, '');
@@ -39,9 +41,15 @@ function markField(form, field) {
   form.querySelectorAll('.bad').forEach((e) => e.classList.remove('bad'));
   const map = { grid: 'grid', lat_deg: 'lat', lon_deg: 'lon', alt_m: 'alt', az_offset_deg: 'az-offset',
     el_offset_deg: 'el-offset', window_deg: 'window', ramp_s: 'ramp', tracking_speed: 'tracking-speed',
-    ra_deg: 'ra', dec_deg: 'dec', band: 'band', servers: 'ntp-servers' };
+    ra_deg: 'ra', dec_deg: 'dec', band: 'band', servers: 'ntp-servers', source: 'scan-source',
+    kind: 'scan-kind', beamwidth_deg: 'scan-beam', points_per_line: 'scan-points',
+    half_span_beams: 'scan-span', reference_beams: 'scan-ref', settle_s: 'scan-settle', dwell_s: 'scan-dwell' };
   let el = field && map[field] ? $(map[field]) : null;
   if (form.id === 'man-form') el = field === 'el_deg' ? $('man-el') : field === 'az_deg' ? $('man-az') : null;
   if (form.classList.contains('park-row') && field) el = form.querySelector(`[data-f="${field}"]`);
-  if (el && form.contains(el)) el.classList.add('bad');
+  if (el && form.contains(el)) {
+    el.classList.add('bad');
+    const more = el.closest('details');
+    if (more) more.open = true;
+  }
 }

@@ -9,6 +9,7 @@ import { drawTrend, TREND_S } from './trend.js';
 import { drawSky } from './sky.js';
 import { markActiveTarget } from './targets.js';
 import { renderStation } from './station.js';
+import { renderScan } from './scan.js';
 
 function targetLabel(st) {
   const t = st.target || {};
@@ -19,6 +20,18 @@ function targetLabel(st) {
     case 'EXT': return 'PC program';
     default: return t.name || (S.sel ? S.sel.label : '—');
   }
+}
+
+// "AOS 12:34 · max 83° · 8 s beyond 10° from 12:40:05", or the tracker's phase.
+function passLine(sat) {
+  if (!sat.aos) return sat.problem || sat.phase || '—';
+  const hhmm = (iso, secs) => String(iso).slice(11, secs ? 19 : 16);
+  const when = sat.phase === 'tracking' ? `LOS ${hhmm(sat.los)}` : `AOS ${hhmm(sat.aos)}`;
+  const loss = sat.planned_loss || {};
+  const lost = loss.seconds > 0
+    ? `${Math.round(loss.seconds)} s beyond ${fix(loss.beyond_deg, 0)}° from ${hhmm(loss.from, true)}`
+    : 'no loss planned';
+  return `${when} · max ${deg(sat.max_el_deg, 0)}${sat.flip ? ' · flipped' : ''} · ${lost}`;
 }
 
 export function onState(st) {
@@ -44,6 +57,10 @@ export function onState(st) {
   const dx = onMoon && m && isNum(m.dx_echo_doppler_hz);
   $('dx-row').hidden = !dx;
   if (dx) setText('dx-doppler', hz(m.dx_echo_doppler_hz));
+  // A satellite: its pass and the loss planned before AOS (docs/satellites.md).
+  const sat = st.mode === 'TRACK' ? t.satellite : null;
+  $('sat-row').hidden = !sat;
+  if (sat) setText('sat-pass', passLine(sat));
   // B: corrections
   const c = st.corrections || {};
   setText('az-corr', sdeg(c.az_user_deg));
@@ -104,6 +121,7 @@ export function onState(st) {
     setText('man-cur-mode', `${mode}${st.who ? ` (${st.who})` : ''}`);
   }
   if (S.screen === 'targets') markActiveTarget();
+  if (S.screen === 'scan') renderScan();
 }
 
 function renderFaults(list) {

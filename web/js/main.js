@@ -11,6 +11,7 @@ import { loadSky } from './sky.js';
 import { loadTargets } from './targets.js';
 import { buildPark, buildTilt, drawTilt, loadConfig } from './setup.js';
 import { applyTheme, wire } from './wire.js';
+import { renderScan } from './scan.js';
 
 function start() {
   applyTheme(localStorage.getItem('azt.theme') || 'dark');
@@ -34,6 +35,6 @@ function start() {
   setInterval(() => { if (!document.hidden && S.screen === 'sky') loadSky(); }, 60000);
   setInterval(() => { if (S.screen === 'main' && !S.connected) drawTrend(true); }, 1000);
   let rt = 0;
-  window.addEventListener('resize', () => { clearTimeout(rt); rt = setTimeout(() => { if (S.screen === 'main') drawTrend(true); if (S.screen === 'antenna') drawTilt(); }, 150); });
+  window.addEventListener('resize', () => { clearTimeout(rt); rt = setTimeout(() => { if (S.screen === 'main') drawTrend(true); if (S.screen === 'antenna') drawTilt(); if (S.screen === 'scan') renderScan(true); }, 150); });
 }
 if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start); else start();

@@ -8,11 +8,13 @@ import { loadTargets } from './targets.js';
 import { drawTilt, loadConfig } from './setup.js';
 import { renderStationPage } from './station.js';
 import { openPlanner } from './planner.js';
+import { openScan } from './scan.js';
 
 export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
 // Pages without a tab of their own (the phone's tab bar has no room): reached from the header's
-// status icons and from Setup, whose tab stays lit on them.
-export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main' };
+// status icons and from Setup, whose tab stays lit on them; the planner from the Moon panel, the
+// pointing scan from the Moon panel, Targets and Sky.
+export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets' };
 
 export function show(name) {
   if (!SCREENS.includes(name) && !SUBSCREENS[name]) name = 'main';
@@ -29,6 +31,7 @@ export function show(name) {
   if (name === 'setup' || name === 'antenna' || name === 'manual') loadConfig();
   if (name === 'antenna') drawTilt();
   if (name === 'planner') openPlanner();
+  else if (name === 'scan') openScan();
   else if (SUBSCREENS[name]) renderStationPage(name, true);
 }
 export function go(name) { if (location.hash === `#${name}`) show(name); else location.hash = name; }

@@ -13,6 +13,7 @@ import { parseAngle, radecHint, track } from './targets.js';
 import { clean, loadConfig, showOther } from './setup.js';
 import { wireStation } from './station.js';
 import { wirePlanner } from './planner.js';
+import { wireScan } from './scan.js';
 
 function confirmTwice(btn, label, fn) { // a second press within 4 s confirms
   if (btn.dataset.armed) { delete btn.dataset.armed; setText(btn, btn.dataset.label); fn(); return; }
@@ -27,6 +28,7 @@ export function wire() {
   $('offset-btn').addEventListener('click', () => go('antenna'));
   wireStation(go);
   wirePlanner();
+  wireScan();
 
   // login
   $('login-form').addEventListener('submit', login);

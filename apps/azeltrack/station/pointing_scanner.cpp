@@ -7,6 +7,14 @@
 #include "azt/calibration/pointing_model.hpp"
 
 namespace azt::app {
+namespace {
+
+/// One line's fitted curve, linear power (scan_fit.hpp LineCurve): the console draws it.
+nlohmann::json curve_json(const calibration::LineCurve& c) {
+  return {{"baseline", c.baseline}, {"slope", c.slope}, {"amplitude", c.amplitude}};
+}
+
+}  // namespace
 
 Result<bool> PointingScanner::ready(double now_s) const {
   if (feed_ == nullptr) return fail("no receiver: set [receiver] to scan");
@@ -103,6 +111,9 @@ nlohmann::json PointingScanner::to_json() const {
     samples.push_back({{"xel_deg", at.xel_deg},
                        {"el_deg", at.el_deg},
                        {"line", sample.point.offset.el_deg == 0.0 ? "xel" : "el"},
+                       {"planned_xel_deg", sample.point.offset.xel_deg},
+                       {"planned_el_deg", sample.point.offset.el_deg},
+                       {"reference", sample.point.reference},
                        {"power_db", sample.power_db ? json(*sample.power_db) : json(nullptr)}});
   }
   j["samples"] = samples;
@@ -116,7 +127,9 @@ nlohmann::json PointingScanner::to_json() const {
                 {"peak_db", fit_->peak_db},
                 {"noise_db", fit_->noise_db},
                 {"used", fit_->used},
-                {"missing", fit_->missing}};
+                {"missing", fit_->missing},
+                {"xel_curve", curve_json(fit_->xel_curve)},
+                {"el_curve", curve_json(fit_->el_curve)}};
   }
   if (found_) {
     j["found"] = {{"az_offset_deg", found_->az_offset_deg},

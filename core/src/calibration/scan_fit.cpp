@@ -61,6 +61,7 @@ struct Peak {
   double rms_db = 0.0;          ///< residual rms in dB (the receiver's noise as it reads it)
   double centre_std_deg = 0.0;  ///< the fit's standard error of the centre
   double other_std_deg = 0.0;   ///< a raster's: of the other centre coordinate
+  double slope = 0.0;           ///< linear per degree: the baseline's tilt along a line
 };
 
 /// rms of measured − fitted, in dB.
@@ -101,7 +102,8 @@ Result<Peak> fit_line(const std::vector<double>& s, const std::vector<double>& p
               fit.rms_residual,
               rms_db(p, model),
               centre_std,
-              0.0};
+              0.0,
+              q[1]};
 }
 
 /// Round Gaussian + constant baseline over the grid: p = b + A·exp(−4 ln2 r²/W²).
@@ -174,6 +176,8 @@ ScanFit to_scan_fit(const Peak& x, const Peak& y, double y_centre, std::size_t u
   out.noise_db = std::max(x.rms_db, y.rms_db);
   out.used = used;
   out.missing = missing;
+  out.xel_curve = {x.baseline, x.slope, x.amplitude};
+  out.el_curve = {y.baseline, y.slope, y.amplitude};
   return out;
 }
 

@@ -52,6 +52,12 @@ TEST(ScanFit, CrossScanFindsTheOffsetAndWidth) {
   EXPECT_NEAR(fit->peak_db, 10.0 * std::log10(1.0 + rise), 1e-6);
   EXPECT_EQ(fit->used, 42U);
   EXPECT_EQ(fit->missing, 0U);
+  // The curves the console draws: baseline 1 (linear), flat, the line's rise as amplitude.
+  EXPECT_NEAR(fit->xel_curve.baseline, 1.0, 1e-6);
+  EXPECT_NEAR(fit->xel_curve.slope, 0.0, 1e-6);
+  EXPECT_NEAR(fit->xel_curve.amplitude, rise, 1e-6);
+  EXPECT_NEAR(fit->el_curve.amplitude, 3.0 * std::exp(-4.0 * std::log(2.0) * 0.31 * 0.31 / 1.44),
+              1e-6);
 }
 
 TEST(ScanFit, CrossScanWithTenthDbNoiseIsWithinItsExpectedScatter) {

@@ -25,6 +25,15 @@ struct ScanSample {
   std::optional<SkyOffset> pointed;
 };
 
+/// One line's fitted curve in linear power (10^(dB/10)) against the line's offset s, degrees:
+/// p(s) = baseline + slope·(s − centre) + amplitude·exp(−4 ln2 (s − centre)²/width²), with the
+/// line's centre and width from ScanFit (a raster's: its round beam cut through the centre).
+struct LineCurve {
+  double baseline = 0.0;  ///< at the centre
+  double slope = 0.0;     ///< per degree (0 for a five-point scan or a raster)
+  double amplitude = 0.0;
+};
+
 struct ScanFit {
   SkyOffset peak;              ///< add this to the ephemeris to put the beam on the source
   SkyOffset peak_std;          ///< the fit's standard error of each (0 for a five-point scan)
@@ -34,6 +43,8 @@ struct ScanFit {
   double noise_db = 0.0;       ///< rms of the fit's residuals in dB (0 for a five-point scan)
   std::size_t used = 0;        ///< good readings fitted
   std::size_t missing = 0;     ///< readings missing or malformed
+  LineCurve xel_curve;         ///< what the console draws over the readings
+  LineCurve el_curve;
 };
 
 /// The fewest good readings a line (cross), a grid (raster) or a five-point scan needs.
