@@ -1,7 +1,9 @@
 // `azeltrack web password|token`: the console's credentials, saved through the configuration
 // store (docs/web-api.md). Only hashes are stored; the token is shown once.
+#include <termios.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -30,13 +32,58 @@ void save_key(const std::string& path, const std::string& key, const std::string
   if (!saved) throw UsageError(saved.error().message);
 }
 
-/// The new password: generated, or the first line of stdin (a terminal is asked for it).
+/// The terminal as it was before the echo went off: restored by the reader, or by Ctrl-C.
+termios g_saved_terminal{};
+
+extern "C" void restore_terminal_and_exit(int sig) {
+  // Async-signal-safe: tcsetattr, signal and raise are.
+  (void)tcsetattr(STDIN_FILENO, TCSAFLUSH, &g_saved_terminal);
+  (void)std::signal(sig, SIG_DFL);
+  (void)std::raise(sig);
+}
+
+/// One line typed on the terminal without echo (a password must not show on the screen).
+std::string ask_hidden(const char* prompt) {
+  std::cerr << prompt << std::flush;
+  std::string line;
+  const bool quiet = tcgetattr(STDIN_FILENO, &g_saved_terminal) == 0;
+  if (quiet) {
+    termios hidden = g_saved_terminal;
+    hidden.c_lflag &= ~static_cast<tcflag_t>(ECHO);
+    (void)std::signal(SIGINT, restore_terminal_and_exit);
+    (void)std::signal(SIGTERM, restore_terminal_and_exit);
+    (void)tcsetattr(STDIN_FILENO, TCSAFLUSH, &hidden);
+  }
+  std::getline(std::cin, line);
+  if (quiet) {
+    (void)tcsetattr(STDIN_FILENO, TCSAFLUSH, &g_saved_terminal);
+    (void)std::signal(SIGINT, SIG_DFL);
+    (void)std::signal(SIGTERM, SIG_DFL);
+  }
+  std::cerr << '\n';
+  return line;
+}
+
+/// The new password: generated; asked twice on a terminal, unseen; or the first line of
+/// standard input, saying so (a pipe, or a service with no terminal, would otherwise seem hung).
 std::string read_password(bool generate) {
   if (generate) return random_password();
-  if (isatty(STDIN_FILENO) != 0) std::cerr << "new web console password: " << std::flush;
   std::string password;
-  std::getline(std::cin, password);
-  if (password.size() < 8) throw UsageError("the password needs at least 8 characters");
+  if (isatty(STDIN_FILENO) != 0) {
+    password = ask_hidden("New web console password (8 characters or more; not shown): ");
+    if (password.size() >= 8 && ask_hidden("The same again: ") != password) {
+      throw UsageError("the two passwords differ: nothing saved");
+    }
+  } else {
+    std::cerr << "azeltrack web password: reading the new password from standard input (one "
+                 "line, 8 characters or more)\n";
+    if (!std::getline(std::cin, password)) {
+      throw UsageError("no password on standard input: nothing saved");
+    }
+  }
+  if (password.size() < 8) {
+    throw UsageError("the password needs at least 8 characters: nothing saved");
+  }
   return password;
 }
 

@@ -1,5 +1,6 @@
 #include "console/console_server.hpp"
 
+#include "common/own_command.hpp"
 #include "common/usage_error.hpp"
 
 namespace azt::app {
@@ -18,8 +19,8 @@ std::string ensure_password(ConsoleParts& parts,
   if (!web.password_hash.empty()) return web.password_hash;
   if (!is_loopback(web.bind)) {
     throw UsageError("[web] bind = \"" + web.bind +
-                     "\" serves the network but no password is set: run `azeltrack web password "
-                     "--config FILE` first");
+                     "\" serves the network but no password is set: run `" +
+                     password_command(parts.store.path()) + "` first");
   }
   const std::string password = random_password();
   std::string hash = hash_password(password);
@@ -30,7 +31,8 @@ std::string ensure_password(ConsoleParts& parts,
   if (!saved)
     throw UsageError("[web] cannot save the generated password: " + saved.error().message);
   parts.config.web.password_hash = hash;
-  log("web console password (shown once; change it with `azeltrack web password`): " + password);
+  log("web console password (shown once): " + password + "; change it with `" +
+      password_command(parts.store.path()) + "`");
   return hash;
 }
 
