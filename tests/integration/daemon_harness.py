@@ -64,6 +64,19 @@ def wait_until(probe, seconds=10.0, every=0.1):
     return False
 
 
+def cross_scan_of_a_source(base, beam_deg):
+    """POST /api/scan's body for a short cross scan (5 points a line, 1.5 beams each side) of the
+    first target between 20° and 70° of elevation, where a scan has room on every side; exits 77
+    (skipped) when none is up now."""
+    targets = http_json(base, "GET", "/api/targets")[1]["targets"]
+    up = [t for t in targets if 20.0 <= t["el_deg"] <= 70.0]
+    if not up:
+        print("no source between 20° and 70° now: nothing to scan")
+        sys.exit(77)
+    return {"source": up[0]["name"], "kind": "cross", "beamwidth_deg": beam_deg,
+            "points_per_line": 5, "half_span_beams": 1.5, "settle_s": 0.5, "dwell_s": 0.8}
+
+
 def rotctld(port, lines, timeout=3.0):
     """Sends rotctld command lines on one connection; returns each line's reply lines."""
     replies = []

@@ -16,7 +16,8 @@ import tempfile
 import threading
 import time
 
-from daemon_harness import Checks, free_port, http_json, station_toml, wait_until
+from daemon_harness import (Checks, cross_scan_of_a_source, free_port, http_json, station_toml,
+                            wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-scan-")
@@ -68,14 +69,8 @@ try:
     if not wait_until(lambda: http_json(base, "GET", "/api/state")[0] == 200, 20):
         sys.exit("the daemon did not start: " + open(log.name, encoding="utf-8").read())
     threading.Thread(target=feeder, daemon=True).start()
-    targets = http_json(base, "GET", "/api/targets")[1]["targets"]
-    up = [t for t in targets if 20.0 <= t["el_deg"] <= 70.0]
-    if not up:
-        print("no source between 20° and 70° now: nothing to scan")
-        sys.exit(77)
-    source = up[0]["name"]
-    scan = {"source": source, "kind": "cross", "beamwidth_deg": BEAM, "points_per_line": 5,
-            "half_span_beams": 1.5, "settle_s": 0.5, "dwell_s": 0.8}
+    scan = cross_scan_of_a_source(base, BEAM)
+    source = scan["source"]
 
     code, body = http_json(base, "POST", "/api/scan", scan, token)
     check(code == 503 and "silent" in body.get("error", str(body)), f"no readings: refused {code} {body}")

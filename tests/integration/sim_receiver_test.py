@@ -12,7 +12,8 @@ import sys
 import tempfile
 import time
 
-from daemon_harness import Checks, free_port, http_json, station_toml, wait_until
+from daemon_harness import (Checks, cross_scan_of_a_source, free_port, http_json, station_toml,
+                            wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-simrx-")
@@ -54,14 +55,8 @@ try:
     check(wait_until(lambda: state()["receiver"]["state"] == "receiving", 5),
           f"the simulated receiver reads with nothing attached: {state()['receiver']}")
     check(state()["receiver"]["source"] == "sim", "named sim")
-    targets = http_json(base, "GET", "/api/targets")[1]["targets"]
-    up = [t for t in targets if 20.0 <= t["el_deg"] <= 70.0]
-    if not up:
-        print("no source between 20° and 70° now: nothing to scan")
-        sys.exit(77)
-    source = up[0]["name"]
-    scan = {"source": source, "kind": "cross", "beamwidth_deg": BEAM, "points_per_line": 5,
-            "half_span_beams": 1.5, "settle_s": 0.5, "dwell_s": 0.8}
+    scan = cross_scan_of_a_source(base, BEAM)
+    source = scan["source"]
     code, body = http_json(base, "POST", "/api/scan", scan, token)
     check(code == 200, f"scan of {source} started: {code} {body}")
     t0 = time.monotonic()

@@ -49,24 +49,23 @@ std::optional<std::vector<sim::RadioEmitter>> SimulatedPower::sky(double unix_s)
   return out;
 }
 
-std::optional<control::AzEl> SimulatedPower::beam() const {
+std::optional<SimulatedPower::Heard> SimulatedPower::heard(double unix_s) {
   const auto shafts = p_.shafts_deg();
-  if (!shafts) return std::nullopt;
-  return calibration::beam_on_sky(*shafts, p_.mount_errors);
+  auto emitters = sky(unix_s);
+  if (!shafts || !emitters) return std::nullopt;
+  return Heard{calibration::beam_on_sky(*shafts, p_.mount_errors), std::move(*emitters)};
 }
 
 std::optional<double> SimulatedPower::read_db(double unix_s) {
-  const auto where = beam();
-  const auto emitters = sky(unix_s);
-  if (!where || !emitters) return std::nullopt;
-  return receiver_.read_db(*where, *emitters);
+  const auto h = heard(unix_s);
+  if (!h) return std::nullopt;
+  return receiver_.read_db(h->beam, h->emitters);
 }
 
 std::optional<double> SimulatedPower::expected_db(double unix_s) {
-  const auto where = beam();
-  const auto emitters = sky(unix_s);
-  if (!where || !emitters) return std::nullopt;
-  return receiver_.expected_db(*where, *emitters);
+  const auto h = heard(unix_s);
+  if (!h) return std::nullopt;
+  return receiver_.expected_db(h->beam, h->emitters);
 }
 
 }  // namespace azt::app

@@ -39,7 +39,12 @@ class SimulatedPower {
  private:
   /// The emitters' places at `unix_s`, interpolated between whole seconds.
   std::optional<std::vector<sim::RadioEmitter>> sky(double unix_s);
-  std::optional<control::AzEl> beam() const;
+  /// Where the true beam points (the shafts through the mount's errors) and what is in the sky.
+  struct Heard {
+    control::AzEl beam;
+    std::vector<sim::RadioEmitter> emitters;
+  };
+  std::optional<Heard> heard(double unix_s);
   bool observe_second(double second, std::vector<control::AzEl>& places) const;
 
   SimulatedPowerParts p_;
