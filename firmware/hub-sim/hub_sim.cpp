@@ -89,7 +89,10 @@ int run(const Options& o) {
   h.set_fault(o.fault_axis == "az", fault_of(o.fault));
   const int out = o.pty.empty() ? STDOUT_FILENO : open_pty(o.pty);
   if (out < 0) return 1;
-  h.on_byte = [out](std::uint8_t byte, double /*at_us*/) { (void)::write(out, &byte, 1); };
+  // A byte the reader is not there to take is dropped, as on a serial line with nobody listening.
+  h.on_byte = [out](std::uint8_t byte, double /*at_us*/) {
+    if (::write(out, &byte, 1) != 1) return;
+  };
   const auto start = std::chrono::steady_clock::now();
   constexpr double kSliceS = 0.01;
   for (double t = 0.0; o.seconds <= 0.0 || t < o.seconds; t += kSliceS) {

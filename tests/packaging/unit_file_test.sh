@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# packaging/azeltrack.service passes `systemd-analyze verify` with ExecStart pointing at the built
-# binary, is a notify service with a watchdog, and its ExecStart line is a command the binary
-# accepts.
+# debian/azeltrack.service, the unit the package installs: `systemd-analyze verify` passes with
+# ExecStart pointing at the built binary; it is a notify service with a watchdog running as its
+# own user with its settings in the state folder; its ExecStart arguments are a command the
+# binary accepts; and `systemd-analyze security --offline` rates its exposure at most 3.0 (the
+# score parsed from the tool's closing line), with the sandbox settings the daemon relies on.
 # Usage: unit_file_test.sh SOURCE_DIR AZELTRACK
 set -uo pipefail
 src=${1:?usage: unit_file_test.sh SOURCE_DIR AZELTRACK}
@@ -9,20 +11,41 @@ bin=$(realpath "${2:?usage: unit_file_test.sh SOURCE_DIR AZELTRACK}")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 source "$src/tests/cli/lib.sh"
-unit="$src/packaging/azeltrack.service"
+unit="$src/debian/azeltrack.service"
 
-sed "s|/usr/local/bin/azeltrack|$bin|" "$unit" >"$tmp/azeltrack.service"
-if out=$(systemd-analyze verify "$tmp/azeltrack.service" 2>&1); then ok; else bad "verify: $out"; fi
-for line in 'Type=notify' 'WatchdogSec=' 'ExecStart=/usr/local/bin/azeltrack serve --config ' \
-  'RuntimeDirectory=azeltrack' 'ConfigurationDirectory=azeltrack' 'Restart=on-failure'; do
+sed "s|/usr/bin/azeltrack|$bin|" "$unit" >"$tmp/azeltrack.service"
+if out=$(systemd-analyze verify --man=no "$tmp/azeltrack.service" 2>&1); then ok; else bad "verify: $out"; fi
+for line in 'Type=notify' 'WatchdogSec=' 'ExecStart=/usr/bin/azeltrack serve --config /var/lib/azeltrack/azeltrack.toml' \
+  'StateDirectory=azeltrack' 'RuntimeDirectory=azeltrack' 'Restart=on-failure' 'User=azeltrack' \
+  'CapabilityBoundingSet=$' 'DevicePolicy=closed' 'ProtectSystem=strict'; do
   grep -q "^$line" "$unit" && ok || bad "unit file lacks '$line'"
 done
+# What the daemon needs must survive the sandbox: netlink (the interface list), adjtimex (the
+# kernel clock's verdict), the serial, GPIO, SPI and I2C devices.
+grep -q '^RestrictAddressFamilies=.*AF_NETLINK' "$unit" && ok || bad "netlink not allowed"
+grep -q '^SystemCallFilter=@system-service adjtimex' "$unit" && ok || bad "adjtimex not allowed"
+for dev in char-ttyUSB char-ttyACM char-gpiochip char-spi char-i2c; do
+  grep -q "^DeviceAllow=$dev rw" "$unit" && ok || bad "device $dev not allowed"
+done
+
+# The exposure score: "→ Overall exposure level for azeltrack.service: 1.7 OK".
+report=$(systemd-analyze security --offline=true --no-pager "$tmp/azeltrack.service" 2>&1)
+score=$(printf '%s\n' "$report" | sed -n 's/.*Overall exposure level for azeltrack.service: \([0-9.]*\) .*/\1/p')
+if [ -z "$score" ]; then
+  bad "no exposure score in: $(printf '%s\n' "$report" | tail -3)"
+elif awk -v s="$score" 'BEGIN { exit !(s <= 3.0) }'; then
+  echo "exposure score $score (at most 3.0)"
+  ok
+else
+  bad "exposure score $score is above 3.0"
+fi
+
 # The ExecStart arguments parse: with its config path swapped for a file of a future schema, the
 # daemon gets as far as reading that file and refuses it (exit 2), so nothing starts.
-exec_args=$(sed -n 's|^ExecStart=/usr/local/bin/azeltrack ||p' "$unit")
+exec_args=$(sed -n 's|^ExecStart=/usr/bin/azeltrack ||p' "$unit")
 printf 'schema_version = 99\n' >"$tmp/future.toml"
 # shellcheck disable=SC2086  # the unit's arguments, split as systemd splits them
-"$bin" ${exec_args//\/etc\/azeltrack\/azeltrack.toml/$tmp/future.toml} >/dev/null 2>"$tmp/err"
+"$bin" ${exec_args//\/var\/lib\/azeltrack\/azeltrack.toml/$tmp/future.toml} >/dev/null 2>"$tmp/err"
 rc=$?
 [ $rc -eq 2 ] && grep -q 'schema_version 99' "$tmp/err" && ok ||
   bad "ExecStart arguments: rc=$rc $(cat "$tmp/err")"

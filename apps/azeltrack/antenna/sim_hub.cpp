@@ -10,12 +10,15 @@
 namespace azt::app {
 namespace {
 
-/// [sim] hub_firmware, or the ELF the build puts beside the program (build/firmware/).
+/// [sim] hub_firmware, else the ELF the build puts beside the program (build/firmware/), else
+/// the package's copy (/usr/share/azeltrack/firmware, AZT_FIRMWARE_DIR).
 std::string firmware_path(const SimHubConfig& hub) {
   if (!hub.elf.empty()) return hub.elf;
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return (self.parent_path() / "firmware" / "encoder-hub.elf").string();
+  auto beside = self.parent_path() / "firmware" / "encoder-hub.elf";
+  if (std::filesystem::exists(beside, ec)) return beside.string();
+  return std::string(AZT_FIRMWARE_DIR) + "/encoder-hub.elf";
 }
 
 }  // namespace

@@ -14,9 +14,10 @@
 namespace azt::app {
 namespace {
 
-/// /etc/azeltrack/azeltrack.toml for root (the systemd unit), else the user's config directory.
+/// The package's state directory for root (the systemd unit's file: dpkg never prompts about a
+/// file it does not ship, so upgrades leave it alone), else the user's config directory.
 std::string default_config_path() {
-  if (geteuid() == 0) return "/etc/azeltrack/azeltrack.toml";
+  if (geteuid() == 0) return "/var/lib/azeltrack/azeltrack.toml";
   if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg != nullptr && *xdg != '\0') {
     return std::string(xdg) + "/azeltrack/azeltrack.toml";
   }
@@ -31,7 +32,8 @@ void write_default_if_missing(const std::string& path) {
   if (std::filesystem::exists(path, ec) || std::filesystem::exists(path + ".bak", ec)) return;
   const std::filesystem::path p(path);
   if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
-  auto written = linux_os::write_file_atomically(path, default_config_text());
+  // 0640: it will hold the console's password hash and API token.
+  auto written = linux_os::write_file_atomically(path, default_config_text(), 0640);
   if (!written)
     throw UsageError("cannot write the default configuration: " + written.error().message);
   spdlog::warn("no configuration at {}: wrote the default (simulated antenna); edit it and restart",
@@ -51,7 +53,7 @@ Runner add_serve_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "serve", "Run the daemon: control loop, rotctld, serial and PstRotator servers");
   cmd->add_option("--config", opts->config_path,
-                  "Configuration file (default: /etc/azeltrack/azeltrack.toml as root, else "
+                  "Configuration file (default: /var/lib/azeltrack/azeltrack.toml as root, else "
                   "~/.config/azeltrack/azeltrack.toml; written with defaults if missing)");
   cmd->add_option("--run-for", opts->run_for_s, "Stop after this many seconds (tests)")
       ->check(CLI::Range(0.0, 1e9));

@@ -21,7 +21,7 @@ class ConfigFile;
 /// through the daemon's decoder (docs/encoder-hub.md).
 struct SimHubConfig {
   bool firmware = false;
-  std::string elf;  ///< [sim] hub_firmware; empty: firmware/encoder-hub.elf beside the program
+  std::string elf;  ///< [sim] hub_firmware; empty: the build's or the package's ELF
 };
 
 /// [sim.receiver]: the simulated receiver of pointing scans (issue 16 §3): its beam, noise and

@@ -16,7 +16,7 @@ struct TimeConfig {
   std::string rtc = "/dev/rtc0";  ///< the battery-backed clock whose presence is reported
   /// The console may write the upstream servers to `sources_file` and have chronyd reload them.
   bool manage_chrony = false;
-  std::string sources_file = "/etc/chrony/sources.d/azeltrack.sources";
+  std::string sources_file = "/var/lib/azeltrack/chrony/azeltrack.sources";
 };
 
 /// Throws UsageError naming the key on any invalid value.

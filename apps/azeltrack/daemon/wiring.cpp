@@ -27,8 +27,9 @@ namespace {
 /// A client's bytes may be in a log line: valid UTF-8, no control characters, a bounded length.
 std::string log_safe(const std::string& text) {
   std::string line = valid_utf8(text.substr(0, 240));
+  // As unsigned: char is signed on x86-64 and unsigned on arm64, and UTF-8's bytes are >= 0x80.
   std::replace_if(
-      line.begin(), line.end(), [](char c) { return c >= 0 && c < ' '; }, ' ');
+      line.begin(), line.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20; }, ' ');
   return line;
 }
 

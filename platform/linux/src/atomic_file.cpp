@@ -126,7 +126,8 @@ Result<bool> refresh_backup(const std::string& path, const std::string& backup,
 
 }  // namespace
 
-Result<bool> write_file_atomically(const std::string& path, std::string_view contents) {
+Result<bool> write_file_atomically(const std::string& path, std::string_view contents,
+                                   mode_t new_file_mode) {
   if (path.empty()) return fail("write_file_atomically: empty path");
   const std::string pid = std::to_string(::getpid());
   const std::string temp = path + ".tmp." + pid;
@@ -135,7 +136,7 @@ Result<bool> write_file_atomically(const std::string& path, std::string_view con
 
   struct stat old_stat {};
   bool had_old = false;
-  mode_t mode = 0644;
+  mode_t mode = new_file_mode;
   if (::stat(path.c_str(), &old_stat) == 0) {
     if (!S_ISREG(old_stat.st_mode)) return fail("'" + path + "' exists and is not a regular file");
     had_old = true;

@@ -46,8 +46,9 @@ Result<SysfsPwm> SysfsPwm::open(const std::string& chip_dir, unsigned channel,
   const std::string dir = chip_dir + "/pwm" + std::to_string(channel);
   if (!is_directory(dir)) {
     if (auto r = write_sysfs(chip_dir + "/export", std::to_string(channel)); !r) return r.error();
-    // The kernel creates pwmN at once; udev may take a moment to make it writable.
-    for (int i = 0; i < 50 && !is_directory(dir); ++i) {
+    // The kernel creates pwmN at once; udev may take a moment to make it writable to group
+    // azeltrack (debian/azeltrack.udev).
+    for (int i = 0; i < 50 && ::access((dir + "/period").c_str(), W_OK) != 0; ++i) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     if (!is_directory(dir)) return fail(dir + " did not appear after export");

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -19,10 +21,10 @@ namespace azt::linux_os {
 inline constexpr std::size_t kMaxReadBytes = std::size_t{4} * 1024 * 1024;
 
 /// Atomically replaces `path` with `contents`, keeping the previous version as `path.bak`.
-/// Uses the existing file's permission bits, or 0644 for a new file (the temp is 0600 until
-/// it is complete). On failure `path` is unchanged
-/// and the temp file is removed.
-Result<bool> write_file_atomically(const std::string& path, std::string_view contents);
+/// Uses the existing file's permission bits, or `new_file_mode` for a new file (the temp is 0600
+/// until it is complete). On failure `path` is unchanged and the temp file is removed.
+Result<bool> write_file_atomically(const std::string& path, std::string_view contents,
+                                   mode_t new_file_mode = 0644);
 
 /// Replaces `path` with `contents` atomically for its readers (a temp file renamed over it), but
 /// neither fsynced nor backed up: for a file rewritten every second for other programs to poll
