@@ -5,7 +5,8 @@
 file(GLOB AZT_WEB_MODULES RELATIVE ${PROJECT_SOURCE_DIR}/web CONFIGURE_DEPENDS
      ${PROJECT_SOURCE_DIR}/web/js/*.js)
 list(SORT AZT_WEB_MODULES)
-set(AZT_WEB_FILES index.html app.css ${AZT_WEB_MODULES})
+# index.html is the console (/), panel.html the 480×320 touch panel (/panel, docs/panel.md).
+set(AZT_WEB_FILES index.html app.css panel.html panel.css ${AZT_WEB_MODULES})
 
 # Defines the custom command that writes OUT_CPP (a web_assets.cpp holding AZT_WEB_FILES).
 function(azt_embed_web_console out_cpp)

@@ -5,67 +5,27 @@
 // AZT_WEB_DIR=web serves the console's files from that directory instead of the copy built into
 // AZELTRACK (to try an edit of web/ without a rebuild; the API and the WebSocket stay the daemon's).
 'use strict';
-const { chromium } = require('playwright-core');
 const { spawn, spawnSync } = require('child_process');
 const dgram = require('dgram');
 const fs = require('fs');
-const net = require('net');
-const os = require('os');
 const path = require('path');
+const {
+  setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
+  stopDaemon, scenario: record, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown,
+  summarise, run,
+} = require('./harness');
 
-const [bin, outDir] = process.argv.slice(2);
-if (!bin || !outDir) {
-  console.error('usage: node console_test.js AZELTRACK OUT_DIR');
-  process.exit(2);
-}
-fs.mkdirSync(outDir, { recursive: true });
+const { outDir, tmp, config } = setup('console_test.js', 'azt-browser-');
 const PASSWORD = 'browser-test-password';
-const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'azt-browser-'));
-const config = path.join(tmp, 'azeltrack.toml');
 const sourcesFile = path.join(tmp, 'sources.d', 'azeltrack.sources');
-let daemon = null;
 let port = 0;
-let base = '';
 let gpsdPort = 0;
 let gpsfake = null;
 let udpPort = 0;
 let feeder = null;
 
-const freePort = () => new Promise((resolve, reject) => {
-  const s = net.createServer();
-  s.once('error', reject);
-  s.listen(0, '127.0.0.1', () => { const p = s.address().port; s.close(() => resolve(p)); });
-});
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
-
-/// Polls `probe` (an async function returning a truthy value when done) until `ms` pass.
-async function until(what, probe, ms = 10000, every = 100) {
-  const end = Date.now() + ms;
-  let last;
-  while (Date.now() < end) {
-    try { last = await probe(); if (last) return last; } catch (e) { last = e.message; }
-    await sleep(every);
-  }
-  throw new Error(`timed out after ${ms} ms waiting for ${what} (last: ${JSON.stringify(last)})`);
-}
-
-async function api(method, route, body, token) {
-  const headers = { 'Content-Type': 'application/json' };
-  if (token) headers.Authorization = `Bearer ${token}`;
-  const res = await fetch(base + route, { method, headers, body: body ? JSON.stringify(body) : undefined });
-  return { status: res.status, json: await res.json().catch(() => null) };
-}
-const state = async () => (await api('GET', '/api/state')).json;
 const apiGet = async (route) => api('GET', route);
 
-async function startDaemon() {
-  const log = fs.openSync(path.join(tmp, 'daemon.log'), 'a');
-  daemon = spawn(bin, ['serve', '--config', config], { stdio: ['ignore', log, log] });
-  await until('the daemon to serve /api/state', async () => {
-    const s = await state();
-    return s && s.antenna && s.antenna.known;
-  });
-}
 // gpsd fed once with a recorded fix by gpsfake, in a process group of its own (gpsfake waits on
 // its gpsd otherwise), as tests/integration/gps_test.py does.
 function startGpsfake(log) {
@@ -118,15 +78,6 @@ async function stopFeeder() {
 
 const hasProgram = (name) => spawnSync('sh', ['-c', `command -v ${name}`], { stdio: 'ignore' }).status === 0;
 
-async function stopDaemon() {
-  if (!daemon) return;
-  const d = daemon;
-  daemon = null;
-  const exited = new Promise((r) => d.once('exit', r));
-  d.kill('SIGTERM');
-  await exited;
-}
-
 // An ISS element set whose epoch is now, so that its next pass is within hours (issue 7).
 function tleWithEpochNow() {
   const checksum = (l) => l.slice(0, 68) + String([...l.slice(0, 68)].reduce((a, c) =>
@@ -140,35 +91,9 @@ function tleWithEpochNow() {
 }
 
 function writeConfig() {
-  // 16-bit encoders and no movement window, so 0.01° steps are visible; a fast plant (a quick
-  // motor, so that the final approach to each point of a pointing scan takes a second, not four).
-  fs.writeFileSync(config, `schema_version = 2
-[station]
-grid = "FN06HE"
-alt_m = 300.0
-[control]
-window_deg = 0.0
-[target]
-name = "stop"
-[mount.az]
-max_rate_deg_s = 10.0
-encoder_bits = 16
-time_constant_s = 0.1
-[mount.el]
-max_rate_deg_s = 10.0
-encoder_bits = 16
-time_constant_s = 0.1
-[sim.az]
-start_deg = 180.0
-[sim.el]
-start_deg = 20.0
-[rotctld]
-port = 0
-[pstrotator]
-port = 0
-[web]
-port = ${port}
-[satellites]
+  // The harness's fast plant: a quick motor, so that the final approach to each point of a
+  // pointing scan takes a second, not four.
+  fs.writeFileSync(config, `${simConfig('stop', port)}[satellites]
 file = "sats.tle"
 [gps]
 enabled = true
@@ -186,21 +111,12 @@ stale_s = 2.0
 `);
   fs.mkdirSync(path.dirname(sourcesFile), { recursive: true });
   fs.writeFileSync(path.join(path.dirname(config), 'sats.tle'), tleWithEpochNow());
-  const r = spawnSync(bin, ['web', 'password', '--config', config], { input: `${PASSWORD}\n` });
-  if (r.status !== 0) throw new Error(`web password: ${r.stderr}`);
+  setPassword(PASSWORD);
 }
 
-const results = [];
+// A scenario of the harness, then what it left on screen at desktop and at phone size, passed or not.
 async function scenario(name, page, body) {
-  const started = Date.now();
-  try {
-    await body();
-    results.push({ name, ok: true });
-    console.log(`ok   ${name} (${Date.now() - started} ms)`);
-  } catch (e) {
-    results.push({ name, ok: false, error: e.message });
-    console.log(`FAIL ${name}: ${e.message}`);
-  }
+  await record(name, body);
   const slug = name.replace(/[^a-z0-9]+/gi, '-').toLowerCase();
   for (const [size, vp] of [['desktop', { width: 1280, height: 800 }], ['phone', { width: 375, height: 740 }]]) {
     try {
@@ -212,7 +128,6 @@ async function scenario(name, page, body) {
   await page.setViewportSize({ width: 1280, height: 800 });
 }
 
-const loggedIn = (page) => page.evaluate(async () => (await (await fetch('/api/session')).json()).logged_in);
 async function login(page) {
   await page.click('#nav-main').catch(() => {});
   if (await loggedIn(page)) return;
@@ -222,7 +137,6 @@ async function login(page) {
   await until('the session', () => loggedIn(page));
 }
 
-async function text(page, sel) { return (await page.textContent(sel) || '').trim(); }
 // An element's colour against a theme variable's, both as the browser computes them.
 async function colourIs(page, sel, variable) {
   return page.evaluate(([s, v]) => {
@@ -235,51 +149,35 @@ async function colourIs(page, sel, variable) {
   }, [sel, variable]);
 }
 
-// Serves web/ from disk in place of the daemon's built-in copy (AZT_WEB_DIR, see the top).
-async function serveWebDir(ctx, dir) {
-  const types = { '.html': 'text/html; charset=utf-8', '.css': 'text/css; charset=utf-8', '.js': 'text/javascript; charset=utf-8' };
-  await ctx.route(`${base}/**`, (route) => {
-    const p = new URL(route.request().url()).pathname;
-    const file = p === '/' ? 'index.html' : p === '/app.css' ? 'app.css' : /^\/js\/[a-z_]+\.js$/.test(p) ? p.slice(1) : null;
-    if (!file) return route.continue();
-    return route.fulfill({ status: 200, contentType: types[path.extname(file)], body: fs.readFileSync(path.join(dir, file)) });
-  });
-}
-
 async function main() {
   port = await freePort();
   gpsdPort = await freePort();
   udpPort = await freePort();
-  base = `http://127.0.0.1:${port}`;
+  const base = useWebPort(port);
   writeConfig();
   await startDaemon();
-  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'azt-chromium-'));
-  const ctx = await chromium.launchPersistentContext(userDataDir, {
-    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-    headless: true,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--disable-dev-shm-usage',
-      // a page fulfilled by the test (AZT_WEB_DIR) counts as public: let it reach the daemon
-      ...(process.env.AZT_WEB_DIR ? ['--disable-features=LocalNetworkAccessChecks'] : [])],
-    viewport: { width: 1280, height: 800 },
-  });
-  if (process.env.AZT_WEB_DIR) await serveWebDir(ctx, path.resolve(process.env.AZT_WEB_DIR));
-  const page = ctx.pages()[0] || await ctx.newPage();
-  const consoleErrors = [];
-  page.on('pageerror', (e) => consoleErrors.push(e.message));
+  // With AZT_WEB_DIR (see the top), the console's page and style sheet come from there.
+  const browser = await launch({ '/': 'index.html', '/app.css': 'app.css' }, { viewport: { width: 1280, height: 800 } });
+  const { page } = browser;
   try {
     await page.goto(base + '/', { waitUntil: 'load' });
     await until('live numbers', async () => /\d/.test(await text(page, '#ant-az')));
 
-    await scenario('actions are refused without login', page, async () => {
+    await scenario('actions are refused without login; STOP from this machine is not', page, async () => {
       const before = (await state()).mode;
-      await page.click('#btn-stop');
-      await until('the login form', () => page.isVisible('#password'), 3000);
-      const direct = await page.evaluate(async () => (await fetch('/api/stop', { method: 'POST' })).status);
-      if (direct !== 401) throw new Error(`POST /api/stop without login answered ${direct}`);
+      const direct = await page.evaluate(async () => (await fetch('/api/target', { method: 'POST',
+        headers: { 'Content-Type': 'application/json' }, body: '{"name":"moon"}' })).status);
+      if (direct !== 401) throw new Error(`POST /api/target without login answered ${direct}`);
       const after = (await state()).mode;
       if (after !== before) throw new Error(`mode changed from ${before} to ${after}`);
+      // A stop never waits for a password on the controller's own machine (loopback).
+      await page.click('#btn-stop');
+      await until('STOP by the console without a login', async () => {
+        const s = await state();
+        return s.mode === 'STOP' && /^console\b/.test(s.who);
+      }, 3000);
+      const said = await text(page, '#login-error');
+      if (/STOP was refused/.test(said)) throw new Error(`STOP was refused: ${said}`);
     });
 
     await scenario('login and the antenna moves on screen while tracking', page, async () => {
@@ -695,10 +593,7 @@ async function main() {
     // the daemon's memory, so the restarts above logged the page out (login() is a no-op if not).
     await login(page);
     await page.click('#nav-main');
-    let bytes = 0;
-    const files = await page.evaluate(() => performance.getEntriesByType('resource')
-      .map((e) => new URL(e.name).pathname).filter((p) => p.endsWith('.js') || p.endsWith('.css')));
-    for (const f of ['/', ...new Set(files)]) bytes += (await (await fetch(base + f)).arrayBuffer()).byteLength;
+    const { bytes } = await pageWeight(page, '/');
     const latencies = await page.evaluate(async () => {
       const csrf = (await (await fetch('/api/session')).json()).csrf;
       const el = document.getElementById('target-name');
@@ -722,27 +617,13 @@ async function main() {
     latencies.sort((a, b) => a - b);
     const seenAll = latencies.every((x) => Number.isFinite(x));
     console.log(`measure: page weight ${bytes} bytes; state change -> DOM median ${latencies[5].toFixed(1)} ms, max ${latencies[9].toFixed(1)} ms (10 target changes${seenAll ? '' : ', some never shown'})`);
-    if (consoleErrors.length) {
-      results.push({ name: 'no JavaScript errors', ok: false, error: consoleErrors.join('; ') });
-      console.log(`FAIL no JavaScript errors: ${consoleErrors.join('; ')}`);
-    }
+    checkPageErrors(browser.errors);
   } finally {
     stopGpsfake();
     await stopFeeder();
-    await ctx.close();
-    await stopDaemon();
-    fs.rmSync(userDataDir, { recursive: true, force: true });
+    await shutDown(browser);
   }
-  const failed = results.filter((r) => !r.ok).length;
-  if (failed) console.log(fs.readFileSync(path.join(tmp, 'daemon.log'), 'utf8').split('\n').slice(-20).join('\n'));
-  fs.rmSync(tmp, { recursive: true, force: true });
-  console.log(`${results.length - failed} passed, ${failed} failed`);
-  process.exit(failed ? 1 : 0);
+  summarise();
 }
 
-main().catch(async (e) => {
-  console.error(e);
-  stopGpsfake();
-  await stopDaemon().catch(() => {});
-  process.exit(1);
-});
+run(main, stopGpsfake);

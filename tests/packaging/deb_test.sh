@@ -4,10 +4,13 @@
 # page and the docs; the settings are no conffile (dpkg ships nothing under /var/lib/azeltrack,
 # so an upgrade never asks about them); the version is the program's own; and lintian reports
 # nothing (its only overrides are explained in debian/azeltrack.lintian-overrides).
-# Usage: deb_test.sh SOURCE_DIR DEB
+# With PANEL_DEB, the touch panel's package too: its unit, user and folder, enabled at install,
+# depending on the daemon's package, cage and cog; lintian clean.
+# Usage: deb_test.sh SOURCE_DIR DEB [PANEL_DEB]
 set -uo pipefail
-src=${1:?usage: deb_test.sh SOURCE_DIR DEB}
-deb=${2:?usage: deb_test.sh SOURCE_DIR DEB}
+src=${1:?usage: deb_test.sh SOURCE_DIR DEB [PANEL_DEB]}
+deb=${2:?usage: deb_test.sh SOURCE_DIR DEB [PANEL_DEB]}
+panel=${3:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 source "$src/tests/cli/lib.sh"
@@ -18,14 +21,14 @@ for f in /usr/bin/azeltrack /lib/systemd/system/azeltrack.service \
   /lib/udev/rules.d/60-azeltrack.rules /etc/chrony/conf.d/azeltrack.conf \
   /etc/chrony/sources.d/azeltrack.sources /usr/share/azeltrack/firmware/encoder-hub.hex \
   /usr/share/azeltrack/firmware/encoder-hub.elf /usr/share/man/man1/azeltrack.1.gz \
-  /usr/share/doc/azeltrack/README.md.gz /usr/share/doc/azeltrack/copyright \
+  /usr/share/doc/azeltrack/README.md /usr/share/doc/azeltrack/copyright \
   /usr/share/doc/azeltrack/examples/station.toml; do
   grep -qx "$f" "$tmp/files" && ok || bad "the package lacks $f"
 done
-# Every manual under docs/ is in the package (compressed or not).
+# Every manual under docs/ is in the package, uncompressed (the units' Documentation= links).
 for md in "$src"/docs/*.md; do
   name=$(basename "$md")
-  grep -Eqx "/usr/share/doc/azeltrack/$name(\\.gz)?" "$tmp/files" && ok || bad "docs: $name missing"
+  grep -qx "/usr/share/doc/azeltrack/$name" "$tmp/files" && ok || bad "docs: $name missing"
 done
 # Nothing else: no test binaries, benchmarks or fuzzers, no hub-sim.
 extra=$(grep -Ev '/$' "$tmp/files" | grep -E '^/usr/(bin|sbin|lib)/' |
@@ -69,4 +72,25 @@ lintian --info --no-tag-display-limit "$deb" >"$tmp/lintian" 2>&1
 lintian_rc=$?
 tags=$(grep -E '^[EWIPX]: ' "$tmp/lintian")
 [ "$lintian_rc" -eq 0 ] && [ -z "$tags" ] && ok || bad "lintian ($lintian_rc): $tags"
+
+if [ -n "$panel" ]; then
+  dpkg-deb -c "$panel" | awk '{ print $6 }' | sed 's|^\./|/|' >"$tmp/panel-files"
+  for f in /lib/systemd/system/azeltrack-panel.service /usr/lib/sysusers.d/azeltrack-panel.conf \
+    /usr/lib/tmpfiles.d/azeltrack-panel.conf; do
+    grep -qx "$f" "$tmp/panel-files" && ok || bad "the panel package lacks $f"
+  done
+  panel_depends=$(dpkg-deb -f "$panel" Depends)
+  for dep in "azeltrack (>= $deb_version)" cage cog; do
+    grep -qF "$dep" <<<"$panel_depends" && ok || bad "the panel's Depends lacks $dep: $panel_depends"
+  done
+  [ "$(dpkg-deb -f "$panel" Architecture)" = all ] && ok || bad "the panel package is not arch all"
+  dpkg-deb -e "$panel" "$tmp/panel-control"
+  grep -q "deb-systemd-helper enable 'azeltrack-panel.service'" "$tmp/panel-control/postinst" && ok ||
+    bad "the panel's postinst does not enable its unit"
+  grep -q 'userdel azeltrack-panel' "$tmp/panel-control/postrm" && ok || bad "purge keeps the panel's user"
+  lintian --info --no-tag-display-limit "$panel" >"$tmp/lintian-panel" 2>&1
+  lintian_rc=$?
+  tags=$(grep -E '^[EWIPX]: ' "$tmp/lintian-panel")
+  [ "$lintian_rc" -eq 0 ] && [ -z "$tags" ] && ok || bad "lintian on the panel ($lintian_rc): $tags"
+fi
 finish

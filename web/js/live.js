@@ -1,7 +1,7 @@
 // The main screen from each state message: position, target, faults, who moved the antenna,
 // station I/O and the Moon panel; the station's GPS, clock and network (station.js).
 
-import { parkSlotAt, S } from './state.js';
+import { S, targetLabel } from './state.js';
 import { $, h, setText } from './dom.js';
 import { deg, fix, hz, isNum, pad, sameName, sdeg } from './format.js';
 import { bandList, wavelength } from './bands.js';
@@ -10,17 +10,7 @@ import { drawSky } from './sky.js';
 import { markActiveTarget } from './targets.js';
 import { renderStation } from './station.js';
 import { renderScan } from './scan.js';
-
-function targetLabel(st) {
-  const t = st.target || {};
-  switch (st.mode) {
-    case 'TRACK': return t.name || '—';
-    case 'PARK': { const p = parkSlotAt(t.az_deg, t.el_deg); return p ? `Park ${p.slot} · ${p.name}` : 'Park'; }
-    case 'MAN': return 'Manual position';
-    case 'EXT': return 'PC program';
-    default: return t.name || (S.sel ? S.sel.label : '—');
-  }
-}
+import { renderCorrectionsAndPosition } from './position.js';
 
 // "AOS 12:34 · max 83° · 8 s beyond 10° from 12:40:05", or the tracker's phase.
 function passLine(sat) {
@@ -61,15 +51,9 @@ export function onState(st) {
   const sat = st.mode === 'TRACK' ? t.satellite : null;
   $('sat-row').hidden = !sat;
   if (sat) setText('sat-pass', passLine(sat));
-  // B: corrections
-  const c = st.corrections || {};
-  setText('az-corr', sdeg(c.az_user_deg));
-  setText('el-corr', sdeg(c.el_user_deg));
-  // C: antenna
+  // B: corrections; C: antenna
+  const known = renderCorrectionsAndPosition(st);
   const a = st.antenna || {};
-  const known = a.known !== false && isNum(a.az_deg);
-  setText('ant-az', known ? deg(a.az_deg) : '—');
-  setText('ant-el', known ? deg(a.el_deg) : '—');
   const e = st.error_deg;
   setText('err-az', e ? sdeg(e.az) : '—');
   setText('err-el', e ? sdeg(e.el) : '—');

@@ -5,7 +5,8 @@ import { S } from './state.js';
 import { $, setText } from './dom.js';
 import { refreshSession, setLoggedIn } from './session.js';
 import { show } from './navigation.js';
-import { connect, setConnected, watchSocket } from './socket.js';
+import { connect, setConnected, useSocket, watchSocket } from './socket.js';
+import { onState } from './live.js';
 import { drawTrend } from './trend.js';
 import { loadSky } from './sky.js';
 import { loadTargets } from './targets.js';
@@ -14,6 +15,7 @@ import { applyTheme, wire } from './wire.js';
 import { renderScan } from './scan.js';
 
 function start() {
+  useSocket({ state: onState, connected: () => { if (!S.config) loadConfig(); if (!S.targets) loadTargets(); } });
   applyTheme(localStorage.getItem('azt.theme') || 'dark');
   buildPark();
   buildTilt();

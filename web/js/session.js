@@ -12,7 +12,8 @@ export function setLoggedIn(v, csrf) {
   setText(st, v ? 'Logged in' : 'Read-only');
   st.className = `pill ${v ? 'in' : 'out'}`;
   st.title = v ? 'Logged in: the console can control the antenna' : 'Read-only: log in to control the antenna';
-  $('logout-btn').hidden = !v;
+  const out = $('logout-btn');
+  if (out) out.hidden = !v; // the panel has none: its login pill logs out
   $('login-form').hidden = v || S.loginDismissed;
   if (v) setText('login-error', '');
 }

@@ -1,12 +1,14 @@
-// The live state over /ws: reconnecting with back-off, a silent socket abandoned.
+// The live state over /ws: reconnecting with back-off, a silent socket abandoned. The page says
+// what a state message and a new connection mean (useSocket): the console and the panel share it.
 
 import { S } from './state.js';
 import { $, setText } from './dom.js';
 import { fix } from './format.js';
 import { refreshSession } from './session.js';
-import { onState } from './live.js';
-import { loadTargets } from './targets.js';
-import { loadConfig } from './setup.js';
+
+const on = { state: () => {}, connected: () => {} };
+// state(st): each state message; connected(): the socket is up again (re-read what may be stale).
+export function useSocket(handlers) { Object.assign(on, handlers); }
 
 export function connect() {
   clearTimeout(S.retryTimer);
@@ -23,7 +25,7 @@ export function connect() {
     if (!S.connected) setConnected(true);
     let st;
     try { st = JSON.parse(ev.data); } catch (e) { return; }
-    if (st && typeof st === 'object') onState(st);
+    if (st && typeof st === 'object') on.state(st);
   };
   ws.onclose = () => { if (S.ws === ws) { S.ws = null; setConnected(false); retry(); } };
   ws.onerror = () => { try { ws.close(); } catch (e) { /* closed */ } };
@@ -48,9 +50,8 @@ export function setConnected(v) {
   $('conn-dot').title = v ? 'Live: connected to the controller' : 'Not connected';
   document.body.classList.toggle('stale', !v);
   if (v && !was) {
-    if (!S.config) loadConfig();
-    if (!S.targets) loadTargets();
-    refreshSession();
+    on.connected();
+    refreshSession(); // a restarted daemon has forgotten every session
   }
 }
 // A socket that says nothing for 3 s (the daemon sends state at least every second), or does not

@@ -14,3 +14,15 @@ export function parkSlotAt(az, el) {
   const park = (S.config && S.config.park) || (S.targets && S.targets.park) || [];
   return park.find((p) => Number.isFinite(az) && Math.abs(p.az_deg - az) < 0.01 && Math.abs(p.el_deg - el) < 0.01);
 }
+
+// What the controller is pointing at, in words: the target, the park slot, or who moves it.
+export function targetLabel(st) {
+  const t = st.target || {};
+  switch (st.mode) {
+    case 'TRACK': return t.name || '—';
+    case 'PARK': { const p = parkSlotAt(t.az_deg, t.el_deg); return p ? `Park ${p.slot} · ${p.name}` : 'Park'; }
+    case 'MAN': return 'Manual position';
+    case 'EXT': return 'PC program';
+    default: return t.name || (S.sel ? S.sel.label : '—');
+  }
+}

@@ -102,8 +102,9 @@ export function markActiveTarget() {
   const pk = st.mode === 'PARK' && st.target ? parkSlotAt(st.target.az_deg, st.target.el_deg) : null;
   for (let n = 1; n <= 4; n++) $(`park-${n}`).classList.toggle('active', !!pk && pk.slot === n);
 }
-export async function track(body, label, btn) {
-  const r = await act(`track ${label}`, 'POST', '/api/target', body, { btn });
+// TRACK a target (body as POST /api/target takes it); opts as act()'s (errEl, form).
+export async function track(body, label, btn, opts = {}) {
+  const r = await act(`track ${label}`, 'POST', '/api/target', body, { ...opts, btn });
   if (r.ok || r.status === 401) { // chosen: TRACK starts it after logging in
     S.sel = { body, label, serverName: r.data.target || null };
     setText('track-name', label);
@@ -126,6 +127,13 @@ export function parseAngle(str, hours) {
   }
   const v = parseNum(body);
   return sign * v;
+}
+// RA and Dec as typed -> {ra, dec} (NaN where not a number) and, when both are, the target's
+// body for POST /api/target and its label.
+export function radecTarget(raText, decText) {
+  const ra = parseAngle(raText, true); const dec = parseAngle(decText, false);
+  if (Number.isNaN(ra) || Number.isNaN(dec)) return { ra, dec, body: null, label: '' };
+  return { ra, dec, body: { ra_deg: ra, dec_deg: dec }, label: `RA ${fix(ra, 3)}° Dec ${dec >= 0 ? '+' : ''}${fix(dec, 3)}°` };
 }
 export function radecHint() {
   const ra = parseAngle($('ra').value, true); const dec = parseAngle($('dec').value, false);

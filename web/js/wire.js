@@ -9,7 +9,7 @@ import { bandLabel } from './bands.js';
 import { login, logout, showLogin } from './session.js';
 import { go, SCREENS, show } from './navigation.js';
 import { loadSky } from './sky.js';
-import { parseAngle, radecHint, track } from './targets.js';
+import { radecHint, radecTarget, track } from './targets.js';
 import { clean, loadConfig, showOther } from './setup.js';
 import { wireStation } from './station.js';
 import { wirePlanner } from './planner.js';
@@ -106,19 +106,15 @@ export function wire() {
   $('radec-form').addEventListener('submit', async (ev) => {
     ev.preventDefault();
     const f = $('radec-form');
-    const ra = parseAngle($('ra').value, true); const dec = parseAngle($('dec').value, false);
+    const t = radecTarget($('ra').value, $('dec').value);
     f.querySelectorAll('.bad').forEach((e) => e.classList.remove('bad'));
-    if (Number.isNaN(ra) || Number.isNaN(dec)) {
-      if (Number.isNaN(ra)) $('ra').classList.add('bad');
-      if (Number.isNaN(dec)) $('dec').classList.add('bad');
+    if (!t.body) {
+      if (Number.isNaN(t.ra)) $('ra').classList.add('bad');
+      if (Number.isNaN(t.dec)) $('dec').classList.add('bad');
       setText('radec-error', 'RA and Dec must be numbers: degrees (83.633), or h:m:s for RA and d:m:s for Dec.');
       return;
     }
-    const body = { ra_deg: ra, dec_deg: dec };
-    const label = `RA ${fix(ra, 3)}° Dec ${dec >= 0 ? '+' : ''}${fix(dec, 3)}°`;
-    const r = await act(`track ${label}`, 'POST', '/api/target', body, { btn: $('radec-go'), errEl: $('radec-error'), form: f });
-    if (r.ok || r.status === 401) { S.sel = { body, label, serverName: r.data.target || null }; setText('track-name', label); }
-    if (r.ok) toast(`TRACK ${label}`);
+    await track(t.body, t.label, $('radec-go'), { errEl: $('radec-error'), form: f });
   });
 
   // manual

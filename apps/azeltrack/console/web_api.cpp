@@ -144,7 +144,11 @@ linux_os::HttpReply WebApi::handle_get(const linux_os::HttpRequest& request) {
     if (csrf) body["csrf"] = *csrf;
     return json_reply(200, body);
   }
-  if (const WebAsset* asset = find_web_asset(p == "/" ? "/index.html" : p)) {
+  // The pages by their names: the console at "/", the 480×320 touch panel at "/panel".
+  std::string_view page = p;
+  if (p == "/") page = "/index.html";
+  if (p == "/panel") page = "/panel.html";
+  if (const WebAsset* asset = find_web_asset(page)) {
     return linux_os::HttpReply{200, std::string(asset->content_type), std::string(asset->body), {}};
   }
   return error_reply(404, "no such page: " + p);
@@ -162,6 +166,15 @@ std::optional<linux_os::HttpReply> WebApi::authorize(const linux_os::HttpRequest
     return error_reply(403, "CSRF token missing or wrong");
   }
   return std::nullopt;
+}
+
+bool WebApi::is_local_stop(const linux_os::HttpRequest& request) {
+  // STOP only stops, and a stop must never wait for a password: from this machine (the touch
+  // panel beside the controller, a script on it) it needs no login, as rotctld's `S` on the
+  // loopback needs none. From the LAN it needs one, like every other action.
+  if (request.path != "/api/stop" || request.method != "POST") return false;
+  const std::string& c = request.client;
+  return c == "::1" || c.rfind("127.", 0) == 0 || c.rfind("::ffff:127.", 0) == 0;
 }
 
 bool WebApi::has_session(const linux_os::HttpRequest& request) const {
@@ -217,7 +230,12 @@ void WebApi::handle_action(const linux_os::HttpRequest& request, const Respond& 
     login(request, respond);
     return;
   }
-  if (auto refusal = authorize(request)) {
+  if (is_local_stop(request)) {
+    if (!origin_matches(request)) {
+      respond(error_reply(403, "cross-origin request refused"));
+      return;
+    }
+  } else if (auto refusal = authorize(request)) {
     respond(*refusal);
     return;
   }

@@ -52,6 +52,8 @@ class WebApi {
   std::optional<linux_os::HttpReply> authorize(const linux_os::HttpRequest& request) const;
   [[nodiscard]] bool host_allowed(const std::string& host) const;
   [[nodiscard]] static bool origin_matches(const linux_os::HttpRequest& request);
+  /// POST /api/stop from a loopback address: allowed without a login.
+  [[nodiscard]] static bool is_local_stop(const linux_os::HttpRequest& request);
 
   ConsoleModel& model_;
   WebAuth& auth_;

@@ -31,7 +31,7 @@ TEST(TimeConfig, DefaultsWatchChronyAndChangeNothing) {
   EXPECT_DOUBLE_EQ(c.poll_s, 5.0);
   EXPECT_EQ(c.rtc, "/dev/rtc0");
   EXPECT_FALSE(c.manage_chrony);
-  EXPECT_EQ(c.sources_file, "/etc/chrony/sources.d/azeltrack.sources");
+  EXPECT_EQ(c.sources_file, "/var/lib/azeltrack/chrony/azeltrack.sources");
 }
 
 TEST(TimeConfig, EveryKeyIsRead) {

@@ -129,6 +129,28 @@ TEST(WebApi, ActionsWithoutLoginAre401AndDoNothing) {
   EXPECT_TRUE(rig.model.actions.empty());
 }
 
+TEST(WebApi, StopFromThisMachineNeedsNoLoginAndFromTheLanDoes) {
+  // The touch panel beside the controller must stop the antenna in one tap, logged in or not.
+  Rig rig;
+  for (const std::string client : {"127.0.0.1", "::1", "::ffff:127.0.0.1"}) {
+    linux_os::HttpRequest r = Rig::request("POST", "/api/stop");
+    r.client = client;
+    EXPECT_EQ(rig.handle(r).status, 200U) << client;
+  }
+  EXPECT_EQ(rig.model.actions.size(), 3U);
+  linux_os::HttpRequest lan = Rig::request("POST", "/api/stop");
+  EXPECT_EQ(rig.handle(lan).status, 401U);
+  // Anything else from this machine still needs the login; a page from elsewhere is refused.
+  linux_os::HttpRequest target = Rig::request("POST", "/api/target", R"({"name":"moon"})");
+  target.client = "127.0.0.1";
+  EXPECT_EQ(rig.handle(target).status, 401U);
+  linux_os::HttpRequest foreign = Rig::request("POST", "/api/stop");
+  foreign.client = "127.0.0.1";
+  foreign.origin = "http://evil.example";
+  EXPECT_EQ(rig.handle(foreign).status, 403U);
+  EXPECT_EQ(rig.model.actions.size(), 3U);
+}
+
 TEST(WebApi, SessionNeedsTheCsrfTokenAndTheSameOrigin) {
   Rig rig;
   const auto [cookie, csrf] = rig.login();

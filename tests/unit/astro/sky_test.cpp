@@ -120,9 +120,11 @@ TEST(SkyProperties, RangeRateIsTheDerivativeOfRange) {
     const auto [moon0, sun0] = distance(0.0);
     const auto [moon_p, sun_p] = distance(0.5);
     const auto [moon_m, sun_m] = distance(-0.5);
-    // Central difference over 1 s: truncation error < 1e-6 km/s for both bodies.
+    // Central difference over 1 s: truncation error < 1e-6 km/s for both bodies. The Sun's
+    // differs by up to 3.8e-7 km/s on x86-64 and 2.1e-6 on arm64 (ERFA built there with fused
+    // multiply-adds): 5e-6 km/s, 0.2 Hz of Doppler at 10 GHz, holds on both.
     EXPECT_NEAR(*moon0.range_rate_km_s, *moon_p.distance_km - *moon_m.distance_km, 2e-6) << i;
-    EXPECT_NEAR(*sun0.range_rate_km_s, *sun_p.distance_km - *sun_m.distance_km, 2e-6) << i;
+    EXPECT_NEAR(*sun0.range_rate_km_s, *sun_p.distance_km - *sun_m.distance_km, 5e-6) << i;
     EXPECT_GE(moon0.az_deg, 0.0);
     EXPECT_LT(moon0.az_deg, 360.0);
     EXPECT_LE(std::abs(moon0.el_geometric_deg), 90.0);
