@@ -250,7 +250,9 @@ try:
     for s in clients:
         s.settimeout(2)
         data = s.recv(65536)
-        frames += 1 if data[:1] == b"\x81" else 0
+        # A text frame (opcode 1), whole (FIN) or the first fragment of a longer state: RFC 6455
+        # lets the server fragment, and Beast does past its 4 KB write buffer.
+        frames += 1 if data[:1] in (b"\x81", b"\x01") else 0
     check(frames == 20, f"{frames} of 20 clients got a text frame")
     rss_kb = int([l for l in open(f"/proc/{daemon.pid}/status") if l.startswith("VmRSS")][0].split()[1])
     cpu0 = sum(int(x) for x in open(f"/proc/{daemon.pid}/stat").read().split()[13:15])
