@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "common/program_version.hpp"
 #include "common/usage_error.hpp"
 
 namespace {
@@ -23,7 +24,7 @@ void setup_logging() {
 int main(int argc, char** argv) {
   setup_logging();
   CLI::App app{"azeltrack: antenna tracking controller for EME, satellites and radio astronomy"};
-  app.set_version_flag("--version", std::string("azeltrack ") + AZT_VERSION);
+  app.set_version_flag("--version", "azeltrack " + std::string(azt::app::program_version()));
   app.require_subcommand(1);
   app.footer(
       "Examples:\n"

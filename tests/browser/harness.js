@@ -103,10 +103,11 @@ function setPassword(password) {
   if (r.status !== 0) throw new Error(`web password: ${r.stderr}`);
 }
 
-// The log is appended to, so that it covers every restart a test makes.
-async function startDaemon() {
+// The log is appended to, so that it covers every restart a test makes; `args` are more of
+// serve's options (the software test's --update-inbox).
+async function startDaemon(args = []) {
   const log = fs.openSync(path.join(tmp, 'daemon.log'), 'a');
-  daemon = spawn(bin, ['serve', '--config', config], { stdio: ['ignore', log, log] });
+  daemon = spawn(bin, ['serve', '--config', config, ...args], { stdio: ['ignore', log, log] });
   await until('the daemon to serve /api/state', async () => {
     const s = await state();
     return s && s.antenna && s.antenna.known;

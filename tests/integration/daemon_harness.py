@@ -50,6 +50,23 @@ def http_json(base, method, route, body=None, token=None, headers=None, timeout=
         return e.code, json.loads(e.read() or b"null")
 
 
+def http_upload(base, route, data, token=None, content_type="application/vnd.debian.binary-package",
+                timeout=30):
+    """(status, parsed JSON body) of a POST whose body is `data` (bytes), as a file upload."""
+    h = {"Content-Type": content_type}
+    if token:
+        h["Authorization"] = f"Bearer {token}"
+    req = urllib.request.Request(base + route, data=data, method="POST", headers=h)
+    try:
+        with urllib.request.urlopen(req, timeout=timeout) as r:
+            return r.status, json.loads(r.read() or b"null")
+    except urllib.error.HTTPError as e:
+        try:
+            return e.code, json.loads(e.read() or b"null")
+        except ValueError:
+            return e.code, None
+
+
 def wait_until(probe, seconds=10.0, every=0.1):
     """True once probe() is true, asked every `every` seconds (errors while the daemon starts
     or restarts count as not yet); False when `seconds` pass first."""

@@ -22,7 +22,8 @@ for f in /usr/bin/azeltrack /lib/systemd/system/azeltrack.service \
   /etc/chrony/sources.d/azeltrack.sources /usr/share/azeltrack/firmware/encoder-hub.hex \
   /usr/share/azeltrack/firmware/encoder-hub.elf /usr/share/man/man1/azeltrack.1.gz \
   /usr/share/doc/azeltrack/README.md /usr/share/doc/azeltrack/copyright \
-  /usr/share/doc/azeltrack/examples/station.toml; do
+  /usr/share/doc/azeltrack/examples/station.toml /usr/libexec/azeltrack/azeltrack-update \
+  /lib/systemd/system/azeltrack-update.path /lib/systemd/system/azeltrack-update.service; do
   grep -qx "$f" "$tmp/files" && ok || bad "the package lacks $f"
 done
 # Every manual under docs/ is in the package, uncompressed (the units' Documentation= links).
@@ -60,8 +61,11 @@ deb_arch=$(dpkg-deb -f "$deb" Architecture)
 if [ "$deb_arch" != "$(dpkg --print-architecture)" ]; then
   run=("qemu-$(dpkg-architecture -a "$deb_arch" -qDEB_HOST_GNU_CPU 2>/dev/null)-static")
 fi
+# It reports the package's version (what the console's Software page shows and compares).
+deb_version=$(dpkg-deb -f "$deb" Version)
 "${run[@]}" "$tmp/root/usr/bin/azeltrack" --version >"$tmp/version" 2>&1 && grep -q "$cmake_version" "$tmp/version" &&
-  ok || bad "azeltrack --version from the package: $(cat "$tmp/version")"
+  grep -qx "azeltrack $deb_version" "$tmp/version" &&
+  ok || bad "azeltrack --version from the package $deb_version: $(cat "$tmp/version")"
 depends=$(dpkg-deb -f "$deb" Depends)
 for lib in liberfa1 libhamlib4 libsodium23 libsystemd0 libgpiod2 acl tzdata; do
   grep -q "$lib" <<<"$depends" && ok || bad "Depends lacks $lib: $depends"

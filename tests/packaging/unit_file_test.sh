@@ -15,7 +15,7 @@ unit="$src/debian/azeltrack.service"
 
 sed "s|/usr/bin/azeltrack|$bin|" "$unit" >"$tmp/azeltrack.service"
 if out=$(systemd-analyze verify --man=no "$tmp/azeltrack.service" 2>&1); then ok; else bad "verify: $out"; fi
-for line in 'Type=notify' 'WatchdogSec=' 'ExecStart=/usr/bin/azeltrack serve --config /var/lib/azeltrack/azeltrack.toml' \
+for line in 'Type=notify' 'WatchdogSec=' 'ExecStart=/usr/bin/azeltrack serve --config /var/lib/azeltrack/azeltrack.toml --update-inbox /var/lib/azeltrack/update --update-status /var/lib/azeltrack-update/status' \
   'StateDirectory=azeltrack' 'RuntimeDirectory=azeltrack' 'Restart=on-failure' 'User=azeltrack' \
   'CapabilityBoundingSet=$' 'DevicePolicy=closed' 'ProtectSystem=strict'; do
   grep -q "^$line" "$unit" && ok || bad "unit file lacks '$line'"
@@ -27,6 +27,24 @@ grep -q '^SystemCallFilter=@system-service adjtimex' "$unit" && ok || bad "adjti
 for dev in char-ttyUSB char-ttyACM char-gpiochip char-spi char-i2c; do
   grep -q "^DeviceAllow=$dev rw" "$unit" && ok || bad "device $dev not allowed"
 done
+
+# The update helper's units (issue 17 §2): the path unit watches the daemon's inbox, the service
+# runs the helper once; both verify, and the inbox is the one the daemon's ExecStart names.
+sed "s|/usr/libexec/azeltrack/azeltrack-update|$src/packaging/update/azeltrack-update|" \
+  "$src/debian/azeltrack.azeltrack-update.service" >"$tmp/azeltrack-update.service"
+cp "$src/debian/azeltrack.azeltrack-update.path" "$tmp/azeltrack-update.path"
+if out=$(systemd-analyze verify --man=no "$tmp/azeltrack-update.path" "$tmp/azeltrack-update.service" 2>&1); then
+  ok
+else
+  bad "verify the update units: $out"
+fi
+grep -qx 'PathExists=/var/lib/azeltrack/update/request.deb' "$tmp/azeltrack-update.path" && ok ||
+  bad "the path unit does not watch the daemon's inbox"
+grep -qx 'Type=oneshot' "$tmp/azeltrack-update.service" && ! grep -q '^\[Install\]' "$tmp/azeltrack-update.service" &&
+  ok || bad "the helper is a oneshot started by its path unit only"
+grep -q 'dh_installsystemd -pazeltrack --restart-after-upgrade azeltrack.service$' "$src/debian/rules" &&
+  grep -q 'dh_installsystemd -pazeltrack --name=azeltrack-update --restart-after-upgrade azeltrack-update.path$' "$src/debian/rules" &&
+  ok || bad "debian/rules must name the units the maintainer scripts restart (never the helper's service)"
 
 # The exposure score: "→ Overall exposure level for azeltrack.service: 1.7 OK".
 report=$(systemd-analyze security --offline=true --no-pager "$tmp/azeltrack.service" 2>&1)

@@ -32,7 +32,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "integration"))
-from daemon_harness import Checks, http_json, wait_until  # noqa: E402
+from daemon_harness import Checks, http_json, http_upload, wait_until  # noqa: E402
 
 MIRROR = "http://deb.debian.org/debian"
 CONFIG = "/var/lib/azeltrack/azeltrack.toml"
@@ -95,7 +95,7 @@ class Root:
                            stderr=subprocess.STDOUT, text=True)
         return p.returncode, p.stdout
 
-    def with_daemon(self, client_args):
+    def with_daemon(self, client_args, client_env=None):
         """Starts the unit's ExecStart as its User in a private network, runs this script as a
         client there (`--client …`), then stops the daemon with SIGTERM as systemd would.
         (client's exit status, daemon's exit status, the daemon's log)."""
@@ -104,8 +104,10 @@ class Root:
                           if l.startswith("ExecStart="))
         user = next(l.split("=", 1)[1] for l in unit.splitlines() if l.startswith("User="))
         root = shlex.quote(self.path)
-        client = " ".join(shlex.quote(a) for a in
-                          [sys.executable, os.path.abspath(__file__), "--client"] + client_args)
+        env = {"AZT_ROOT": self.path, **(client_env or {})}
+        client = " ".join([f"{k}={shlex.quote(v)}" for k, v in env.items()] +
+                          [shlex.quote(a) for a in
+                           [sys.executable, os.path.abspath(__file__), "--client"] + client_args])
         inner = "\n".join([
             # RuntimeDirectory=azeltrack, as systemd makes it.
             f"chroot {root} install -d -o {user} -g {user} -m 755 /run/azeltrack",
@@ -148,22 +150,96 @@ class Root:
 
 
 def client(phase, token_file, out_file):
-    """Runs inside the daemon's network namespace: waits for the console, then one phase."""
+    """Runs inside the daemon's network namespace: waits for the console, then one phase. The
+    phases of an update from the console find the root in AZT_ROOT and the packages in
+    AZT_UPDATE_DEBS (a JSON object of name -> path in the root)."""
     checks = Checks()
     up = wait_until(lambda: http_json(BASE, "GET", "/api/state")[0] == 200, seconds=30)
     checks(up, "the daemon's console answers")
-    if up and phase == "change":
+    token = ""
+    if token_file != "-":
         with open(token_file, encoding="utf-8") as f:
             token = f.read().strip()
+    if up and phase == "change":
         for method, route, body in CHANGES:
             status, reply = http_json(BASE, method, route, body, token=token)
             checks(status == 200, f"{method} {route} {body}: {status} {reply}")
+    if up and phase == "console-update":
+        console_update(token, checks)
+    if up and phase == "console-refusals":
+        console_refusals(token, checks)
     if up:
         status, config = http_json(BASE, "GET", "/api/config")
         checks(status == 200, f"GET /api/config: {status}")
+        _, software = http_json(BASE, "GET", "/api/software")
         with open(out_file, "w", encoding="utf-8") as f:
-            json.dump(config, f, sort_keys=True)
+            json.dump({"config": config, "software": software}, f, sort_keys=True)
     return checks.summary(f"client {phase}")
+
+
+def run_helper():
+    """Plays azeltrack-update.path: runs the root helper in the root, as systemd would."""
+    root = os.environ["AZT_ROOT"]
+    return subprocess.run(["chroot", root, "/usr/libexec/azeltrack/azeltrack-update"],
+                          stdin=subprocess.DEVNULL, capture_output=True, text=True,
+                          env=dict(os.environ, PATH="/usr/sbin:/usr/bin:/sbin:/bin"))
+
+
+def upload_and_help(token, deb_in_root):
+    """Uploads a package through the console, runs the helper, and waits until the daemon shows
+    the helper done with it. (upload status, upload reply, /api/software at the end)."""
+    with open(os.environ["AZT_ROOT"] + deb_in_root, "rb") as f:
+        data = f.read()
+    status, reply = http_upload(BASE, "/api/software/update", data, token=token)
+    if status != 200:
+        return status, reply, None
+    helper = run_helper()
+    software = {}
+
+    def done():
+        nonlocal software
+        software = http_json(BASE, "GET", "/api/software")[1]
+        h = software.get("helper") or {}
+        return h.get("sha256") == reply.get("sha256") and h.get("phase") in (
+            "refused", "installed", "failed")
+    wait_until(done, seconds=30)
+    software["helper_run"] = helper.returncode
+    software["helper_stderr"] = helper.stderr[-500:]
+    return status, reply, software
+
+
+def console_update(token, checks):
+    debs = json.loads(os.environ["AZT_UPDATE_DEBS"])
+    _, before = http_json(BASE, "GET", "/api/software")
+    checks(before.get("updates") is True, f"the packaged daemon takes updates: {before}")
+    status, reply, software = upload_and_help(token, debs["next"])
+    checks(status == 200 and len(reply.get("sha256", "")) == 64, f"upload: {status} {reply}")
+    inbox = os.environ["AZT_ROOT"] + "/var/lib/azeltrack/update/request.deb"
+    checks(not os.path.exists(inbox), "the helper took the request from the inbox")
+    h = (software or {}).get("helper") or {}
+    checks(h.get("phase") == "installed" and h.get("percent") == 100,
+           f"the helper installed it: {software}")
+    checks(h.get("from") == before.get("version") and h.get("to") == debs["next_version"],
+           f"from {before.get('version')} to {debs['next_version']}: {h}")
+
+
+def console_refusals(token, checks):
+    """Each package the helper must refuse, and what the daemon refuses itself: nothing changes."""
+    debs = json.loads(os.environ["AZT_UPDATE_DEBS"])
+    status, reply = http_upload(BASE, "/api/software/update", b"not a package", token=token)
+    checks(status == 400 and "not a Debian package" in reply.get("error", ""),
+           f"garbage refused by the daemon: {status} {reply}")
+    with open(os.environ["AZT_ROOT"] + debs["next"], "rb") as f:
+        good = f.read()
+    status, reply = http_upload(BASE, "/api/software/update", good)
+    checks(status == 401, f"an upload without a login: {status} {reply}")
+    cases = [("older", "is older than the installed"), ("other_name", "not azeltrack"),
+             ("other_arch", "this machine is"), ("corrupt", "not a valid Debian package")]
+    for name, reason in cases:
+        status, reply, software = upload_and_help(token, debs[name])
+        h = (software or {}).get("helper") or {}
+        checks(status == 200 and h.get("phase") == "refused" and reason in h.get("message", ""),
+               f"{name}: refused with '{reason}': {status} {reply} {software}")
 
 
 def changed_settings_shown(config):
@@ -205,7 +281,8 @@ def main():
         in_root = ["/tmp/" + os.path.basename(d) for d in debs]
         install_and_first_start(root, in_root[0], checks)
         if len(in_root) > 1:
-            change_and_upgrade(root, in_root[1], checks)
+            settings = change_and_upgrade(root, in_root[1], checks)
+            update_from_console(root, in_root, settings, checks)
         remove_and_purge(root, checks)
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
@@ -256,7 +333,7 @@ def change_and_upgrade(root, deb_n1, checks):
     checks(c == 0, f"settings changed through the daemon\n{out}")
     checks(d == 0 and "motors stopped" in daemon_log,
            f"SIGTERM stopped the motors and exited 0 (status {d})\n{daemon_log[-2000:]}")
-    before = root.json("/tmp/before.json")
+    before = (root.json("/tmp/before.json") or {}).get("config")
     checks(before and changed_settings_shown(before), f"/api/config shows the changes: {before}")
     sha_before = root.sha256(CONFIG)
 
@@ -277,8 +354,73 @@ def change_and_upgrade(root, deb_n1, checks):
     log("starting the upgraded daemon")
     c, d, daemon_log, out = root.with_daemon(["after", "-", root.path + "/tmp/after.json"])
     checks(c == 0 and d == 0, f"the daemon runs after the upgrade\n{out}\n{daemon_log}")
-    after = root.json("/tmp/after.json")
+    after = (root.json("/tmp/after.json") or {}).get("config")
     checks(after is not None and after == before, f"every setting unchanged:\n{before}\n{after}")
+    return before
+
+
+def refused_packages(root, deb_n1):
+    """The packages the helper must refuse, made in the root's /tmp: another package's name (the
+    test data's azeltrack-test), another architecture, and N+1 with its data member damaged."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    shutil.copy(os.path.join(here, "..", "data", "software", "azeltrack-test_0.1_all.deb"),
+                root.path + "/tmp/other_name.deb")
+    host = subprocess.run(["dpkg", "--print-architecture"], capture_output=True,
+                          text=True).stdout.strip()
+    other = "arm64" if host != "arm64" else "amd64"
+    with tempfile.TemporaryDirectory() as tmp:
+        os.makedirs(tmp + "/pkg/DEBIAN")
+        with open(tmp + "/pkg/DEBIAN/control", "w", encoding="utf-8") as f:
+            f.write(f"Package: azeltrack\nVersion: 99.0\nArchitecture: {other}\n"
+                    "Maintainer: test <test@example.org>\nDescription: another architecture\n")
+        subprocess.run(["dpkg-deb", "--root-owner-group", "--build", tmp + "/pkg",
+                        root.path + "/tmp/other_arch.deb"], check=True, capture_output=True)
+    with open(root.path + deb_n1, "rb") as f:
+        data = bytearray(f.read())
+    # The data member is last and largest: damage it inside, the ar headers stay whole, so the
+    # daemon's check passes and dpkg-deb's finds the bad compressed stream.
+    middle = len(data) - len(data) // 4
+    data[middle:middle + 64] = bytes(b ^ 0x5A for b in data[middle:middle + 64])
+    with open(root.path + "/tmp/corrupt.deb", "wb") as f:
+        f.write(data)
+    return {"other_name": "/tmp/other_name.deb", "other_arch": "/tmp/other_arch.deb",
+            "corrupt": "/tmp/corrupt.deb"}
+
+
+def update_from_console(root, debs, settings, checks):
+    """Issue 17 §2, the seed's update page: back on N (a downgrade by apt, settings kept), the
+    operator uploads N+1 on the console; the root helper (run here as azeltrack-update.path would
+    start it) checks and installs it; the daemon restarted (as the postinst would, with systemd)
+    runs N+1 and shows the helper's result; every setting is unchanged. Then the packages the
+    helper must refuse change nothing."""
+    log("downgrading to N, to update it from the console")
+    status, out = root.run(f"apt-get install -y -q --allow-downgrades {shlex.quote(debs[0])}")
+    checks(status == 0, f"apt-get install N again: {status}\n{out[-2000:]}")
+    sha_before = root.sha256(CONFIG)
+    _, next_version = root.run(f"dpkg-deb -f {debs[1]} Version")
+    env = {"AZT_UPDATE_DEBS": json.dumps({"next": debs[1], "next_version": next_version.strip(),
+                                          "older": debs[0], **refused_packages(root, debs[1])})}
+
+    log("updating N to N+1 from the console (upload, the root helper, apt)")
+    c, d, daemon_log, out = root.with_daemon(["console-update", root.path + "/tmp/token",
+                                              root.path + "/tmp/update.json"], env)
+    checks(c == 0, f"the update from the console\n{out}\n{daemon_log[-2000:]}")
+    _, version = root.run("dpkg-query -W -f='${Version}' azeltrack")
+    checks(version.strip() == next_version.strip(), f"installed {version} after the console's update")
+    checks(root.sha256(CONFIG) == sha_before, "the settings file is byte for byte the same")
+
+    log("the restarted daemon shows the update's result")
+    c, d, daemon_log, out = root.with_daemon(["console-refusals", root.path + "/tmp/token",
+                                              root.path + "/tmp/refusals.json"], env)
+    checks(c == 0 and d == 0, f"packages refused, daemon running\n{out}\n{daemon_log[-2000:]}")
+    shown = root.json("/tmp/refusals.json") or {}
+    software = shown.get("software") or {}
+    checks(software.get("version") == next_version.strip(),
+           f"the daemon after the restart runs {next_version.strip()}: {software}")
+    checks(shown.get("config") == settings, f"every setting unchanged:\n{settings}\n{shown.get('config')}")
+    _, version = root.run("dpkg-query -W -f='${Version}' azeltrack")
+    checks(version.strip() == next_version.strip(), f"still {next_version.strip()} after the refusals")
+    checks(root.sha256(CONFIG) == sha_before, "the settings file is still the same")
 
 
 def remove_and_purge(root, checks):
@@ -296,6 +438,7 @@ def remove_and_purge(root, checks):
     checks(not root.exists("/var/lib/azeltrack"), "/var/lib/azeltrack is gone")
     checks(root.run("getent passwd azeltrack")[0] != 0, "the user is gone")
     checks(root.run("getent group azeltrack")[0] != 0, "the group is gone")
+    checks(not root.exists("/var/lib/azeltrack-update"), "/var/lib/azeltrack-update is gone")
     for gone in ("/lib/systemd/system/azeltrack.service",
                  "/etc/systemd/system/multi-user.target.wants/azeltrack.service",
                  "/etc/chrony/conf.d/azeltrack.conf", "/etc/chrony/sources.d/azeltrack.sources"):

@@ -13,9 +13,13 @@ import { loadTargets } from './targets.js';
 import { buildPark, buildTilt, drawTilt, loadConfig } from './setup.js';
 import { applyTheme, wire } from './wire.js';
 import { renderScan } from './scan.js';
+import { renderForm as renderSoftwareForm } from './software.js';
 
 function start() {
-  useSocket({ state: onState, connected: () => { if (!S.config) loadConfig(); if (!S.targets) loadTargets(); } });
+  // The software page's form follows the login, which any screen can change: each state message
+  // brings it up to date (its own polling is slower).
+  const state = (st) => { onState(st); if (S.screen === 'software') renderSoftwareForm(); };
+  useSocket({ state, connected: () => { if (!S.config) loadConfig(); if (!S.targets) loadTargets(); } });
   applyTheme(localStorage.getItem('azt.theme') || 'dark');
   buildPark();
   buildTilt();

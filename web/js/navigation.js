@@ -9,12 +9,13 @@ import { drawTilt, loadConfig } from './setup.js';
 import { renderStationPage } from './station.js';
 import { openPlanner } from './planner.js';
 import { openScan } from './scan.js';
+import { openSoftware, softwareSummary } from './software.js';
 
 export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
 // Pages without a tab of their own (the phone's tab bar has no room): reached from the header's
 // status icons and from Setup, whose tab stays lit on them; the planner from the Moon panel, the
-// pointing scan from the Moon panel, Targets and Sky.
-export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets' };
+// pointing scan from the Moon panel, Targets and Sky; the software page from Setup.
+export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets', software: 'setup' };
 
 export function show(name) {
   if (!SCREENS.includes(name) && !SUBSCREENS[name]) name = 'main';
@@ -29,9 +30,11 @@ export function show(name) {
   if (name === 'targets') loadTargets();
   if (name === 'sky') { loadSky(); drawSky(true); }
   if (name === 'setup' || name === 'antenna' || name === 'manual') loadConfig();
+  if (name === 'setup') softwareSummary();
   if (name === 'antenna') drawTilt();
   if (name === 'planner') openPlanner();
   else if (name === 'scan') openScan();
+  else if (name === 'software') openSoftware();
   else if (SUBSCREENS[name]) renderStationPage(name, true);
 }
 export function go(name) { if (location.hash === `#${name}`) show(name); else location.hash = name; }

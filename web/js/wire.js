@@ -14,6 +14,7 @@ import { clean, loadConfig, showOther } from './setup.js';
 import { wireStation } from './station.js';
 import { wirePlanner } from './planner.js';
 import { wireScan } from './scan.js';
+import { wireSoftware } from './software.js';
 
 function confirmTwice(btn, label, fn) { // a second press within 4 s confirms
   if (btn.dataset.armed) { delete btn.dataset.armed; setText(btn, btn.dataset.label); fn(); return; }
@@ -29,6 +30,7 @@ export function wire() {
   wireStation(go);
   wirePlanner();
   wireScan();
+  wireSoftware();
 
   // login
   $('login-form').addEventListener('submit', login);

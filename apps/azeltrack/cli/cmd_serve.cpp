@@ -57,6 +57,12 @@ Runner add_serve_command(CLI::App& app) {
                   "~/.config/azeltrack/azeltrack.toml; written with defaults if missing)");
   cmd->add_option("--run-for", opts->run_for_s, "Stop after this many seconds (tests)")
       ->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--update-inbox", opts->update_inbox,
+                  "Folder where a package uploaded on the console's Software page is left for "
+                  "the root update helper (the package's unit: /var/lib/azeltrack/update)");
+  cmd->add_option("--update-status", opts->update_status,
+                  "The update helper's status file (the package's unit: "
+                  "/var/lib/azeltrack-update/status)");
   return [opts] {
     if (opts->config_path.empty()) opts->config_path = default_config_path();
     write_default_if_missing(opts->config_path);

@@ -39,20 +39,23 @@ std::string ensure_password(ConsoleParts& parts,
 }  // namespace
 
 ConsoleServer::ConsoleServer(boost::asio::io_context& io, ConsoleParts parts,
-                             const std::function<void(const std::string&)>& log) {
+                             const std::function<void(const std::string&)>& log,
+                             SoftwareUpdates::Config software) {
   const WebConfig web = parts.config.web;
   auth_ =
       std::make_unique<WebAuth>(WebAuth::Config{ensure_password(parts, log), web.api_token_sha256});
   std::function<double()> now = parts.monotonic_s;
   Offload offload = parts.offload;
+  software_ = std::make_unique<SoftwareUpdates>(std::move(software), offload, parts.unix_s);
   console_ = std::make_unique<DaemonConsole>(std::move(parts));
   api_ = std::make_unique<WebApi>(*console_, *auth_, WebApiConfig{web.allowed_hosts}, now,
                                   std::move(offload));
+  api_->serve_software(*software_);
   linux_os::HttpServer::Callbacks callbacks;
-  callbacks.handler = [this](const linux_os::HttpRequest& r,
+  callbacks.handler = [this](linux_os::HttpRequest r,
                              const linux_os::HttpServer::Respond& respond) {
     const bool change = r.method != "GET" && r.method != "HEAD";
-    api_->handle(r, [this, change, respond](linux_os::HttpReply reply) {
+    api_->handle(std::move(r), [this, change, respond](linux_os::HttpReply reply) {
       // A change made here reaches every open console now, not at the next periodic push.
       if (change && reply.status == 200 && server_) server_->push_now();
       respond(std::move(reply));
@@ -62,6 +65,7 @@ ConsoleServer::ConsoleServer(boost::asio::io_context& io, ConsoleParts parts,
     return api_->check_upgrade(r);
   };
   callbacks.has_session = [this](const linux_os::HttpRequest& r) { return api_->has_session(r); };
+  callbacks.body_limit = [this](const linux_os::HttpRequest& r) { return api_->body_limit(r); };
   callbacks.state = [this] {
     return console_->state().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   };

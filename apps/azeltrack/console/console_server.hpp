@@ -8,6 +8,7 @@
 
 #include "azt/linux/http_server.hpp"
 #include "console/daemon_console.hpp"
+#include "console/software_updates.hpp"
 #include "console/web_api.hpp"
 #include "console/web_auth.hpp"
 
@@ -18,8 +19,10 @@ class ConsoleServer {
   /// Opens the server; throws UsageError naming [web] when it cannot (a port in use, a LAN bind
   /// address without a password). With no password configured on a loopback address, one is
   /// generated, its hash saved through the store, and the password given to `log` once.
+  /// `software`: the Software page's version and update paths (SoftwareUpdates::Config).
   ConsoleServer(boost::asio::io_context& io, ConsoleParts parts,
-                const std::function<void(const std::string&)>& log);
+                const std::function<void(const std::string&)>& log,
+                SoftwareUpdates::Config software);
 
   [[nodiscard]] unsigned short port() const { return server_->port(); }
   [[nodiscard]] std::size_t websockets() const { return server_->websockets(); }
@@ -30,6 +33,7 @@ class ConsoleServer {
  private:
   std::unique_ptr<WebAuth> auth_;
   std::unique_ptr<DaemonConsole> console_;
+  std::unique_ptr<SoftwareUpdates> software_;
   std::unique_ptr<WebApi> api_;
   std::unique_ptr<linux_os::HttpServer> server_;
 };

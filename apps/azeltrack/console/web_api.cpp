@@ -56,6 +56,19 @@ double query_number(const std::string& query, const std::string& key, double fal
   }
 }
 
+/// An action's answer: {"ok": true, …its fields} or its refusal.
+ActDone answer(const WebApi::Respond& respond) {
+  return [respond](ActResult result) {
+    if (result.error) {
+      respond(error_reply(result.error->status(), result.error->what(), result.error->field()));
+      return;
+    }
+    json body{{"ok", true}};
+    body.update(result.fields);
+    respond(json_reply(200, body));
+  };
+}
+
 }  // namespace
 
 std::string cookie_value(const std::string& cookie_header, const std::string& name) {
@@ -98,7 +111,7 @@ std::optional<linux_os::HttpReply> WebApi::check_upgrade(
   return std::nullopt;
 }
 
-void WebApi::handle(const linux_os::HttpRequest& request, const Respond& respond) {
+void WebApi::handle(linux_os::HttpRequest request, const Respond& respond) {
   if (!host_allowed(request.host)) {
     respond(error_reply(
         403, "Host '" + request.host + "' is not allowed: add it to [web] allowed_hosts"));
@@ -113,6 +126,8 @@ void WebApi::handle(const linux_os::HttpRequest& request, const Respond& respond
         }
         respond(json_reply(200, result.fields));
       });
+    } else if (request.method == "GET" && request.path == "/api/software") {
+      software_status(respond);
     } else if (request.method == "GET" || request.method == "HEAD") {
       respond(handle_get(request));
     } else if (request.method == "POST" || request.method == "PUT") {
@@ -166,6 +181,22 @@ std::optional<linux_os::HttpReply> WebApi::authorize(const linux_os::HttpRequest
     return error_reply(403, "CSRF token missing or wrong");
   }
   return std::nullopt;
+}
+
+std::size_t WebApi::body_limit(const linux_os::HttpRequest& head) const {
+  const bool upload = software_ != nullptr && software_->enabled() && head.method == "POST" &&
+                      head.path == "/api/software/update";
+  return upload && has_session(head) ? SoftwareUpdates::kMaxPackageBytes
+                                     : linux_os::HttpServer::kMaxBodyBytes;
+}
+
+void WebApi::software_status(const Respond& respond) {
+  if (software_ == nullptr) {
+    respond(error_reply(404, "no software page here"));
+    return;
+  }
+  software_->status(
+      [respond](const ActResult& result) { respond(json_reply(200, result.fields)); });
 }
 
 bool WebApi::is_local_stop(const linux_os::HttpRequest& request) {
@@ -225,7 +256,7 @@ void WebApi::login(const linux_os::HttpRequest& request, const Respond& respond)
       });
 }
 
-void WebApi::handle_action(const linux_os::HttpRequest& request, const Respond& respond) {
+void WebApi::handle_action(linux_os::HttpRequest& request, const Respond& respond) {
   if (request.path == "/api/login" && request.method == "POST") {
     login(request, respond);
     return;
@@ -247,6 +278,14 @@ void WebApi::handle_action(const linux_os::HttpRequest& request, const Respond& 
     respond(r);
     return;
   }
+  if (request.path == "/api/software/update" && request.method == "POST") {
+    if (software_ == nullptr) {
+      respond(error_reply(404, "no software updates here"));
+      return;
+    }
+    software_->receive(std::move(request.body), answer(respond));
+    return;
+  }
   const bool is_config = request.path.rfind("/api/config/", 0) == 0;
   if (is_config != (request.method == "PUT") || request.path.rfind("/api/", 0) != 0) {
     respond(error_reply(request.path.rfind("/api/", 0) == 0 ? 405 : 404,
@@ -261,16 +300,7 @@ void WebApi::handle_action(const linux_os::HttpRequest& request, const Respond& 
       return;
     }
   }
-  model_.act(
-      request.path.substr(5), body, "console " + request.client, [respond](ActResult result) {
-        if (result.error) {
-          respond(error_reply(result.error->status(), result.error->what(), result.error->field()));
-          return;
-        }
-        json answer{{"ok", true}};
-        answer.update(result.fields);
-        respond(json_reply(200, answer));
-      });
+  model_.act(request.path.substr(5), body, "console " + request.client, answer(respond));
 }
 
 }  // namespace azt::app

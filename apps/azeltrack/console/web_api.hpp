@@ -13,6 +13,7 @@
 #include "azt/linux/http_server.hpp"
 #include "common/off_loop.hpp"
 #include "console/console_model.hpp"
+#include "console/software_updates.hpp"
 #include "console/web_auth.hpp"
 
 namespace azt::app {
@@ -36,8 +37,14 @@ class WebApi {
         offload_(std::move(offload)) {}
 
   /// Answers `request` through `respond`, exactly once: at once, or later for what runs off the
-  /// loop (a login's password check, a save). Never throws.
-  void handle(const linux_os::HttpRequest& request, const Respond& respond);
+  /// loop (a login's password check, a save). Never throws. The request is taken by value: a
+  /// package upload's body moves on to the software updates, never copied on the loop.
+  void handle(linux_os::HttpRequest request, const Respond& respond);
+  /// GET /api/software and POST /api/software/update (issue 17 §2); without, both are 404.
+  void serve_software(SoftwareUpdates& software) { software_ = &software; }
+  /// The largest body the request whose head this is may send: a package upload from a
+  /// logged-in console may be large, everything else is small (HttpServer::kMaxBodyBytes).
+  [[nodiscard]] std::size_t body_limit(const linux_os::HttpRequest& head) const;
   /// The WebSocket upgrade: nullopt accepts it.
   std::optional<linux_os::HttpReply> check_upgrade(const linux_os::HttpRequest& request) const;
   /// Whether the request carries a valid session cookie or bearer token (no CSRF check): a
@@ -46,8 +53,10 @@ class WebApi {
 
  private:
   linux_os::HttpReply handle_get(const linux_os::HttpRequest& request);
-  void handle_action(const linux_os::HttpRequest& request, const Respond& respond);
+  void handle_action(linux_os::HttpRequest& request, const Respond& respond);
   void login(const linux_os::HttpRequest& request, const Respond& respond);
+  /// GET /api/software, answered off the loop; 404 when not served.
+  void software_status(const Respond& respond);
   /// nullopt when the request may act; otherwise the 401/403 to send.
   std::optional<linux_os::HttpReply> authorize(const linux_os::HttpRequest& request) const;
   [[nodiscard]] bool host_allowed(const std::string& host) const;
@@ -60,6 +69,7 @@ class WebApi {
   WebApiConfig config_;
   Clock now_;
   Offload offload_;
+  SoftwareUpdates* software_ = nullptr;
 };
 
 /// The cookie's value named `name` in a Cookie header, "" when absent.

@@ -18,6 +18,11 @@ struct DaemonOptions {
   std::string config_path;
   /// Stop after this many seconds (0: until a signal). For tests and benchmarks.
   double run_for_s = 0.0;
+  /// Software updates from the console (the package's unit sets both): the folder the uploaded
+  /// package goes to for the root update helper, and the helper's status file. Empty: the
+  /// console shows the version only.
+  std::string update_inbox;
+  std::string update_status;
   /// Tests: called on the loop once it runs, with the loop, to drive peers and inject faults.
   std::function<void(boost::asio::io_context&)> on_loop_started;
 };

@@ -15,6 +15,7 @@
 #include "azt/track/pass_plan.hpp"
 #include "azt/util/valid_utf8.hpp"
 #include "common/horizon_mask_option.hpp"
+#include "common/program_version.hpp"
 #include "common/sky_report.hpp"
 #include "common/sky_setup.hpp"
 #include "common/target_request.hpp"
@@ -88,7 +89,8 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
           }}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
-          "azeltrack " AZT_VERSION " " + antenna_->describe() + " at " + config_.sky.settings.grid,
+          "azeltrack " + std::string(program_version()) + " " + antenna_->describe() + " at " +
+              config_.sky.settings.grid,
           [this](const std::string& line) { control_event(line); }),
       // SIGHUP too: a closed terminal must stop the motors, not kill the process mid-move.
       signals_(io_, SIGINT, SIGTERM, SIGHUP),
@@ -371,7 +373,9 @@ void StationDaemon::open_console() {
                    [this] { return network_->to_json(); },
                    [this] { return receiver_->to_json(); },
                    scanner_.get()},
-      [](const std::string& line) { spdlog::warn("{}", line); });
+      [](const std::string& line) { spdlog::warn("{}", line); },
+      SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
+                              options_.update_inbox, options_.update_status});
   spdlog::info("web console on http://{}:{}/", config_.web.bind, console_->port());
 }
 

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "azt/linux/http_request.hpp"
@@ -23,7 +25,6 @@ using tcp = asio::ip::tcp;
 
 namespace {
 
-constexpr std::size_t kMaxBodyBytes = std::size_t{64} * 1024;
 constexpr std::size_t kMaxHeaderBytes = std::size_t{8} * 1024;
 constexpr std::size_t kMaxWsMessageBytes = std::size_t{4} * 1024;
 constexpr auto kIdleTimeout = std::chrono::seconds(30);
@@ -190,11 +191,63 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
   [[nodiscard]] bool open() const override { return stream_.socket().is_open(); }
 
  private:
+  // The head first: its route and credentials decide how large a body may follow (a logged-in
+  // operator's package upload; 64 KiB for everything else), before any of it is read.
   void read() {
     parser_.emplace();
-    parser_->body_limit(kMaxBodyBytes);
+    // Beast compares Content-Length with the limit as the head completes: no limit until
+    // on_header has chosen one (it refuses a larger Content-Length before reading a byte).
+    parser_->body_limit(std::numeric_limits<std::uint64_t>::max());
     parser_->header_limit(kMaxHeaderBytes);
     stream_.expires_after(kIdleTimeout);
+    http::async_read_header(
+        stream_, buffer_, *parser_,
+        [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_header(ec); });
+  }
+
+  void on_header(beast::error_code ec) {
+    if (ec || shared_->closed) {
+      on_read(ec);
+      return;
+    }
+    const auto& head = parser_->get();
+    std::size_t limit = HttpServer::kMaxBodyBytes;
+    if (shared_->callbacks.body_limit) {
+      limit = shared_->callbacks.body_limit(to_http_request(head, peer));
+    }
+    const auto length = parser_->content_length();
+    if (length && *length > limit) {
+      reply(plain_error(413, "request body too large"), head.version(), false);
+      return;
+    }
+    parser_->body_limit(limit);
+    // An upload gets time to arrive over a slow link: the idle time and a second per 64 KiB.
+    if (limit > HttpServer::kMaxBodyBytes) {
+      const std::uint64_t bytes = length.value_or(limit);
+      stream_.expires_after(kIdleTimeout +
+                            std::chrono::seconds(bytes / (std::uint64_t{64} * 1024)));
+    }
+    if (beast::iequals(head[http::field::expect], "100-continue")) {
+      continue_then_read_body(head.version());
+      return;
+    }
+    read_body();
+  }
+
+  /// curl and other clients wait for "100 Continue" before sending a large body (RFC 9110 §10.1.1).
+  void continue_then_read_body(unsigned version) {
+    auto res = std::make_shared<http::response<http::empty_body>>(http::status::continue_, version);
+    http::async_write(stream_, *res,
+                      [self = shared_from_this(), res](beast::error_code ec, std::size_t) {
+                        if (ec) {
+                          self->close();
+                          return;
+                        }
+                        self->read_body();
+                      });
+  }
+
+  void read_body() {
     http::async_read(
         stream_, buffer_, *parser_,
         [self = shared_from_this()](beast::error_code ec, std::size_t) { self->on_read(ec); });
@@ -203,7 +256,7 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
   void on_read(beast::error_code ec) {
     if (shared_->closed) return;
     if (ec == http::error::body_limit) {
-      reply(plain_error(413, "request body over 64 KiB"), 11, false);
+      reply(plain_error(413, "request body too large"), 11, false);
       return;
     }
     if (ec == http::error::header_limit) {
@@ -215,18 +268,19 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
       return;
     }
     http::request<http::string_body> req = parser_->release();
-    const HttpRequest request = to_http_request(req, peer);
+    HttpRequest request = to_http_request(std::move(req), peer);
+    const std::string what = request.method + " " + quote(request.path);
     try {
-      dispatch(req, request);
+      dispatch(req, std::move(request));
     } catch (const std::exception& e) {
       // One request's fault closes its connection; the daemon and other clients carry on.
-      shared_->log("web: " + peer + " " + request.method + " " + quote(request.path) +
+      shared_->log("web: " + peer + " " + what +
                    ": internal error, connection closed: " + valid_utf8(e.what()));
       close();
     }
   }
 
-  void dispatch(const http::request<http::string_body>& req, const HttpRequest& request) {
+  void dispatch(const http::request<http::string_body>& req, HttpRequest request) {
     if (!has_session && shared_->callbacks.has_session(request)) has_session = true;
     if (request.websocket && request.path == "/ws") {
       upgrade(req, request);
@@ -235,7 +289,7 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
     const unsigned version = req.version();
     const bool keep_alive = req.keep_alive();
     shared_->callbacks.handler(
-        request, [self = shared_from_this(), version, keep_alive](const HttpReply& r) {
+        std::move(request), [self = shared_from_this(), version, keep_alive](const HttpReply& r) {
           self->reply(r, version, keep_alive);
         });
   }

@@ -2,8 +2,9 @@
 // The console's HTTP and WebSocket transport (Boost.Beast on the daemon's io_context). It knows
 // nothing of the API: every request goes to a handler as a HttpRequest (its text made valid UTF-8
 // first), and WebSocket clients get the same state text pushed at a fixed period. Bounded: 64 KiB
-// bodies (413), 8 KiB headers (431), 30 s idle HTTP connections, one pending frame per slow
-// WebSocket client (older frames are dropped, never queued).
+// bodies unless the handler's body_limit lets a route take more (413), 8 KiB headers (431), 30 s
+// idle HTTP connections, one pending frame per slow WebSocket client (older frames are dropped,
+// never queued).
 //
 // The operator can always reach STOP (issue 12): at most kMaxPerAddress connections from one
 // address; at most kMaxConnections in all, and when they are taken a new connection evicts the
@@ -49,12 +50,16 @@ struct HttpReply {
 class HttpServer {
  public:
   using Respond = std::function<void(HttpReply)>;
-  /// Answers through `respond` exactly once, at once or later (on the same thread).
-  using Handler = std::function<void(const HttpRequest&, const Respond&)>;
+  /// Answers through `respond` exactly once, at once or later (on the same thread). The request
+  /// is the handler's (moved in: an upload's body is never copied on the loop).
+  using Handler = std::function<void(HttpRequest, const Respond&)>;
   /// For an upgrade request: nullopt to accept the WebSocket, or the refusal to send.
   using UpgradeCheck = std::function<std::optional<HttpReply>(const HttpRequest&)>;
   /// Whether a request shows a valid session (cookie or bearer token).
   using SessionCheck = std::function<bool(const HttpRequest&)>;
+  /// How large a body the request whose head this is may send (kMaxBodyBytes unless a route
+  /// takes more); the body is not read yet, HttpRequest::body is empty.
+  using BodyLimit = std::function<std::size_t(const HttpRequest&)>;
   using StateText = std::function<std::string()>;
   using Log = std::function<void(const std::string&)>;
 
@@ -63,9 +68,12 @@ class HttpServer {
     UpgradeCheck upgrade_check;
     SessionCheck has_session;
     StateText state;
+    BodyLimit body_limit;  ///< null: kMaxBodyBytes for every request
     Log log;
   };
 
+  /// A request body's size unless Callbacks::body_limit allows more (413 beyond).
+  static constexpr std::size_t kMaxBodyBytes = std::size_t{64} * 1024;
   static constexpr std::size_t kMaxConnections = 128;
   static constexpr std::size_t kMaxPerAddress = 32;
   static constexpr std::size_t kMaxAnonymousWebSockets = 16;

@@ -1,0 +1,140 @@
+#include "console/software_updates.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "azt/linux/atomic_file.hpp"
+#include "azt/software/deb_archive.hpp"
+#include "azt/software/update_status.hpp"
+#include "console/web_auth.hpp"
+
+namespace azt::app {
+namespace {
+
+using json = nlohmann::json;
+
+/// The helper's report, read whole but never more than its parser takes (and one byte more, so
+/// that an oversized file is an error, not a cut one).
+std::optional<std::string> read_small_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::string text(std::size_t{16} * 1024 + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
+}
+
+json status_json(const software::UpdateStatus& s) {
+  return {{"phase", std::string(software::to_string(s.phase))},
+          {"percent", s.percent},
+          {"message", s.message},
+          {"from", s.from_version},
+          {"to", s.to_version},
+          {"sha256", s.sha256_hex},
+          {"at_unix_s", s.at_unix_s}};
+}
+
+}  // namespace
+
+std::string SoftwareUpdates::request_path() const { return config_.inbox_dir + "/request.deb"; }
+
+SoftwareUpdates::Look SoftwareUpdates::look() const {
+  Look found;
+  std::error_code ec;
+  found.pending = enabled() && std::filesystem::exists(request_path(), ec);
+  if (config_.status_file.empty()) return found;
+  const auto text = read_small_file(config_.status_file);
+  if (!text) return found;  // the helper has not run yet
+  const auto parsed = software::parse_update_status(*text);
+  if (!parsed) {
+    found.helper_error = parsed.error().message;
+    return found;
+  }
+  found.helper = status_json(*parsed);
+  return found;
+}
+
+std::optional<ApiError> SoftwareUpdates::busy(const Look& now) const {
+  if (now.pending) {
+    return ApiError(409, "package",
+                    "an uploaded package is still waiting for the update helper "
+                    "(azeltrack-update.path); try again when it has been taken");
+  }
+  if (now.helper.is_null()) return std::nullopt;
+  const auto phase = now.helper.value("phase", std::string());
+  const bool working = phase == "checking" || phase == "installing";
+  const double age_s = unix_s_() - now.helper.value("at_unix_s", 0.0);
+  if (working && age_s < kStaleWorkS) {
+    return ApiError(409, "package", "the update helper is " + phase + " a package now");
+  }
+  return std::nullopt;
+}
+
+json SoftwareUpdates::to_json(const Look& found) const {
+  json out{
+      {"version", config_.version},
+      {"architecture", config_.architecture.empty() ? json(nullptr) : json(config_.architecture)},
+      {"updates", enabled()},
+      {"pending", found.pending},
+      {"helper", found.helper}};
+  if (!enabled()) {
+    out["updates_reason"] =
+        "this azeltrack was not started by the Debian package's unit (no --update-inbox): a "
+        "source build is updated with git pull and scripts/run";
+  }
+  if (!found.helper_error.empty()) out["helper_error"] = found.helper_error;
+  out["upload"] = last_upload_ ? json{{"sha256", last_upload_->sha256_hex},
+                                      {"bytes", last_upload_->bytes},
+                                      {"at_unix_s", last_upload_->at_unix_s}}
+                               : json(nullptr);
+  return out;
+}
+
+void SoftwareUpdates::status(ActDone done) {
+  auto found = std::make_shared<Look>();
+  offload_([this, found] { *found = look(); },
+           [this, found, done = std::move(done)] {
+             done(ActResult{to_json(*found), {}});
+           });
+}
+
+void SoftwareUpdates::receive(std::string package, ActDone done) {
+  if (!enabled()) {
+    throw ApiError(409, "",
+                   "software updates are not set up here: " +
+                       to_json(Look{}).value("updates_reason", std::string()));
+  }
+  if (package.size() > kMaxPackageBytes) throw ApiError(413, "package", "over 64 MiB");
+  if (const auto archive = software::check_deb_archive(package); !archive) {
+    throw ApiError(400, "package", archive.error().message);
+  }
+  struct Outcome {
+    std::optional<ApiError> error;
+    std::string sha256_hex;
+  };
+  auto outcome = std::make_shared<Outcome>();
+  auto bytes = std::make_shared<std::string>(std::move(package));
+  // Hashing and writing megabytes, with an fsync, never on the loop.
+  offload_(
+      [this, outcome, bytes] {
+        if ((outcome->error = busy(look()))) return;
+        std::error_code ec;
+        std::filesystem::create_directories(config_.inbox_dir, ec);
+        outcome->sha256_hex = sha256_hex(*bytes);
+        if (auto w = linux_os::write_file_atomically(request_path(), *bytes, 0600); !w) {
+          outcome->error =
+              ApiError(500, "package", "cannot store the package: " + w.error().message);
+        }
+      },
+      [this, outcome, bytes, done = std::move(done)] {
+        if (outcome->error) {
+          done(ActResult{{}, outcome->error});
+          return;
+        }
+        last_upload_ = Upload{outcome->sha256_hex, bytes->size(), unix_s_()};
+        done(ActResult{{{"sha256", outcome->sha256_hex}, {"bytes", bytes->size()}}, {}});
+      });
+}
+
+}  // namespace azt::app

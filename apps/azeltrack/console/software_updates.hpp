@@ -1,0 +1,73 @@
+#pragma once
+// The console's Software page (issue 17 §2, the AnTrack-Pro manual's "Software Updating"): this
+// program's version, a package uploaded by the logged-in operator handed to the root update
+// helper, and what the helper reports. The daemon never runs as root and never installs
+// anything: it checks the upload is a Debian archive at all, writes it to the inbox (its own
+// folder), and reads the helper's status file. The helper (packaging/azeltrack-update, started
+// by a systemd path unit when the inbox's request.deb appears) copies the package, checks its
+// name, architecture and version with dpkg, installs it with apt and reports each step.
+// docs/packaging.md "Updates from the console".
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "common/off_loop.hpp"
+#include "console/console_model.hpp"
+
+namespace azt::app {
+
+class SoftwareUpdates {
+ public:
+  struct Config {
+    std::string version;       ///< this program's (program_version())
+    std::string architecture;  ///< the package's; "" for a source build
+    /// Where uploads go for the helper (`request.deb` in it); "" when updates are not set up
+    /// here (a source build: the unit of the package passes --update-inbox).
+    std::string inbox_dir;
+    std::string status_file;  ///< what the helper writes about its work
+  };
+  /// The largest package accepted; the program's own is under 2 MB.
+  static constexpr std::size_t kMaxPackageBytes = std::size_t{64} * 1024 * 1024;
+  /// A helper report older than this in a working phase is taken as abandoned (a power cut).
+  static constexpr double kStaleWorkS = 30.0 * 60.0;
+
+  SoftwareUpdates(Config config, Offload offload, std::function<double()> unix_s)
+      : config_(std::move(config)), offload_(std::move(offload)), unix_s_(std::move(unix_s)) {}
+
+  [[nodiscard]] bool enabled() const { return !config_.inbox_dir.empty(); }
+  /// GET /api/software: the version, the last upload and the helper's report (read off the loop).
+  void status(ActDone done);
+  /// POST /api/software/update: `package` is the .deb. Refused at once when updates are not set
+  /// up (409) or it is no Debian archive (400); then, off the loop, refused while another
+  /// update waits or runs (409), else written to the inbox (its SHA-256 in the answer).
+  void receive(std::string package, ActDone done);
+
+ private:
+  struct Upload {
+    std::string sha256_hex;
+    std::size_t bytes = 0;
+    double at_unix_s = 0.0;
+  };
+  /// What the worker found; turned into JSON back on the loop.
+  struct Look {
+    nlohmann::json helper;  ///< null: no report yet
+    std::string helper_error;
+    bool pending = false;  ///< request.deb waits for the helper
+  };
+  [[nodiscard]] Look look() const;  // worker thread
+  [[nodiscard]] std::string request_path() const;
+  /// The refusal for a new upload given what the worker found, or nullopt (worker thread).
+  [[nodiscard]] std::optional<ApiError> busy(const Look& now) const;
+  nlohmann::json to_json(const Look& found) const;
+
+  Config config_;
+  Offload offload_;
+  std::function<double()> unix_s_;
+  std::optional<Upload> last_upload_;  ///< loop thread only
+};
+
+}  // namespace azt::app

@@ -1,0 +1,200 @@
+// The console's Software page behind the API (issue 17 §2): the version; an upload from a
+// logged-in console checked as a Debian archive and left in the inbox, byte for byte, for the
+// root update helper; the helper's report read back; anonymous, oversized, malformed and
+// overlapping uploads refused with nothing written; a daemon without the package's unit offers
+// no updates. Real files in a temporary folder; the work off the loop runs inline.
+#include "console/software_updates.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+
+#include "console/web_api.hpp"
+
+namespace azt::app {
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+class NoModel final : public ConsoleModel {
+ public:
+  json state() override { return json::object(); }
+  json config() override { return json::object(); }
+  json targets() override { return json::object(); }
+  json sky(double /*hours*/) override { return json::object(); }
+  void act(const std::string& /*action*/, const json& /*body*/, const std::string& /*source*/,
+           ActDone done) override {
+    done(ActResult{});
+  }
+};
+
+struct Rig {
+  fs::path dir = fs::temp_directory_path() / ("azt-software-" + std::to_string(::getpid()));
+  double unix_s = 1764241000.0;
+  std::string token = "0123456789abcdef0123456789abcdef";
+  NoModel model;
+  WebAuth auth{WebAuth::Config{"", sha256_hex(token)}};
+  SoftwareUpdates software{{"0.1.0", "amd64", (dir / "inbox").string(), (dir / "status").string()},
+                           run_inline,
+                           [this] { return unix_s; }};
+  WebApi api{model, auth, WebApiConfig{}, [] { return 0.0; }};
+
+  Rig() {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    api.serve_software(software);
+  }
+  ~Rig() { fs::remove_all(dir); }
+  Rig(const Rig&) = delete;
+  Rig& operator=(const Rig&) = delete;
+
+  linux_os::HttpRequest request(const std::string& method, const std::string& path,
+                                const std::string& body = "", bool logged_in = true) const {
+    linux_os::HttpRequest r;
+    r.method = method;
+    r.path = path;
+    r.body = body;
+    r.host = "127.0.0.1:8080";
+    r.client = "192.0.2.7";
+    if (logged_in) r.authorization = "Bearer " + token;
+    return r;
+  }
+  linux_os::HttpReply handle(const linux_os::HttpRequest& r) {
+    linux_os::HttpReply reply;
+    reply.status = 0;
+    api.handle(r, [&reply](linux_os::HttpReply answer) { reply = std::move(answer); });
+    return reply;
+  }
+  json software_page() {
+    return json::parse(handle(request("GET", "/api/software", "", false)).body);
+  }
+  fs::path request_deb() const { return dir / "inbox" / "request.deb"; }
+};
+
+std::string tiny_deb() {
+  return read_bytes(fs::path(AZT_TEST_DATA_DIR) / "software" / "azeltrack-test_0.1_all.deb");
+}
+
+TEST(SoftwareUpdates, ThePageShowsTheVersionToEveryone) {
+  Rig rig;
+  const json page = rig.software_page();
+  EXPECT_EQ(page["version"], "0.1.0");
+  EXPECT_EQ(page["architecture"], "amd64");
+  EXPECT_EQ(page["updates"], true);
+  EXPECT_EQ(page["pending"], false);
+  EXPECT_TRUE(page["helper"].is_null());
+  EXPECT_TRUE(page["upload"].is_null());
+}
+
+TEST(SoftwareUpdates, AnUploadIsLeftForTheHelperByteForByte) {
+  Rig rig;
+  const std::string deb = tiny_deb();
+  const auto reply = rig.handle(rig.request("POST", "/api/software/update", deb));
+  ASSERT_EQ(reply.status, 200U) << reply.body;
+  const json answer = json::parse(reply.body);
+  EXPECT_EQ(answer["sha256"], sha256_hex(deb));
+  EXPECT_EQ(answer["bytes"], deb.size());
+  EXPECT_EQ(read_bytes(rig.request_deb()), deb);
+  EXPECT_EQ(fs::status(rig.request_deb()).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write);
+  const json page = rig.software_page();
+  EXPECT_EQ(page["pending"], true);
+  EXPECT_EQ(page["upload"]["sha256"], sha256_hex(deb));
+
+  // While it waits for the helper, a second upload is refused and the first stays as it was.
+  const auto again = rig.handle(rig.request("POST", "/api/software/update", deb + ""));
+  EXPECT_EQ(again.status, 409U) << again.body;
+  EXPECT_NE(again.body.find("waiting for the update helper"), std::string::npos);
+}
+
+TEST(SoftwareUpdates, TheHelpersReportIsShownAndAWorkingHelperHoldsNewUploads) {
+  Rig rig;
+  const std::string sha(64, 'c');
+  write_text(rig.dir / "status",
+             "phase=installing\npercent=40\nmessage=Unpacking\nfrom=0.1.0\n"
+             "to=0.1.1\nsha256=" +
+                 sha + "\nat=1764240990\n");
+  const json helper = rig.software_page()["helper"];
+  EXPECT_EQ(helper["phase"], "installing");
+  EXPECT_EQ(helper["percent"], 40);
+  EXPECT_EQ(helper["to"], "0.1.1");
+  EXPECT_EQ(helper["sha256"], sha);
+  EXPECT_EQ(rig.handle(rig.request("POST", "/api/software/update", tiny_deb())).status, 409U);
+  EXPECT_FALSE(fs::exists(rig.request_deb()));
+
+  // The same report half an hour later is a helper that died (a power cut): uploads go again.
+  rig.unix_s += SoftwareUpdates::kStaleWorkS + 11.0;
+  EXPECT_EQ(rig.handle(rig.request("POST", "/api/software/update", tiny_deb())).status, 200U);
+
+  write_text(rig.dir / "status", "phase=installed\nnot a line\n");
+  const json broken = rig.software_page();
+  EXPECT_TRUE(broken["helper"].is_null());
+  EXPECT_NE(broken["helper_error"].get<std::string>().find("line 2"), std::string::npos);
+}
+
+TEST(SoftwareUpdates, RefusedUploadsWriteNothing) {
+  Rig rig;
+  const auto anonymous = rig.handle(rig.request("POST", "/api/software/update", tiny_deb(), false));
+  EXPECT_EQ(anonymous.status, 401U);
+  const auto garbage = rig.handle(rig.request("POST", "/api/software/update", "MZ\x90 an exe"));
+  EXPECT_EQ(garbage.status, 400U);
+  EXPECT_NE(garbage.body.find("not a Debian package"), std::string::npos) << garbage.body;
+  const std::string cut = tiny_deb().substr(0, 500);
+  EXPECT_EQ(rig.handle(rig.request("POST", "/api/software/update", cut)).status, 400U);
+  EXPECT_FALSE(fs::exists(rig.request_deb()));
+  EXPECT_TRUE(rig.software_page()["upload"].is_null());
+}
+
+TEST(SoftwareUpdates, OnlyALoggedInUploadMayBeLarge) {
+  Rig rig;
+  const auto upload = rig.request("POST", "/api/software/update");
+  EXPECT_EQ(rig.api.body_limit(upload), SoftwareUpdates::kMaxPackageBytes);
+  EXPECT_EQ(rig.api.body_limit(rig.request("POST", "/api/software/update", "", false)),
+            linux_os::HttpServer::kMaxBodyBytes);
+  EXPECT_EQ(rig.api.body_limit(rig.request("POST", "/api/target")),
+            linux_os::HttpServer::kMaxBodyBytes);
+  EXPECT_EQ(rig.api.body_limit(rig.request("GET", "/api/software/update")),
+            linux_os::HttpServer::kMaxBodyBytes);
+}
+
+TEST(SoftwareUpdates, WithoutThePackagesUnitThereAreNoUpdates) {
+  NoModel model;
+  WebAuth auth{WebAuth::Config{"", sha256_hex("t")}};
+  SoftwareUpdates software{{"0.1.0", "", "", ""}, run_inline, [] { return 0.0; }};
+  WebApi api{model, auth, WebApiConfig{}, [] { return 0.0; }};
+  api.serve_software(software);
+  linux_os::HttpRequest r;
+  r.method = "GET";
+  r.path = "/api/software";
+  r.host = "127.0.0.1";
+  linux_os::HttpReply reply;
+  api.handle(r, [&reply](linux_os::HttpReply a) { reply = std::move(a); });
+  const json page = json::parse(reply.body);
+  EXPECT_EQ(page["updates"], false);
+  EXPECT_TRUE(page["architecture"].is_null());
+  EXPECT_NE(page["updates_reason"].get<std::string>().find("source build"), std::string::npos);
+  r.method = "POST";
+  r.path = "/api/software/update";
+  r.authorization = "Bearer t";
+  api.handle(r, [&reply](linux_os::HttpReply a) { reply = std::move(a); });
+  EXPECT_EQ(reply.status, 409U) << reply.body;
+  EXPECT_EQ(api.body_limit(r), linux_os::HttpServer::kMaxBodyBytes);
+}
+
+}  // namespace
+}  // namespace azt::app
