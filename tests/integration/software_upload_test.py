@@ -3,8 +3,9 @@
 package's unit starts it (--update-inbox, --update-status): what crosses the HTTP transport.
 - curl's upload (`Expect: 100-continue`, then the body) of a real package built by dpkg-deb is
   left in the inbox byte for byte, its SHA-256 in the answer and in GET /api/software;
-- a large body from a client without a login is refused (413) from its head, before it is sent,
-  and so is a logged-in one announcing more than 64 MiB; nothing reaches the inbox;
+- an upload from a client without a login is refused (401) from its head, and one that sends
+  its body anyway still reads that answer; a logged-in one announcing more than 64 MiB is
+  refused (413) from its head; nothing reaches the inbox;
 - while a 48 MiB package is received, hashed and written (fsynced) the event loop keeps
   answering: the slowest GET /api/state during the upload is measured and must stay under 250 ms;
 - the helper's report (written here as the helper writes it) is shown, and a bad report is an
@@ -107,8 +108,11 @@ try:
 
     head = (f"POST /api/software/update HTTP/1.1\r\nHost: 127.0.0.1\r\n"
             f"Content-Type: application/vnd.debian.binary-package\r\n")
-    check(" 413 " in raw_head(head + "Content-Length: 1000000\r\n\r\n"),
-          "a megabyte without a login: 413 from the head")
+    check(" 401 " in raw_head(head + "Content-Length: 1000000\r\n\r\n"),
+          "a megabyte without a login: 401 from the head, the body never taken in")
+    status, reply = http_upload(BASE, "/api/software/update", small_bytes)
+    check(status == 401 and "login" in reply["error"],
+          f"a client that sends the body anyway reads the 401: {status} {reply}")
     check(" 413 " in raw_head(head + f"Authorization: Bearer {TOKEN}\r\n"
                                      "Content-Length: 70000000\r\n\r\n"),
           "over 64 MiB with a login: 413 from the head")

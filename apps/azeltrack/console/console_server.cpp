@@ -65,7 +65,7 @@ ConsoleServer::ConsoleServer(boost::asio::io_context& io, ConsoleParts parts,
     return api_->check_upgrade(r);
   };
   callbacks.has_session = [this](const linux_os::HttpRequest& r) { return api_->has_session(r); };
-  callbacks.body_limit = [this](const linux_os::HttpRequest& r) { return api_->body_limit(r); };
+  callbacks.body_limit = [this](const linux_os::HttpRequest& r) { return api_->body_allowance(r); };
   callbacks.state = [this] {
     return console_->state().dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   };

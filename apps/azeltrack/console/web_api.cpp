@@ -183,11 +183,18 @@ std::optional<linux_os::HttpReply> WebApi::authorize(const linux_os::HttpRequest
   return std::nullopt;
 }
 
-std::size_t WebApi::body_limit(const linux_os::HttpRequest& head) const {
+linux_os::HttpServer::BodyAllowance WebApi::body_allowance(
+    const linux_os::HttpRequest& head) const {
+  linux_os::HttpServer::BodyAllowance allowance{linux_os::HttpServer::kMaxBodyBytes, {}};
   const bool upload = software_ != nullptr && software_->enabled() && head.method == "POST" &&
                       head.path == "/api/software/update";
-  return upload && has_session(head) ? SoftwareUpdates::kMaxPackageBytes
-                                     : linux_os::HttpServer::kMaxBodyBytes;
+  if (!upload) return allowance;
+  if (!has_session(head)) {
+    allowance.refusal = error_reply(401, "login required to upload a package");
+  } else {
+    allowance.max_bytes = SoftwareUpdates::kMaxPackageBytes;
+  }
+  return allowance;
 }
 
 void WebApi::software_status(const Respond& respond) {

@@ -42,9 +42,11 @@ class WebApi {
   void handle(linux_os::HttpRequest request, const Respond& respond);
   /// GET /api/software and POST /api/software/update (issue 17 §2); without, both are 404.
   void serve_software(SoftwareUpdates& software) { software_ = &software; }
-  /// The largest body the request whose head this is may send: a package upload from a
-  /// logged-in console may be large, everything else is small (HttpServer::kMaxBodyBytes).
-  [[nodiscard]] std::size_t body_limit(const linux_os::HttpRequest& head) const;
+  /// What body the request whose head this is may send: a package upload from a logged-in
+  /// console may be large; one without a login is answered 401 from its head; everything else
+  /// is small (HttpServer::kMaxBodyBytes).
+  [[nodiscard]] linux_os::HttpServer::BodyAllowance body_allowance(
+      const linux_os::HttpRequest& head) const;
   /// The WebSocket upgrade: nullopt accepts it.
   std::optional<linux_os::HttpReply> check_upgrade(const linux_os::HttpRequest& request) const;
   /// Whether the request carries a valid session cookie or bearer token (no CSRF check): a

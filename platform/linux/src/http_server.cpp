@@ -28,6 +28,9 @@ namespace {
 constexpr std::size_t kMaxHeaderBytes = std::size_t{8} * 1024;
 constexpr std::size_t kMaxWsMessageBytes = std::size_t{4} * 1024;
 constexpr auto kIdleTimeout = std::chrono::seconds(30);
+// A refused upload's body is read and dropped for at most this long and this much.
+constexpr auto kDrainTimeout = std::chrono::seconds(60);
+constexpr std::size_t kMaxDrainBytes = std::size_t{128} * 1024 * 1024;
 
 class WsSession;
 class HttpSession;
@@ -211,10 +214,15 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
       return;
     }
     const auto& head = parser_->get();
-    std::size_t limit = HttpServer::kMaxBodyBytes;
+    HttpServer::BodyAllowance allowance;
     if (shared_->callbacks.body_limit) {
-      limit = shared_->callbacks.body_limit(to_http_request(head, peer));
+      allowance = shared_->callbacks.body_limit(to_http_request(head, peer));
     }
+    if (allowance.refusal) {
+      refuse_and_drain(*allowance.refusal, head.version());
+      return;
+    }
+    const std::size_t limit = allowance.max_bytes;
     const auto length = parser_->content_length();
     if (length && *length > limit) {
       reply(plain_error(413, "request body too large"), head.version(), false);
@@ -232,6 +240,42 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
       return;
     }
     read_body();
+  }
+
+  // A client that sends its body whatever the answer (most do, browsers among them) would find
+  // the connection reset under it if it were closed with the body unread, and never read the
+  // answer: the answer goes first, then what arrives is dropped until the client stops, up to
+  // kMaxDrainBytes or kDrainTimeout, and the connection closes.
+  void refuse_and_drain(const HttpReply& refusal, unsigned version) {
+    auto res =
+        std::make_shared<http::response<http::string_body>>(to_response(refusal, version, false));
+    http::async_write(stream_, *res,
+                      [self = shared_from_this(), res](beast::error_code ec, std::size_t) {
+                        if (ec) {
+                          self->close();
+                          return;
+                        }
+                        beast::error_code ignored;
+                        self->stream_.socket().shutdown(tcp::socket::shutdown_send, ignored);
+                        self->stream_.expires_after(kDrainTimeout);
+                        self->drain(self->buffer_.size());
+                      });
+  }
+
+  void drain(std::size_t dropped) {
+    buffer_.clear();
+    if (dropped > kMaxDrainBytes) {
+      close();
+      return;
+    }
+    stream_.async_read_some(buffer_.prepare(64 * 1024), [self = shared_from_this(), dropped](
+                                                            beast::error_code ec, std::size_t n) {
+      if (ec) {
+        self->close();
+        return;
+      }
+      self->drain(dropped + n);
+    });
   }
 
   /// curl and other clients wait for "100 Continue" before sending a large body (RFC 9110 §10.1.1).

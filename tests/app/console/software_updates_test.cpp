@@ -162,14 +162,21 @@ TEST(SoftwareUpdates, RefusedUploadsWriteNothing) {
 
 TEST(SoftwareUpdates, OnlyALoggedInUploadMayBeLarge) {
   Rig rig;
-  const auto upload = rig.request("POST", "/api/software/update");
-  EXPECT_EQ(rig.api.body_limit(upload), SoftwareUpdates::kMaxPackageBytes);
-  EXPECT_EQ(rig.api.body_limit(rig.request("POST", "/api/software/update", "", false)),
-            linux_os::HttpServer::kMaxBodyBytes);
-  EXPECT_EQ(rig.api.body_limit(rig.request("POST", "/api/target")),
-            linux_os::HttpServer::kMaxBodyBytes);
-  EXPECT_EQ(rig.api.body_limit(rig.request("GET", "/api/software/update")),
-            linux_os::HttpServer::kMaxBodyBytes);
+  const auto upload = rig.api.body_allowance(rig.request("POST", "/api/software/update"));
+  EXPECT_EQ(upload.max_bytes, SoftwareUpdates::kMaxPackageBytes);
+  EXPECT_FALSE(upload.refusal);
+  // Without a login, the answer comes from the head: the body is never taken in.
+  const auto anonymous =
+      rig.api.body_allowance(rig.request("POST", "/api/software/update", "", false));
+  ASSERT_TRUE(anonymous.refusal);
+  EXPECT_EQ(anonymous.refusal->status, 401U);
+  for (const auto& other :
+       {rig.request("POST", "/api/target"), rig.request("GET", "/api/software/update"),
+        rig.request("POST", "/api/target", "", false)}) {
+    const auto a = rig.api.body_allowance(other);
+    EXPECT_EQ(a.max_bytes, linux_os::HttpServer::kMaxBodyBytes) << other.method << other.path;
+    EXPECT_FALSE(a.refusal);
+  }
 }
 
 TEST(SoftwareUpdates, WithoutThePackagesUnitThereAreNoUpdates) {
@@ -193,7 +200,7 @@ TEST(SoftwareUpdates, WithoutThePackagesUnitThereAreNoUpdates) {
   r.authorization = "Bearer t";
   api.handle(r, [&reply](linux_os::HttpReply a) { reply = std::move(a); });
   EXPECT_EQ(reply.status, 409U) << reply.body;
-  EXPECT_EQ(api.body_limit(r), linux_os::HttpServer::kMaxBodyBytes);
+  EXPECT_EQ(api.body_allowance(r).max_bytes, linux_os::HttpServer::kMaxBodyBytes);
 }
 
 }  // namespace

@@ -57,9 +57,15 @@ class HttpServer {
   using UpgradeCheck = std::function<std::optional<HttpReply>(const HttpRequest&)>;
   /// Whether a request shows a valid session (cookie or bearer token).
   using SessionCheck = std::function<bool(const HttpRequest&)>;
-  /// How large a body the request whose head this is may send (kMaxBodyBytes unless a route
-  /// takes more); the body is not read yet, HttpRequest::body is empty.
-  using BodyLimit = std::function<std::size_t(const HttpRequest&)>;
+  /// What may follow a request's head: a body of up to max_bytes, or, with a refusal, nothing:
+  /// the refusal is sent at once (what the client still sends is read and dropped, so that it
+  /// reads the answer rather than a reset connection) and the connection closed.
+  struct BodyAllowance {
+    std::size_t max_bytes = kMaxBodyBytes;
+    std::optional<HttpReply> refusal;
+  };
+  /// Decides the allowance from the head alone (HttpRequest::body is empty: not read yet).
+  using BodyLimit = std::function<BodyAllowance(const HttpRequest&)>;
   using StateText = std::function<std::string()>;
   using Log = std::function<void(const std::string&)>;
 
