@@ -56,7 +56,9 @@ def on_terminal(config, answers):
         os.write(fd, (answer + "\n").encode())
         if i + 1 < len(answers):
             screen += read_until(fd, r"The same again: ")
-    screen += read_until(fd, r"(?!x)x", 5.0)  # the rest, until it exits (a pattern never found)
+    # The rest, until it exits and the pty closes (a pattern never found): read all the while,
+    # since a program restoring the terminal waits for its output to be read.
+    screen += read_until(fd, r"(?!x)x", 30.0)
     _, status = os.waitpid(pid, 0)
     os.close(fd)
     return os.waitstatus_to_exitcode(status), screen

@@ -42,9 +42,10 @@ extern "C" void restore_terminal_and_exit(int sig) {
   (void)std::raise(sig);
 }
 
-/// One line typed on the terminal without echo (a password must not show on the screen).
+/// One line typed on the terminal without echo (a password must not show on the screen). The
+/// echo goes off before the prompt shows, and nothing typed after the prompt is flushed: what
+/// is typed (or pasted) as soon as the prompt appears is read, never silently dropped.
 std::string ask_hidden(const char* prompt) {
-  std::cerr << prompt << std::flush;
   std::string line;
   const bool quiet = tcgetattr(STDIN_FILENO, &g_saved_terminal) == 0;
   if (quiet) {
@@ -54,9 +55,10 @@ std::string ask_hidden(const char* prompt) {
     (void)std::signal(SIGTERM, restore_terminal_and_exit);
     (void)tcsetattr(STDIN_FILENO, TCSAFLUSH, &hidden);
   }
+  std::cerr << prompt << std::flush;
   std::getline(std::cin, line);
   if (quiet) {
-    (void)tcsetattr(STDIN_FILENO, TCSAFLUSH, &g_saved_terminal);
+    (void)tcsetattr(STDIN_FILENO, TCSADRAIN, &g_saved_terminal);
     (void)std::signal(SIGINT, SIG_DFL);
     (void)std::signal(SIGTERM, SIG_DFL);
   }
