@@ -4,7 +4,6 @@
 #include <boost/beast/websocket/rfc6455.hpp>
 
 #include <string_view>
-#include <utility>
 
 #include "azt/util/valid_utf8.hpp"
 
@@ -43,14 +42,6 @@ HttpRequest to_http_request(const http::request<http::string_body>& req, const s
   if (const auto it = req.find("X-CSRF-Token"); it != req.end()) r.csrf = clean(it->value());
   r.client = peer;
   r.websocket = boost::beast::websocket::is_upgrade(req);
-  return r;
-}
-
-HttpRequest to_http_request(http::request<http::string_body>&& req, const std::string& peer) {
-  std::string body = std::move(req.body());
-  req.body().clear();
-  HttpRequest r = to_http_request(std::as_const(req), peer);
-  r.body = std::move(body);
   return r;
 }
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "azt/linux/http_request.hpp"
 #include "azt/util/quote.hpp"
@@ -268,14 +269,15 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
       close();
       return;
     }
-    stream_.async_read_some(buffer_.prepare(64 * 1024), [self = shared_from_this(), dropped](
-                                                            beast::error_code ec, std::size_t n) {
-      if (ec) {
-        self->close();
-        return;
-      }
-      self->drain(dropped + n);
-    });
+    stream_.async_read_some(
+        buffer_.prepare(std::size_t{64} * 1024),
+        [self = shared_from_this(), dropped](beast::error_code ec, std::size_t n) {
+          if (ec) {
+            self->close();
+            return;
+          }
+          self->drain(dropped + n);
+        });
   }
 
   /// curl and other clients wait for "100 Continue" before sending a large body (RFC 9110 §10.1.1).
@@ -312,7 +314,10 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
       return;
     }
     http::request<http::string_body> req = parser_->release();
-    HttpRequest request = to_http_request(std::move(req), peer);
+    // The body moves, never copied: an upload is megabytes, a copy on the loop would stall it.
+    std::string body = std::exchange(req.body(), std::string());
+    HttpRequest request = to_http_request(req, peer);
+    request.body = std::move(body);
     const std::string what = request.method + " " + quote(request.path);
     try {
       dispatch(req, std::move(request));

@@ -16,9 +16,5 @@ namespace azt::linux_os {
 /// `peer` is the client's address without the port (HttpRequest::client).
 HttpRequest to_http_request(const boost::beast::http::request<boost::beast::http::string_body>& req,
                             const std::string& peer);
-/// The same, the body moved rather than copied (a package upload is megabytes: a copy on the
-/// event loop would stall it); `req` keeps its head.
-HttpRequest to_http_request(boost::beast::http::request<boost::beast::http::string_body>&& req,
-                            const std::string& peer);
 
 }  // namespace azt::linux_os
