@@ -3,11 +3,15 @@
 // the input as a crash), a reader for the control bytes at the front of an input, and, with
 // AZT_FUZZ_STANDALONE, a replay main() so any compiler can run a corpus as a regression test.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <string_view>
+
+#include "azt/util/result.hpp"
 
 namespace azt::fuzz {
 
@@ -47,6 +51,23 @@ inline std::size_t split_point(std::uint8_t byte, std::size_t size) {
 #define AZT_FUZZ_REQUIRE(condition)   \
   ((condition) ? static_cast<void>(0) \
                : ::azt::fuzz::invariant_failed(#condition, __FILE__, __LINE__))
+
+namespace azt::fuzz {
+
+/// A parser's refusal reaches logs and the console: its message is short, not empty, and holds
+/// no control bytes.
+inline constexpr std::size_t kMaxMessageChars = 200;
+
+template <typename T>
+void check_error_message(const Result<T>& result) {
+  if (result) return;
+  const std::string& message = result.error().message;
+  AZT_FUZZ_REQUIRE(!message.empty() && message.size() <= kMaxMessageChars);
+  AZT_FUZZ_REQUIRE(std::none_of(message.begin(), message.end(),
+                                [](char c) { return static_cast<unsigned char>(c) < 0x20; }));
+}
+
+}  // namespace azt::fuzz
 
 #ifdef AZT_FUZZ_STANDALONE
 #include <fstream>

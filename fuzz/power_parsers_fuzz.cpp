@@ -26,17 +26,6 @@ namespace {
 
 namespace proto = azt::proto;
 
-constexpr std::size_t kMaxMessageChars = 200;
-
-template <typename T>
-void check_message(const azt::Result<T>& result) {
-  if (result) return;
-  const std::string& message = result.error().message;
-  AZT_FUZZ_REQUIRE(!message.empty() && message.size() <= kMaxMessageChars);
-  AZT_FUZZ_REQUIRE(std::none_of(message.begin(), message.end(),
-                                [](char c) { return static_cast<unsigned char>(c) < 0x20; }));
-}
-
 bool has_terminator(std::string_view text) {
   return text.find_first_of("\r\n") != std::string_view::npos;
 }
@@ -58,7 +47,7 @@ void check_sweep(const proto::RtlPowerSweep& sweep) {
 
 void check_rtl_power(std::string_view line) {
   const auto parsed = proto::parse_rtl_power_line(line);
-  check_message(parsed);
+  azt::fuzz::check_error_message(parsed);
   if (parsed) check_sweep(*parsed);
   if (has_terminator(line)) return;
   const auto terminated = proto::parse_rtl_power_line(std::string(line) + "\r\n");
@@ -68,7 +57,7 @@ void check_rtl_power(std::string_view line) {
 
 void check_power_line(std::string_view line) {
   const auto parsed = proto::parse_power_line(line);
-  check_message(parsed);
+  azt::fuzz::check_error_message(parsed);
   if (parsed) {
     AZT_FUZZ_REQUIRE(std::isfinite(*parsed) && std::fabs(*parsed) <= proto::kPowerLineMaxAbsDb);
   }

@@ -22,20 +22,9 @@ namespace {
 
 namespace software = azt::software;
 
-constexpr std::size_t kMaxMessageChars = 200;
-
-template <typename T>
-void check_message(const azt::Result<T>& result) {
-  if (result) return;
-  const std::string& message = result.error().message;
-  AZT_FUZZ_REQUIRE(!message.empty() && message.size() <= kMaxMessageChars);
-  AZT_FUZZ_REQUIRE(std::none_of(message.begin(), message.end(),
-                                [](char c) { return static_cast<unsigned char>(c) < 0x20; }));
-}
-
 void check_archive(std::string_view bytes) {
   const auto archive = software::check_deb_archive(bytes);
-  check_message(archive);
+  azt::fuzz::check_error_message(archive);
   if (!archive) return;
   AZT_FUZZ_REQUIRE(bytes.substr(0, 8) == "!<arch>\n");
   AZT_FUZZ_REQUIRE(archive->format_version.substr(0, 2) == "2.");
@@ -46,7 +35,7 @@ void check_archive(std::string_view bytes) {
 
 void check_status(std::string_view text) {
   const auto status = software::parse_update_status(text);
-  check_message(status);
+  azt::fuzz::check_error_message(status);
   if (!status) return;
   AZT_FUZZ_REQUIRE(status->percent >= 0 && status->percent <= 100);
   AZT_FUZZ_REQUIRE(status->at_unix_s >= 0);

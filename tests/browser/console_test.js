@@ -11,7 +11,7 @@ const fs = require('fs');
 const path = require('path');
 const {
   setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
-  stopDaemon, scenario: record, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown,
+  stopDaemon, scenarioWithShots, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown,
   summarise, run,
 } = require('./harness');
 
@@ -114,19 +114,8 @@ stale_s = 2.0
   setPassword(PASSWORD);
 }
 
-// A scenario of the harness, then what it left on screen at desktop and at phone size, passed or not.
-async function scenario(name, page, body) {
-  await record(name, body);
-  const slug = name.replace(/[^a-z0-9]+/gi, '-').toLowerCase();
-  for (const [size, vp] of [['desktop', { width: 1280, height: 800 }], ['phone', { width: 375, height: 740 }]]) {
-    try {
-      await page.setViewportSize(vp);
-      await sleep(150);
-      await page.screenshot({ path: path.join(outDir, `${slug}-${size}.png`), fullPage: true });
-    } catch (e) { console.log(`     (screenshot ${size}: ${e.message})`); }
-  }
-  await page.setViewportSize({ width: 1280, height: 800 });
-}
+// Every scenario leaves its screenshots (the harness's scenarioWithShots).
+const scenario = (name, page, body) => scenarioWithShots(name, page, outDir, body);
 
 async function login(page) {
   await page.click('#nav-main').catch(() => {});

@@ -135,6 +135,20 @@ async function scenario(name, body) {
   }
 }
 
+/// A scenario, then what it left on screen at desktop and at phone size in OUT_DIR, passed or not.
+async function scenarioWithShots(name, page, outDir, body) {
+  await scenario(name, body);
+  const slug = name.replace(/[^a-z0-9]+/gi, '-').toLowerCase().replace(/-+$/, '');
+  for (const [size, vp] of [['desktop', { width: 1280, height: 800 }], ['phone', { width: 375, height: 740 }]]) {
+    try {
+      await page.setViewportSize(vp);
+      await sleep(150);
+      await page.screenshot({ path: path.join(outDir, `${slug}-${size}.png`), fullPage: true });
+    } catch (e) { console.log(`     (screenshot ${size}: ${e.message})`); }
+  }
+  await page.setViewportSize({ width: 1280, height: 800 });
+}
+
 const loggedIn = (page) => page.evaluate(async () => (await (await fetch('/api/session')).json()).logged_in);
 async function text(page, sel) { return (await page.textContent(sel) || '').trim(); }
 
@@ -218,5 +232,5 @@ function run(main, cleanUp = () => {}) {
 
 module.exports = {
   setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
-  stopDaemon, scenario, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown, summarise, run,
+  stopDaemon, scenario, scenarioWithShots, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown, summarise, run,
 };

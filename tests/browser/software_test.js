@@ -11,7 +11,7 @@ const fs = require('fs');
 const path = require('path');
 const {
   setup, freePort, sleep, until, useWebPort, api, simConfig, setPassword, startDaemon, stopDaemon,
-  scenario: record, loggedIn, text, launch, checkPageErrors, shutDown, summarise, run,
+  scenarioWithShots, loggedIn, text, launch, checkPageErrors, shutDown, summarise, run,
 } = require('./harness');
 
 const { outDir, tmp, config } = setup('software_test.js', 'azt-software-');
@@ -55,19 +55,8 @@ function take() { fs.rmSync(request); }
 
 const software = async () => (await api('GET', '/api/software')).json;
 
-// A scenario of the harness, then what it left on screen at desktop and at phone size, passed or not.
-async function scenario(name, page, body) {
-  await record(name, body);
-  const slug = name.replace(/[^a-z0-9]+/gi, '-').toLowerCase().replace(/-+$/, '');
-  for (const [size, vp] of [['desktop', { width: 1280, height: 800 }], ['phone', { width: 375, height: 740 }]]) {
-    try {
-      await page.setViewportSize(vp);
-      await sleep(150);
-      await page.screenshot({ path: path.join(outDir, `${slug}-${size}.png`), fullPage: true });
-    } catch (e) { console.log(`     (screenshot ${size}: ${e.message})`); }
-  }
-  await page.setViewportSize({ width: 1280, height: 800 });
-}
+// Every scenario leaves its screenshots (the harness's scenarioWithShots).
+const scenario = (name, page, body) => scenarioWithShots(name, page, outDir, body);
 
 // Logs in from the header, staying on the page shown.
 async function login(page) {

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <string_view>
 
 #include "azt/linux/atomic_file.hpp"
 #include "azt/software/deb_archive.hpp"
@@ -13,6 +14,10 @@ namespace azt::app {
 namespace {
 
 using json = nlohmann::json;
+
+constexpr std::string_view kNoUpdatesReason =
+    "this azeltrack was not started by the Debian package's unit (no --update-inbox): a source "
+    "build is updated with git pull and scripts/run";
 
 /// The helper's report, read whole but never more than its parser takes (and one byte more, so
 /// that an oversized file is an error, not a cut one).
@@ -79,9 +84,7 @@ json SoftwareUpdates::to_json(const Look& found) const {
       {"pending", found.pending},
       {"helper", found.helper}};
   if (!enabled()) {
-    out["updates_reason"] =
-        "this azeltrack was not started by the Debian package's unit (no --update-inbox): a "
-        "source build is updated with git pull and scripts/run";
+    out["updates_reason"] = kNoUpdatesReason;
   }
   if (!found.helper_error.empty()) out["helper_error"] = found.helper_error;
   out["upload"] = last_upload_ ? json{{"sha256", last_upload_->sha256_hex},
@@ -102,8 +105,7 @@ void SoftwareUpdates::status(ActDone done) {
 void SoftwareUpdates::receive(std::string package, ActDone done) {
   if (!enabled()) {
     throw ApiError(409, "",
-                   "software updates are not set up here: " +
-                       to_json(Look{}).value("updates_reason", std::string()));
+                   "software updates are not set up here: " + std::string(kNoUpdatesReason));
   }
   if (package.size() > kMaxPackageBytes) throw ApiError(413, "package", "over 64 MiB");
   if (const auto archive = software::check_deb_archive(package); !archive) {
