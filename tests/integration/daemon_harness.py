@@ -8,6 +8,13 @@ import time
 import urllib.error
 import urllib.request
 
+# The instant at which the daemons of the tests that scan the sky start (`serve --utc-start`), so
+# that what they find up is the same at any hour the tests run (issue 26: a test that scanned
+# "the first source up" passed or failed with the time of day). At FN06HE, local midnight two
+# hours after a new Moon: the Sun and the Moon are down, Cassiopeia A culminates above 70° and
+# Cygnus A, the brightest point source of the catalogue, stands near 47°.
+FIXED_UTC = "2026-10-10T04:00:00Z"
+
 
 class Checks:
     """Counts checks; a failed one is printed with what it checked."""
@@ -83,15 +90,16 @@ def wait_until(probe, seconds=10.0, every=0.1):
 
 def cross_scan_of_a_source(base, beam_deg):
     """POST /api/scan's body for a short cross scan (5 points a line, 1.5 beams each side) of the
-    first target between 20° and 70° of elevation, where a scan has room on every side; exits 77
-    (skipped) when none is up now."""
+    first radio source (a point, not the Sun's or the Moon's disc) between 20° and 70° of
+    elevation, where a scan has room on every side, and that source's elevation. The daemon runs
+    at FIXED_UTC, so this is the same source every time; none up is a failure."""
     targets = http_json(base, "GET", "/api/targets")[1]["targets"]
-    up = [t for t in targets if 20.0 <= t["el_deg"] <= 70.0]
+    up = [t for t in targets if t.get("kind") == "source" and 20.0 <= t["el_deg"] <= 70.0]
     if not up:
-        print("no source between 20° and 70° now: nothing to scan")
-        sys.exit(77)
+        sys.exit(f"no radio source between 20° and 70° at {FIXED_UTC}: {targets}")
     return {"source": up[0]["name"], "kind": "cross", "beamwidth_deg": beam_deg,
-            "points_per_line": 5, "half_span_beams": 1.5, "settle_s": 0.5, "dwell_s": 0.8}
+            "points_per_line": 5, "half_span_beams": 1.5, "settle_s": 0.5,
+            "dwell_s": 0.8}, up[0]["el_deg"]
 
 
 def rotctld(port, lines, timeout=3.0):

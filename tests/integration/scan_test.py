@@ -16,8 +16,8 @@ import tempfile
 import threading
 import time
 
-from daemon_harness import (Checks, cross_scan_of_a_source, free_port, http_json, station_toml,
-                            wait_until)
+from daemon_harness import (FIXED_UTC, Checks, cross_scan_of_a_source, free_port, http_json,
+                            station_toml, wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-scan-")
@@ -33,7 +33,8 @@ token = subprocess.run([BIN, "web", "token", "--config", config], check=True,
                        capture_output=True).stdout.decode().strip()
 base = f"http://127.0.0.1:{web}"
 log = open(os.path.join(TMP, "serve.log"), "w", encoding="utf-8")
-daemon = subprocess.Popen([BIN, "serve", "--config", config], stdout=log, stderr=subprocess.STDOUT)
+daemon = subprocess.Popen([BIN, "serve", "--config", config, "--utc-start", FIXED_UTC], stdout=log,
+                          stderr=subprocess.STDOUT)
 feeding = threading.Event()
 done = threading.Event()
 
@@ -69,7 +70,7 @@ try:
     if not wait_until(lambda: http_json(base, "GET", "/api/state")[0] == 200, 20):
         sys.exit("the daemon did not start: " + open(log.name, encoding="utf-8").read())
     threading.Thread(target=feeder, daemon=True).start()
-    scan = cross_scan_of_a_source(base, BEAM)
+    scan, source_el_deg = cross_scan_of_a_source(base, BEAM)
     source = scan["source"]
 
     code, body = http_json(base, "POST", "/api/scan", scan, token)

@@ -3,7 +3,10 @@
 attached. The mount points wrong the way [sim.mount_errors] says (0.4° in azimuth, −0.25° in
 elevation); the simulated receiver hears the Sun, the Moon and the radio sources through that
 true beam. A scan of a source in the sky must find the error, and its apply must raise the power
-read while tracking the source to the scan's fitted peak. Usage: sim_receiver_test.py AZELTRACK"""
+read while tracking the source to the scan's fitted peak. The daemon runs at a fixed instant
+(daemon_harness.FIXED_UTC), so the source is the same at any hour. Usage: sim_receiver_test.py
+AZELTRACK"""
+import math
 import os
 import shutil
 import signal
@@ -12,8 +15,8 @@ import sys
 import tempfile
 import time
 
-from daemon_harness import (Checks, cross_scan_of_a_source, free_port, http_json, station_toml,
-                            wait_until)
+from daemon_harness import (FIXED_UTC, Checks, cross_scan_of_a_source, free_port, http_json,
+                            station_toml, wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-simrx-")
@@ -33,7 +36,8 @@ token = subprocess.run([BIN, "web", "token", "--config", config], check=True,
                        capture_output=True).stdout.decode().strip()
 base = f"http://127.0.0.1:{web}"
 log = open(os.path.join(TMP, "serve.log"), "w", encoding="utf-8")
-daemon = subprocess.Popen([BIN, "serve", "--config", config], stdout=log, stderr=subprocess.STDOUT)
+daemon = subprocess.Popen([BIN, "serve", "--config", config, "--utc-start", FIXED_UTC], stdout=log,
+                          stderr=subprocess.STDOUT)
 
 
 def state():
@@ -55,7 +59,7 @@ try:
     check(wait_until(lambda: state()["receiver"]["state"] == "receiving", 5),
           f"the simulated receiver reads with nothing attached: {state()['receiver']}")
     check(state()["receiver"]["source"] == "sim", "named sim")
-    scan = cross_scan_of_a_source(base, BEAM)
+    scan, source_el_deg = cross_scan_of_a_source(base, BEAM)
     source = scan["source"]
     code, body = http_json(base, "POST", "/api/scan", scan, token)
     check(code == 200, f"scan of {source} started: {code} {body}")
@@ -85,14 +89,17 @@ try:
     check(wait_until(lambda: not state()["antenna"]["moving"], 30), "settled after the apply")
     after = mean_power(3.0)
     print(f"tracking {source}: {before:.2f} dB before the apply, {after:.2f} dB after")
-    # On the source: more power than before by more than the readings' noise, and as much as
-    # the scan's peak within its noise. Relative to the source, not in dB: the source is the
-    # first one up when the test runs, a 6 dB radio star or a 1 dB Moon in this simulation.
+    # On the source: at least half the power the mount's error cost back (a point source in a
+    # Gaussian beam loses 10·log10(e)·4·ln2·(r/beam)² dB at r off the beam's axis, r the error
+    # on the sky at the source's elevation), and as much as the scan's peak within its noise.
+    r2 = (ERR_AZ * math.cos(math.radians(source_el_deg))) ** 2 + ERR_EL ** 2
+    cost_db = 10.0 * math.log10(math.e) * 4.0 * math.log(2.0) * r2 / BEAM ** 2
     noise = fit.get("noise_db", 1.0)
     peak = fit.get("peak_db", 99.0)
-    check(after > before + 2.0 * noise and after > peak - 3.0 * noise,
-          f"the apply puts the beam on the source: {before:.2f} -> {after:.2f} dB "
-          f"(the scan's peak {peak:.2f} dB, noise {noise:.3f} dB)")
+    check(after - before > 0.5 * cost_db and after > peak - 3.0 * noise,
+          f"the apply puts the beam on the source: {before:.2f} -> {after:.2f} dB (the error "
+          f"cost {cost_db:.2f} dB at {source_el_deg:.1f}°; the scan's peak {peak:.2f} dB, noise "
+          f"{noise:.3f} dB)")
     daemon.send_signal(signal.SIGTERM)
     check(daemon.wait(10) == 0, "exits cleanly")
 finally:

@@ -5,9 +5,13 @@ terminal (`DEBIAN_FRONTEND=noninteractive apt-get install ./new.deb`), and find 
 unchanged and the daemon running again; then remove (the settings stay) and purge (the user, the
 unit and /var/lib/azeltrack go).
 
-The root is made by debootstrap (minbase) and kept as build/deb/bookworm-root.tar for later runs.
-Each step runs in it under chroot in private mount and PID namespaces (unshare): the mounts and
-every process it started vanish with it. The daemon runs in a private network namespace too,
+The root is made by debootstrap (minbase) and kept for later runs outside the clone, as
+CACHE_DIR/bookworm-ARCH-minbase-KEY.tar (KEY: a hash of the release, variant, architecture, mirror
+and package list, so a change to any of them makes a new root). The scratch root is bound onto
+itself, so it is a mount point of its own even where the machine's "/" is not (a chroot or build
+container, where unshare cannot change the propagation of "/"). Each step runs in it under chroot
+in new mount and PID namespaces (unshare, the propagation left as it is and the scratch root's
+mounts then made private): the mounts and every process it started vanish with it. The daemon runs in a private network namespace too,
 with only a loopback, so its ports never meet the machine's; this script's client joins it there.
 No systemd runs in the root: the test plays systemd's part, running the unit's ExecStart as its
 User with its RuntimeDirectory, and the package's own restart (deb-systemd-invoke) is skipped, as
@@ -18,8 +22,8 @@ architecture, run through qemu-user (binfmt_misc, registered here from qemu-user
 entry when the machine has not): the package installs, the daemon starts, writes its settings
 and answers, and purge leaves nothing.
 
-Usage: upgrade_test.py DEB_N DEB_N_PLUS_1 [--cache build/deb/bookworm-root.tar]
-       upgrade_test.py DEB_OF_ANOTHER_ARCH [--cache build/deb/bookworm-arm64-root.tar]
+Usage: upgrade_test.py DEB_N DEB_N_PLUS_1 [--cache-dir ~/.cache/azeltrack/debootstrap]
+       upgrade_test.py DEB_OF_ANOTHER_ARCH [--cache-dir ~/.cache/azeltrack/debootstrap]
 (as root: debootstrap, chroot, unshare and binfmt_misc need it)."""
 import argparse
 import hashlib
@@ -35,6 +39,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from daemon_harness import Checks, http_json, http_upload, wait_until  # noqa: E402
 
 MIRROR = "http://deb.debian.org/debian"
+RELEASE = "bookworm"
+VARIANT = "minbase"
+INCLUDE = []  # debootstrap --include: none; the packages' own Depends come from apt at install
 CONFIG = "/var/lib/azeltrack/azeltrack.toml"
 BASE = "http://127.0.0.1:8080"
 # The settings changed through the daemon, and how /api/config shows them.
@@ -55,27 +62,45 @@ class Root:
 
     def __init__(self, path):
         self.path = path
+        self.bound = False
 
-    def prepare(self, cache, arch):
+    def prepare(self, cache_dir, arch):
+        """Fills the folder from the cached root of this release, variant, architecture, mirror
+        and package list, or from debootstrap (then cached), and binds it onto itself."""
+        recipe = json.dumps([RELEASE, VARIANT, arch, MIRROR, sorted(INCLUDE)])
+        key = hashlib.sha256(recipe.encode()).hexdigest()[:16]
+        cache = os.path.join(cache_dir, f"{RELEASE}-{arch}-{VARIANT}-{key}.tar") if cache_dir else ""
         if cache and os.path.exists(cache):
             log(f"unpacking the root from {cache}")
             subprocess.run(["tar", "-xf", cache, "-C", self.path], check=True)
-            return
-        log(f"debootstrap bookworm (minbase, {arch}) into a scratch folder")
-        subprocess.run(["debootstrap", "--variant=minbase", f"--arch={arch}", "bookworm",
-                        self.path, MIRROR],
-                       check=True, stdout=subprocess.DEVNULL)
-        if cache:
-            os.makedirs(os.path.dirname(cache), exist_ok=True)
-            subprocess.run(["tar", "-cf", cache + ".part", "-C", self.path, "."], check=True)
-            os.replace(cache + ".part", cache)
+        else:
+            log(f"debootstrap {RELEASE} ({VARIANT}, {arch}) into a scratch folder")
+            include = [f"--include={','.join(INCLUDE)}"] if INCLUDE else []
+            subprocess.run(["debootstrap", f"--variant={VARIANT}", f"--arch={arch}", *include,
+                            RELEASE, self.path, MIRROR], check=True, stdout=subprocess.DEVNULL)
+            if cache:
+                os.makedirs(cache_dir, exist_ok=True)
+                subprocess.run(["tar", "-cf", cache + ".part", "-C", self.path, "."], check=True)
+                os.replace(cache + ".part", cache)
+        subprocess.run(["mount", "--bind", self.path, self.path], check=True)
+        self.bound = True
+
+    def release(self):
+        """Unbinds the root; False if it stays mounted (then it must not be deleted: a leftover
+        bind of /dev below it would be deleted with it)."""
+        if not self.bound:
+            return True
+        return subprocess.run(["umount", "--recursive", self.path]).returncode == 0
 
     def _script(self, inner, private_net):
         root = shlex.quote(self.path)
         return "\n".join([
             "set -e",
+            # The root's own mount, private in this namespace: nothing below propagates out.
+            f"mount --make-rprivate {root}",
             f"mount -t proc proc {root}/proc",
             f"mount --rbind /dev {root}/dev",
+            f"mount --make-rslave {root}/dev",
             f"mount -t tmpfs tmpfs {root}/run",
             f"cp /etc/resolv.conf {root}/etc/resolv.conf",
             "ip link set lo up" if private_net else ":",
@@ -88,7 +113,7 @@ class Root:
         return self._unshare(inner, private_net)
 
     def _unshare(self, inner, private_net):
-        args = ["unshare", "--mount", "--pid", "--fork"] + (["--net"] if private_net else [])
+        args = ["unshare", "--mount", "--propagation", "unchanged", "--pid", "--fork"] + (["--net"] if private_net else [])
         env = dict(os.environ, DEBIAN_FRONTEND="noninteractive", LC_ALL="C.UTF-8")
         p = subprocess.run(args + ["bash", "-c", self._script(inner, private_net)], env=env,
                            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
@@ -256,7 +281,7 @@ def apt_install(root, deb):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("debs", nargs="*")
-    ap.add_argument("--cache", default="")
+    ap.add_argument("--cache-dir", default="")
     ap.add_argument("--client", nargs=3, metavar=("PHASE", "TOKEN_FILE", "OUT_FILE"))
     args = ap.parse_args()
     if args.client:
@@ -272,9 +297,9 @@ def main():
         register_qemu(arch)
     checks = Checks()
     scratch = tempfile.mkdtemp(prefix="azt-root-", dir=os.environ.get("AZT_ROOT_DIR"))
+    root = Root(scratch)
     try:
-        root = Root(scratch)
-        root.prepare(args.cache, arch)
+        root.prepare(args.cache_dir, arch)
         os.chmod(scratch, 0o755)  # the root's "/" (mkdtemp's 0700): the daemon's user gets through
         for deb in debs:
             shutil.copy(deb, root.path + "/tmp/")
@@ -285,7 +310,10 @@ def main():
             update_from_console(root, in_root, settings, checks)
         remove_and_purge(root, checks)
     finally:
-        shutil.rmtree(scratch, ignore_errors=True)
+        if root.release():
+            shutil.rmtree(scratch, ignore_errors=True)
+        else:
+            log(f"{scratch} is still mounted: left in place")
     return checks.summary(f"upgrade_test ({arch})")
 
 

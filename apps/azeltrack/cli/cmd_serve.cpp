@@ -4,7 +4,10 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
+#include <string>
 
+#include "azt/astro/time_scales.hpp"
 #include "azt/linux/atomic_file.hpp"
 #include "cli/commands.hpp"
 #include "common/usage_error.hpp"
@@ -57,13 +60,23 @@ Runner add_serve_command(CLI::App& app) {
                   "~/.config/azeltrack/azeltrack.toml; written with defaults if missing)");
   cmd->add_option("--run-for", opts->run_for_s, "Stop after this many seconds (tests)")
       ->check(CLI::Range(0.0, 1e9));
+  auto utc_start = std::make_shared<std::string>();
+  cmd->add_option("--utc-start", *utc_start,
+                  "Tests: the daemon's clock starts at this UTC instant (ISO 8601, "
+                  "2026-03-20T12:00:00Z) instead of the system's, so its sky is the same at any "
+                  "hour");
   cmd->add_option("--update-inbox", opts->update_inbox,
                   "Folder where a package uploaded on the console's Software page is left for "
                   "the root update helper (the package's unit: /var/lib/azeltrack/update)");
   cmd->add_option("--update-status", opts->update_status,
                   "The update helper's status file (the package's unit: "
                   "/var/lib/azeltrack-update/status)");
-  return [opts] {
+  return [opts, utc_start] {
+    if (!utc_start->empty()) {
+      auto parsed = astro::parse_iso8601_utc(*utc_start);
+      if (!parsed) throw UsageError("--utc-start: " + parsed.error().message);
+      opts->utc_start_unix_s = parsed->unix_seconds();
+    }
     if (opts->config_path.empty()) opts->config_path = default_config_path();
     write_default_if_missing(opts->config_path);
     ConfigStore store = ConfigStore::open(opts->config_path);

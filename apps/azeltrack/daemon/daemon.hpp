@@ -4,6 +4,7 @@
 // the loop; SIGINT, SIGTERM and SIGHUP stop the motors and leave cleanly.
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "config/config_store.hpp"
@@ -18,6 +19,10 @@ struct DaemonOptions {
   std::string config_path;
   /// Stop after this many seconds (0: until a signal). For tests and benchmarks.
   double run_for_s = 0.0;
+  /// Tests: the daemon's UTC (Unix seconds) when it starts, then running with the steady clock,
+  /// so that what it computes of the sky does not depend on the hour it runs at. Unset: the
+  /// system clock.
+  std::optional<double> utc_start_unix_s;
   /// Software updates from the console (the package's unit sets both): the folder the uploaded
   /// package goes to for the root update helper, and the helper's status file. Empty: the
   /// console shows the version only.

@@ -60,7 +60,7 @@ class StationDaemon {
   /// Where the mount's azimuth is (for choosing a pass's wrap side), or the configured start.
   double mount_az() const;
   /// UTC seconds since 1970, from the system clock.
-  static double unix_now_s();
+  double unix_now_s() const;
   /// What may block goes to the worker; its result comes back to the loop (off_loop.hpp).
   Offload off_loop();
   double now_s() const;

@@ -60,7 +60,8 @@ std::unique_ptr<proto::ProtocolSession> serial_session(const SerialServerConfig&
 
 }  // namespace
 
-double StationDaemon::unix_now_s() {
+double StationDaemon::unix_now_s() const {
+  if (options_.utc_start_unix_s) return *options_.utc_start_unix_s + now_s();
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
@@ -80,7 +81,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       satellites_(satellite_settings(), [](const std::string& line) { spdlog::info("{}", line); }),
       commands_(StationCommandParts{
           modes_, *antenna_, sky_, &satellites_, config_.target_limits(), config_.station.el_range,
-          [this] { return now_s(); }, [] { return unix_now_s(); }, config_.start_mount().az_deg,
+          [this] { return now_s(); }, [this] { return unix_now_s(); }, config_.start_mount().az_deg,
           [this](const CommandSource& source, const CommandRecord& record) {
             motion_event(source, record);
           },
@@ -132,7 +133,7 @@ void StationDaemon::simulate_receiver() {
     return control::AzEl{truth->plants().az().shaft_deg(), truth->plants().el().shaft_deg()};
   };
   auto power = std::make_shared<SimulatedPower>(std::move(parts));
-  receiver_->simulate([power] { return power->read_db(unix_now_s()); },
+  receiver_->simulate([this, power] { return power->read_db(unix_now_s()); },
                       config_.sim_receiver.receiver.rate_hz);
 }
 
@@ -141,7 +142,7 @@ std::unique_ptr<AzelDatExport> StationDaemon::make_azel_dat_export() {
   return std::make_unique<AzelDatExport>(
       io_,
       AzelDatParts{
-          config_.exports.azel_dat, *ephemeris_, config_.sky, [] { return unix_now_s(); },
+          config_.exports.azel_dat, *ephemeris_, config_.sky, [this] { return unix_now_s(); },
           [this]() -> std::optional<astro::Target> {
             const auto& t = sky_.target();
             const bool body =
@@ -357,7 +358,7 @@ void StationDaemon::open_console() {
                    *antenna_,
                    &satellites_,
                    [this] { return now_s(); },
-                   [] { return unix_now_s(); },
+                   [this] { return unix_now_s(); },
                    servers,
                    [this] {
                      nlohmann::json io = guard_->state();

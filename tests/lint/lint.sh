@@ -11,12 +11,12 @@ mapfile -t files < <(find core platform apps tests bench fuzz firmware -name '*.
 clang-format --dry-run --Werror "${files[@]}"
 echo "lint: clang-format clean on ${#files[@]} files"
 mapfile -t tidy < <(find core/src platform/*/src apps -name '*.cpp' | sort)
-out=$(printf '%s\n' "${tidy[@]}" |
-  # GCC-only flags in compile_commands.json (-Wno-restrict) are unknown to clang: ignore them.
-  xargs -P 2 -n 4 clang-tidy -p "$build" --quiet --warnings-as-errors='*' \
-    --extra-arg=-Wno-unknown-warning-option 2>&1) || {
-  printf '%s\n' "$out" | grep -E 'warning:|error:' | sort -u >&2
+# GCC-only flags in compile_commands.json (-Wno-restrict) are unknown to clang: ignore them.
+out=$(python3 "$src/tests/lint/tidy_cache.py" --source "$src" --build "$build" --jobs "$(nproc)" \
+  "${tidy[@]}" -- --quiet --warnings-as-errors='*' --extra-arg=-Wno-unknown-warning-option 2>&1) || {
+  printf '%s\n' "$out" | grep -E 'warning:|error:|tidy_cache:' | sort -u >&2
   echo "lint: clang-tidy found problems" >&2
   exit 1
 }
+printf '%s\n' "$out" | grep '^tidy_cache:'
 echo "lint: clang-tidy clean on ${#tidy[@]} files"
