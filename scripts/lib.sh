@@ -8,6 +8,11 @@ azt_cache=${AZT_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/azeltrack}
 export CCACHE_DIR=${CCACHE_DIR:-$azt_cache/ccache}
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-8G}
+# The build folder is not part of an object's key (hash_dir off), so the package build
+# (build/deb/src-ARCH/obj-…) takes the dev build's objects (build/): the same flags, the same
+# paths relative to base_dir. The price: an object's debug information may name the other
+# build's folder as its compilation directory (gdb: `directory` to the clone).
+export CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
 export AZT_TIDY_CACHE=${AZT_TIDY_CACHE:-$azt_cache/clang-tidy}
 
 # line_awk ARGS…: awk that reads and writes a line at a time. Debian's default awk (mawk) reads

@@ -63,6 +63,7 @@ class Root:
     def __init__(self, path):
         self.path = path
         self.bound = False
+        self.archives = ""  # a folder kept between runs for apt's downloaded packages
 
     def prepare(self, cache_dir, arch):
         """Fills the folder from the cached root of this release, variant, architecture, mirror
@@ -82,6 +83,11 @@ class Root:
                 os.makedirs(cache_dir, exist_ok=True)
                 subprocess.run(["tar", "-cf", cache + ".part", "-C", self.path, "."], check=True)
                 os.replace(cache + ".part", cache)
+        if cache_dir:
+            # The packages apt fetches for the install (the program's dependencies) are kept
+            # for the next run; apt checks each against the archive's signed index before use.
+            self.archives = os.path.join(cache_dir, f"{RELEASE}-{arch}-apt-archives")
+            os.makedirs(os.path.join(self.archives, "partial"), exist_ok=True)
         subprocess.run(["mount", "--bind", self.path, self.path], check=True)
         self.bound = True
 
@@ -101,6 +107,8 @@ class Root:
             f"mount -t proc proc {root}/proc",
             f"mount --rbind /dev {root}/dev",
             f"mount --make-rslave {root}/dev",
+            (f"mount --bind {shlex.quote(self.archives)} {root}/var/cache/apt/archives"
+             if self.archives else ":"),
             f"mount -t tmpfs tmpfs {root}/run",
             f"cp /etc/resolv.conf {root}/etc/resolv.conf",
             "ip link set lo up" if private_net else ":",
