@@ -10,10 +10,10 @@ import urllib.request
 
 # The instant at which the daemons of the tests that scan the sky start (`serve --utc-start`), so
 # that what they find up is the same at any hour the tests run (issue 26: a test that scanned
-# "the first source up" passed or failed with the time of day). At FN06HE, local midnight two
-# hours after a new Moon: the Sun and the Moon are down, Cassiopeia A culminates above 70° and
-# Cygnus A, the brightest point source of the catalogue, stands near 47°.
-FIXED_UTC = "2026-10-10T04:00:00Z"
+# "the first source up" passed or failed with the time of day). At FN06HE, 23:00 local time on the
+# day of a new Moon, inside tzdata's leap-second table: the Sun (−61°) and the Moon (−66°) are
+# down, Cassiopeia A, the catalogue's first source, stands at 58.5° (azimuth 312°).
+FIXED_UTC = "2025-11-20T04:00:00Z"
 
 
 class Checks:
