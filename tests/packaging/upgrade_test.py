@@ -66,30 +66,36 @@ class Root:
         self.archives = ""  # a folder kept between runs for apt's downloaded packages
 
     def prepare(self, cache_dir, arch):
-        """Fills the folder from the cached root of this release, variant, architecture, mirror
-        and package list, or from debootstrap (then cached), and binds it onto itself."""
+        """Binds the folder onto itself, then fills it from the cached root of this release,
+        variant, architecture, mirror and package list, or from debootstrap (then cached)."""
         recipe = json.dumps([RELEASE, VARIANT, arch, MIRROR, sorted(INCLUDE)])
         key = hashlib.sha256(recipe.encode()).hexdigest()[:16]
         cache = os.path.join(cache_dir, f"{RELEASE}-{arch}-{VARIANT}-{key}.tar") if cache_dir else ""
-        if cache and os.path.exists(cache):
-            log(f"unpacking the root from {cache}")
-            subprocess.run(["tar", "-xf", cache, "-C", self.path], check=True)
-        else:
-            log(f"debootstrap {RELEASE} ({VARIANT}, {arch}) into a scratch folder")
-            include = [f"--include={','.join(INCLUDE)}"] if INCLUDE else []
-            subprocess.run(["debootstrap", f"--variant={VARIANT}", f"--arch={arch}", *include,
-                            RELEASE, self.path, MIRROR], check=True, stdout=subprocess.DEVNULL)
-            if cache:
-                os.makedirs(cache_dir, exist_ok=True)
-                subprocess.run(["tar", "-cf", cache + ".part", "-C", self.path, "."], check=True)
-                os.replace(cache + ".part", cache)
+        subprocess.run(["mount", "--bind", self.path, self.path], check=True)
+        self.bound = True
         if cache_dir:
             # The packages apt fetches for the install (the program's dependencies) are kept
             # for the next run; apt checks each against the archive's signed index before use.
             self.archives = os.path.join(cache_dir, f"{RELEASE}-{arch}-apt-archives")
             os.makedirs(os.path.join(self.archives, "partial"), exist_ok=True)
-        subprocess.run(["mount", "--bind", self.path, self.path], check=True)
-        self.bound = True
+        if cache and os.path.exists(cache):
+            log(f"unpacking the root from {cache}")
+            subprocess.run(["tar", "-xf", cache, "-C", self.path], check=True)
+            return
+        log(f"debootstrap {RELEASE} ({VARIANT}, {arch}) into a scratch folder")
+        include = f"--include={','.join(INCLUDE)}" if INCLUDE else ""
+        # In a namespace of its own: what debootstrap mounts in the root (/proc, /sys) and
+        # leaves mounted when it runs in a chroot goes with the namespace.
+        root = shlex.quote(self.path)
+        subprocess.run(["unshare", "--mount", "--propagation", "unchanged", "sh", "-ec",
+                        f"mount --make-rprivate {root}; debootstrap --variant={VARIANT} "
+                        f"--arch={arch} {include} {RELEASE} {root} {MIRROR}"],
+                       check=True, stdout=subprocess.DEVNULL)
+        if cache:
+            os.makedirs(cache_dir, exist_ok=True)
+            subprocess.run(["tar", "--one-file-system", "-cf", cache + ".part", "-C", self.path,
+                            "."], check=True)
+            os.replace(cache + ".part", cache)
 
     def release(self):
         """Unbinds the root; False if it stays mounted (then it must not be deleted: a leftover
