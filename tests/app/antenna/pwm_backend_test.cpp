@@ -59,7 +59,7 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
   };
   control::Demand go;
   go.position = control::AzEl{200.0, 10.0};  // 20° clockwise of where the hub says it is
-  ::write(station_.master(), "\0", 1);       // the first delimiter
+  ASSERT_EQ(::write(station_.master(), "\0", 1), 1);  // the first delimiter
   double last_frame_s = 0.0;
   bool driven = false;
   // 1.5 s of frames every 50 ms (the antenna "does not move": the readings stay at 180°).
@@ -118,7 +118,7 @@ TEST_F(PwmBackendTest, AnAxisErrorFromTheHubIsAFaultNamingItAndNothingIsDriven) 
   };
   control::Demand go;
   go.position = control::AzEl{200.0, 10.0};
-  ::write(station_.master(), "\0", 1);
+  ASSERT_EQ(::write(station_.master(), "\0", 1), 1);
   proto::HubReading bad{12, 0, static_cast<std::uint16_t>(2048), 0};
   bad.el_error = proto::HubAxisError::Parity;
   while (seconds() < 0.5) {
@@ -160,7 +160,7 @@ TEST_F(PwmBackendTest, AHubFrameWhoseBitsAreNotTheMountsIsAFaultNamingBoth) {
   };
   control::Demand go;
   go.position = control::AzEl{200.0, 10.0};
-  ::write(station_.master(), "\0", 1);
+  ASSERT_EQ(::write(station_.master(), "\0", 1), 1);
   const auto run = [&](double until_s) {
     while (seconds() < until_s) {
       send_frame(180.0, 10.0);
@@ -197,7 +197,7 @@ TEST_F(PwmBackendTest, ALimitSwitchEdgeTurnsTheDriveTowardsItOffAtOnce) {
                                     seconds, [] {}, [](const std::string&) {}});
   control::Demand go;
   go.position = control::AzEl{200.0, 10.0};
-  ::write(station_.master(), "\0", 1);
+  ASSERT_EQ(::write(station_.master(), "\0", 1), 1);
   while (seconds() < 1.0 && duty(0) == 0) {
     send_frame(180.0, 10.0);
     io.run_for(std::chrono::milliseconds(50));
@@ -237,7 +237,7 @@ TEST_F(PwmBackendTest, TheEnableLineFollowsTheDriveAndDropsOnAStop) {
   EXPECT_FALSE(gpio.outputs["[hardware.az] enable"]) << "enabled before anything was driven";
   control::Demand go;
   go.position = control::AzEl{200.0, 10.0};
-  ::write(station_.master(), "\0", 1);
+  ASSERT_EQ(::write(station_.master(), "\0", 1), 1);
   for (int i = 0; i < 40 && duty(0) == 0; ++i) {
     send_frame(180.0, 10.0);
     io.run_for(std::chrono::milliseconds(20));

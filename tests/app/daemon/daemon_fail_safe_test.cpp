@@ -63,7 +63,7 @@ class DaemonFailSafeTest : public ::testing::Test {
     options.config_path = (dir() / "azeltrack.toml").string();
     options.run_for_s = 15.0;  // a bound, never reached when the test passes
     options.on_loop_started = [this, fault](asio::io_context& io) {
-      (void)::write(station_.master(), "\0", 1);
+      EXPECT_EQ(::write(station_.master(), "\0", 1), 1);
       auto client = std::make_shared<asio::ip::tcp::socket>(io);
       client->connect({asio::ip::make_address("127.0.0.1"), port_});
       asio::write(*client, asio::buffer(std::string("P 200 10\n")));
