@@ -58,7 +58,7 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
     return std::chrono::duration<double>(Clock::now() - start).count();
   };
   control::Demand go;
-  go.position = control::AzEl{200.0, 10.0};  // 20° clockwise of where the hub says it is
+  go.position = control::AzEl{200.0, 10.0};           // 20° clockwise of where the hub says it is
   ASSERT_EQ(::write(station_.master(), "\0", 1), 1);  // the first delimiter
   double last_frame_s = 0.0;
   bool driven = false;
