@@ -13,10 +13,12 @@ export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-8G}
 # paths relative to base_dir. The price: an object's debug information may name the other
 # build's folder as its compilation directory (gdb: `directory` to the clone).
 export CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
-# ccache keys on the locale variables that are set (LANG, LC_ALL, …: they change the compiler's
-# messages), and debhelper runs the package build with LC_ALL=C.UTF-8: the dev build does too,
-# or none of its objects would be the package's.
-export LC_ALL=C.UTF-8
+# ccache keys on the locale variables that are set (LANG, LC_ALL, LC_CTYPE, LC_MESSAGES: they
+# change the compiler's messages), and debhelper runs the package build with LC_ALL=C.UTF-8: every
+# build gets the same locale, so that the dev build's objects are the package's and a run's keys
+# do not depend on the caller's locale.
+export LANG=C.UTF-8 LC_ALL=C.UTF-8
+unset LC_CTYPE LC_MESSAGES
 export AZT_TIDY_CACHE=${AZT_TIDY_CACHE:-$azt_cache/clang-tidy}
 
 # line_awk ARGS…: awk that reads and writes a line at a time. Debian's default awk (mawk) reads
