@@ -11,8 +11,9 @@ and package list, so a change to any of them makes a new root). The scratch root
 itself, so it is a mount point of its own even where the machine's "/" is not (a chroot or build
 container, where unshare cannot change the propagation of "/"). Each step runs in it under chroot
 in new mount and PID namespaces (unshare, the propagation left as it is and the scratch root's
-mounts then made private): the mounts and every process it started vanish with it. The daemon runs in a private network namespace too,
-with only a loopback, so its ports never meet the machine's; this script's client joins it there.
+mounts then made private): the mounts and every process it started vanish with it. The daemon
+runs in a private network namespace too, with only a loopback, so its ports never meet the
+machine's; this script's client joins it there.
 No systemd runs in the root: the test plays systemd's part, running the unit's ExecStart as its
 User with its RuntimeDirectory, and the package's own restart (deb-systemd-invoke) is skipped, as
 it is in any chroot.
@@ -127,7 +128,8 @@ class Root:
         return self._unshare(inner, private_net)
 
     def _unshare(self, inner, private_net):
-        args = ["unshare", "--mount", "--propagation", "unchanged", "--pid", "--fork"] + (["--net"] if private_net else [])
+        args = ["unshare", "--mount", "--propagation", "unchanged", "--pid", "--fork"]
+        args += ["--net"] if private_net else []
         env = dict(os.environ, DEBIAN_FRONTEND="noninteractive", LC_ALL="C.UTF-8")
         p = subprocess.run(args + ["bash", "-c", self._script(inner, private_net)], env=env,
                            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
