@@ -42,12 +42,14 @@ def sha256_bytes(data):
 
 
 class Paths:
-    """Absolute paths under the source or build tree <-> clone-independent names."""
+    """Absolute paths under the source or build tree <-> clone-independent names. A root is
+    replaced wherever it appears, also without a slash after it, as in the package flags'
+    -ffile-prefix-map=/path/to/clone=."""
 
     def __init__(self, source, build):
         # The build tree first: it usually lies inside the source tree.
-        self.roots = [(os.path.realpath(build) + "/", "@BUILD@/"),
-                      (os.path.realpath(source) + "/", "@SRC@/")]
+        self.roots = [(os.path.realpath(build), "@BUILD@"),
+                      (os.path.realpath(source), "@SRC@")]
 
     def portable(self, text):
         for root, name in self.roots:

@@ -26,8 +26,9 @@ make_project() {  # make_project DIR: core/unit.cpp including core/thing.hpp, an
   cp "$src/.clang-tidy" "$1/"
   printf '#pragma once\ninline int twice(int value) { return 2 * value; }\n' >"$1/core/thing.hpp"
   printf '#include "thing.hpp"\nint four() { return twice(2); }\n' >"$1/core/unit.cpp"
-  printf '[{"directory": "%s", "file": "%s", "command": "c++ -std=c++20 -I%s -o unit.o -c %s"}]\n' \
-    "$1/build" "$1/core/unit.cpp" "$1/core" "$1/core/unit.cpp" >"$1/build/compile_commands.json"
+  # The clone's path also in a flag, without a slash after it (dpkg-buildflags' prefix map).
+  printf '[{"directory": "%s", "file": "%s", "command": "c++ -std=c++20 -ffile-prefix-map=%s=. -I%s -o unit.o -c %s"}]\n' \
+    "$1/build" "$1/core/unit.cpp" "$1" "$1/core" "$1/core/unit.cpp" >"$1/build/compile_commands.json"
 }
 entry() { find "$AZT_TIDY_CACHE" -name '*.json' | head -1; }
 
