@@ -173,12 +173,17 @@ class Linter:
                  self.paths.portable(unit.directory), *map(self.paths.portable, unit.args)]
         return sha256_bytes("\0".join(parts).encode())
 
-    def deps(self, unit, fresh=False):
+    def deps(self, unit):
         closure = unit.include_closure(self.clang) if self.clang else None
         if not closure:
             return None
-        hashed = [(self.paths.portable(p), self.cache.file_hash(p, fresh)) for p in closure]
+        hashed = [(self.paths.portable(p), self.cache.file_hash(p)) for p in closure]
         return None if any(h is None for _, h in hashed) else hashed
+
+    def unchanged(self, deps):
+        """Every file of a closure still as hashed (read again, not from this run's memo)."""
+        return all(self.cache.file_hash(self.paths.local(name), fresh=True) == digest
+                   for name, digest in deps)
 
     def run(self, unit):
         """("cached" | "clean" | "findings", output) for one unit."""
@@ -191,7 +196,7 @@ class Linter:
         if p.returncode != 0:
             return "findings", p.stdout + p.stderr
         # Kept only if no file of the closure changed while clang-tidy read it.
-        if before is not None and before == self.deps(unit, fresh=True):
+        if before is not None and self.unchanged(before):
             self.cache.store_clean(key, before)
         return "clean", ""
 
