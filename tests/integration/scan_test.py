@@ -5,6 +5,7 @@ beam would see from a source that sits 0.4° of azimuth and −0.25° of elevati
 the ephemeris puts it, as dB lines over UDP ([receiver] udp). The scan must find that offset,
 and its one-press apply must put it into [corrections] (saved). Refusals: no readings, a bad
 plan, a STOP mid-scan. Usage: scan_test.py AZELTRACK"""
+import fcntl
 import math
 import os
 import shutil
@@ -105,16 +106,34 @@ try:
           abs(found.get("el_offset_deg", 9) - TRUE_EL) < 0.06, f"the source's offset found: {found}")
     check(abs(s["fit"]["width_xel_deg"] - BEAM) < 0.2, f"the beam's width: {s['fit']}")
 
-    code, body = http_json(base, "POST", "/api/scan/apply", {}, token)
+    # Issue 27 §8: an apply refused while another program holds the settings file (503 after the
+    # daemon's 5 s wait) keeps the result for the next apply.
+    lock_fd = os.open(config + ".lock", os.O_RDWR | os.O_CREAT, 0o600)
+    fcntl.flock(lock_fd, fcntl.LOCK_EX)
+    try:
+        code, body = http_json(base, "POST", "/api/scan/apply", {}, token, timeout=15)
+    finally:
+        fcntl.flock(lock_fd, fcntl.LOCK_UN)
+        os.close(lock_fd)
+    check(code == 503, f"an apply while the file is held: 503: {code} {body}")
+    check(state()["scan"].get("found") == found, f"the result is kept: {state()['scan'].get('found')}")
+    # Issue 27 §9: an offset another program set meanwhile is what the found one comes off.
+    subprocess.run([BIN, "config", "set", "--config", config, "corrections.az_offset_deg", "1.0"],
+                   check=True, stdout=subprocess.DEVNULL)
+    code, body = http_json(base, "POST", "/api/scan/apply", {}, token, timeout=15)
     check(code == 200, f"applied: {code} {body}")
     text = open(config, encoding="utf-8").read()
     saved = {k: float(v) for k, v in (line.split(" = ") for line in text.splitlines()
                                       if line.startswith(("az_offset_deg", "el_offset_deg")))}
-    check(abs(saved.get("az_offset_deg", 9) + found["az_offset_deg"]) < 1e-9 and
+    check(abs(saved.get("az_offset_deg", 9) - (1.0 - found["az_offset_deg"])) < 1e-9 and
           abs(saved.get("el_offset_deg", 9) + found["el_offset_deg"]) < 1e-9,
-          f"the offsets saved in the file, the found ones taken off: {saved}")
+          f"the found offsets taken off the file's (az 1.0 set by `config set`): {saved}")
     code, _ = http_json(base, "POST", "/api/scan/apply", {}, token)
     check(code == 409, "applied once, not twice")
+    # The offset as if nobody had set 1.0, for the pointing check below.
+    code, body = http_json(base, "PUT", "/api/config/offsets",
+                           {"az_offset_deg": -found["az_offset_deg"]}, token)
+    check(code == 200, f"the az offset set back: {code} {body}")
     # The antenna now reads where the beam is: the source's true place is the target.
     check(wait_until(lambda: power_db(state()) > 5.85, 30),
           f"on the source after the apply: {power_db(state()):.2f} dB of 6.02")

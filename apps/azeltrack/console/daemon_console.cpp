@@ -494,16 +494,37 @@ void DaemonConsole::act_scan_apply(const json& /*body*/, ActDone done) {
   if (p_.scanner == nullptr || !p_.scanner->found()) {
     throw ApiError(409, "", "no scan result to apply: run a scan to its end first");
   }
+  if (scan_apply_pending_) throw ApiError(409, "", "the scan result is being applied already");
   const ScanOffsets found = *p_.scanner->found();
-  // The beam was on the source where the readings said source + found: take it off the reading.
-  const control::AxisOffsets& now = p_.config.station.corrections.offsets;
-  const double az = now.az_deg - found.az_offset_deg;
-  const double el = now.el_deg - found.el_offset_deg;
-  if (auto ok = control::AxisOffsets::make(az, el); !ok) {
-    throw ApiError(409, "", "the offsets would go out of range: " + ok.error().message);
-  }
-  p_.scanner->applied();
-  act_offsets(json{{"az_offset_deg", az}, {"el_offset_deg", el}}, std::move(done));
+  // The beam was on the source where the readings said source + found: take it off the value in
+  // the file now, not this process's copy, which `azeltrack config set` may have changed since
+  // (issue 27 §9). The result stays applicable until the save is done: a save refused while
+  // another program holds the file must not lose minutes of scanning (§8).
+  scan_apply_pending_ = true;
+  save(
+      "az_offset_deg",
+      [found](toml::table& root) {
+        toml::table& t = table_at(root, "corrections");
+        const double az = t["az_offset_deg"].value_or(0.0) - found.az_offset_deg;
+        const double el = t["el_offset_deg"].value_or(0.0) - found.el_offset_deg;
+        if (auto ok = control::AxisOffsets::make(az, el); !ok) {
+          throw UsageError("the offsets would go out of range: " + ok.error().message);
+        }
+        t.insert_or_assign("az_offset_deg", az);
+        t.insert_or_assign("el_offset_deg", el);
+      },
+      [this, found] {
+        if (const auto now = p_.scanner->found(); now && now->az_offset_deg == found.az_offset_deg &&
+                                                  now->el_offset_deg == found.el_offset_deg) {
+          p_.scanner->applied();  // not a newer scan's result, which finished meanwhile
+        }
+        apply_corrections(p_.store.config().station.corrections);
+        return json::object();
+      },
+      [this, done = std::move(done)](ActResult result) {
+        scan_apply_pending_ = false;
+        done(std::move(result));
+      });
 }
 
 json DaemonConsole::act_target(const json& body, const std::string& source) {

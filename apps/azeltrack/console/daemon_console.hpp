@@ -119,6 +119,7 @@ class DaemonConsole final : public ConsoleModel {
   MoonPlanner planner_;
   Snapshot snapshot_;
   std::vector<std::string> restart_needed_;
+  bool scan_apply_pending_ = false;  ///< a scan's apply is being saved: a second is refused
 };
 
 }  // namespace azt::app

@@ -42,14 +42,17 @@ json status_json(const software::UpdateStatus& s) {
 
 }  // namespace
 
-std::string SoftwareUpdates::request_path() const { return config_.inbox_dir + "/request.deb"; }
+std::string SoftwareUpdates::request_path(const Config& config) {
+  return config.inbox_dir + "/request.deb";
+}
 
-SoftwareUpdates::Look SoftwareUpdates::look() const {
+SoftwareUpdates::Look SoftwareUpdates::look(const Config& config) {
   Look found;
   std::error_code ec;
-  found.pending = enabled() && std::filesystem::exists(request_path(), ec);
-  if (config_.status_file.empty()) return found;
-  const auto text = read_small_file(config_.status_file);
+  found.pending =
+      !config.inbox_dir.empty() && std::filesystem::exists(request_path(config), ec);
+  if (config.status_file.empty()) return found;
+  const auto text = read_small_file(config.status_file);
   if (!text) return found;  // the helper has not run yet
   const auto parsed = software::parse_update_status(*text);
   if (!parsed) {
@@ -60,7 +63,7 @@ SoftwareUpdates::Look SoftwareUpdates::look() const {
   return found;
 }
 
-std::optional<ApiError> SoftwareUpdates::busy(const Look& now) const {
+std::optional<ApiError> SoftwareUpdates::busy(const Look& now, double now_unix_s) {
   if (now.pending) {
     return ApiError(409, "package",
                     "an uploaded package is still waiting for the update helper "
@@ -69,7 +72,7 @@ std::optional<ApiError> SoftwareUpdates::busy(const Look& now) const {
   if (now.helper.is_null()) return std::nullopt;
   const auto phase = now.helper.value("phase", std::string());
   const bool working = phase == "checking" || phase == "installing";
-  const double age_s = unix_s_() - now.helper.value("at_unix_s", 0.0);
+  const double age_s = now_unix_s - now.helper.value("at_unix_s", 0.0);
   if (working && age_s < kStaleWorkS) {
     return ApiError(409, "package", "the update helper is " + phase + " a package now");
   }
@@ -96,7 +99,7 @@ json SoftwareUpdates::to_json(const Look& found) const {
 
 void SoftwareUpdates::status(ActDone done) {
   auto found = std::make_shared<Look>();
-  offload_([this, found] { *found = look(); },
+  offload_([found, config = config_] { *found = look(config); },
            [this, found, done = std::move(done)] {
              done(ActResult{to_json(*found), {}});
            });
@@ -119,12 +122,12 @@ void SoftwareUpdates::receive(std::string package, ActDone done) {
   auto bytes = std::make_shared<std::string>(std::move(package));
   // Hashing and writing megabytes, with an fsync, never on the loop.
   offload_(
-      [this, outcome, bytes] {
-        if ((outcome->error = busy(look()))) return;
+      [outcome, bytes, config = config_, now_unix_s = unix_s_()] {
+        if ((outcome->error = busy(look(config), now_unix_s))) return;
         std::error_code ec;
-        std::filesystem::create_directories(config_.inbox_dir, ec);
+        std::filesystem::create_directories(config.inbox_dir, ec);
         outcome->sha256_hex = sha256_hex(*bytes);
-        if (auto w = linux_os::write_file_atomically(request_path(), *bytes, 0600); !w) {
+        if (auto w = linux_os::write_file_atomically(request_path(config), *bytes, 0600); !w) {
           outcome->error =
               ApiError(500, "package", "cannot store the package: " + w.error().message);
         }

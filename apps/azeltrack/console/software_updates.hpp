@@ -58,10 +58,12 @@ class SoftwareUpdates {
     std::string helper_error;
     bool pending = false;  ///< request.deb waits for the helper
   };
-  [[nodiscard]] Look look() const;  // worker thread
-  [[nodiscard]] std::string request_path() const;
-  /// The refusal for a new upload given what the worker found, or nullopt (worker thread).
-  [[nodiscard]] std::optional<ApiError> busy(const Look& now) const;
+  // The worker's halves are static and get what they read by value: a job may still run while
+  // this object is destroyed at shutdown (issue 27 §5), so it never reaches `this`.
+  [[nodiscard]] static Look look(const Config& config);  // worker thread
+  [[nodiscard]] static std::string request_path(const Config& config);
+  /// The refusal for a new upload given what the worker found at `now_unix_s`, or nullopt.
+  [[nodiscard]] static std::optional<ApiError> busy(const Look& now, double now_unix_s);
   nlohmann::json to_json(const Look& found) const;
 
   Config config_;

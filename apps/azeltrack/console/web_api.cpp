@@ -209,8 +209,9 @@ void WebApi::software_status(const Respond& respond) {
 bool WebApi::is_local_stop(const linux_os::HttpRequest& request) {
   // STOP only stops, and a stop must never wait for a password: from this machine (the touch
   // panel beside the controller, a script on it) it needs no login, as rotctld's `S` on the
-  // loopback needs none. From the LAN it needs one, like every other action.
-  if (request.path != "/api/stop" || request.method != "POST") return false;
+  // loopback needs none. From the LAN it needs one, like every other action, and so does a
+  // request a local reverse proxy (nginx, Caddy) passes on from anywhere (issue 27 §3).
+  if (request.path != "/api/stop" || request.method != "POST" || request.forwarded) return false;
   const std::string& c = request.client;
   return c == "::1" || c.rfind("127.", 0) == 0 || c.rfind("::ffff:127.", 0) == 0;
 }

@@ -13,6 +13,12 @@ namespace azt::app {
 
 namespace asio = boost::asio;
 
+StationDaemon::~StationDaemon() {
+  // Members are destroyed after this body, in reverse order; the workers' jobs finish first.
+  worker_.finish();
+  status_worker_.finish();
+}
+
 int StationDaemon::run() {
   linux_os::install_crash_handlers();
   satellites_.poll_file(unix_now_s());  // at once: the start target may be a satellite

@@ -47,6 +47,11 @@ class StationDaemon {
   /// Wires every part from the configuration; throws UsageError (nothing driven) when a server,
   /// a device or the start target cannot be had.
   StationDaemon(ConfigStore& store, const DaemonOptions& options);
+  /// Finishes and joins both workers before any part is destroyed: a job still queued at a
+  /// SIGTERM can then reach nothing that is gone (issue 27 §5), whatever it captured.
+  ~StationDaemon();
+  StationDaemon(const StationDaemon&) = delete;
+  StationDaemon& operator=(const StationDaemon&) = delete;
   /// Runs until a signal (or --run-for); the exit code (daemon.hpp).
   int run();
 
@@ -104,8 +109,8 @@ class StationDaemon {
   SteadyClock::time_point start_;
   boost::asio::io_context io_;
   /// Password checks, configuration saves, the E-stop latch file: what may block, off the loop.
-  /// Its jobs' work halves touch only what they captured, and their done halves run only on the
-  /// loop, so it may outlive the parts they report to (it is joined after them).
+  /// Its jobs' work halves touch only what they captured (by value), and their done halves run
+  /// only on the loop; ~StationDaemon finishes it before any part is destroyed.
   linux_os::WorkerThread worker_{io_};
   /// chronyc and D-Bus may take seconds: the looks at the clock and the network queue here, not
   /// ahead of a save or a login.

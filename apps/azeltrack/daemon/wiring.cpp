@@ -335,6 +335,10 @@ void StationDaemon::open_servers() {
           return proto::handle_pstrotator_datagram(datagram, service_, client, limits);
         });
     if (!server) throw UsageError("[pstrotator]: " + server.error().message);
+    server.value()->on_oversized([this](std::size_t bytes, const std::string& client) {
+      log_.info(client, client + ": a datagram of " + std::to_string(bytes) +
+                            " bytes is over the limit and was dropped whole", now_s());
+    });
     spdlog::info("PstRotator UDP on {}:{} (replies to port {})", config_.pstrotator.bind,
                  server.value()->port(), config_.pstrotator_reply_port);
     pstrotator_ = std::move(server).value();

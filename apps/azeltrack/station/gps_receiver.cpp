@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "azt/astro/time_scales.hpp"
+#include "azt/gnss/fix_range.hpp"
 
 namespace azt::app {
 namespace {
@@ -40,8 +41,24 @@ GpsReceiver::GpsReceiver(boost::asio::io_context& io, GpsReceiverParts parts)
       io, linux_os::GpsdClientConfig{p_.config.host, p_.config.port, 2.0}, std::move(events));
 }
 
-void GpsReceiver::on_fix(const gnss::GpsFix& fix) {
+gnss::GpsFix GpsReceiver::screened(const gnss::GpsFix& reported) {
+  const auto why = gnss::out_of_range(reported);
+  if (!why) {
+    refusing_ = false;
+    return reported;
+  }
+  ++fixes_refused_;
+  last_fix_refused_ = *why;
+  if (!refusing_) p_.log("gps: a fix off the Earth refused (" + *why + "); no fix until a good one");
+  refusing_ = true;
+  gnss::GpsFix none = reported;
+  none.mode = gnss::FixMode::None;  // shown as no fix; the survey restarts
+  return none;
+}
+
+void GpsReceiver::on_fix(const gnss::GpsFix& reported) {
   const double now = p_.monotonic_s();
+  const gnss::GpsFix fix = screened(reported);
   monitor_.on_fix(now, fix);
   // The survey runs on the receiver's own clock: a fix a second whatever the daemon's load, and
   // a replayed log surveys the same whatever its playback speed. A fix without time breaks it.
@@ -96,6 +113,8 @@ nlohmann::json GpsReceiver::to_json() const {
           {"position_in_use", in_use_.has_value()},
           {"surveyed", in_use_ ? site_json(*in_use_) : nlohmann::json(nullptr)},
           {"jump_refused", refused_ ? site_json(*refused_) : nlohmann::json(nullptr)},
+          {"fixes_refused", fixes_refused_},
+          {"last_fix_refused", last_fix_refused_},
           {"satellites", sats}};
 }
 

@@ -6,6 +6,7 @@
 // (which saves and applies it) unless it is a jump of more than jump_m while the station tracks:
 // that is logged and shown instead.
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -36,11 +37,14 @@ class GpsReceiver {
   GpsReceiver(boost::asio::io_context& io, GpsReceiverParts parts);
 
   /// The console's `gps`: state, lat_deg, lon_deg, alt_m, sats_used, sats_visible, hdop,
-  /// time_utc, position_in_use, satellites, and the last jump refused.
+  /// time_utc, position_in_use, satellites, the last jump refused, and the fixes refused as off
+  /// the Earth (fixes_refused, last_fix_refused).
   [[nodiscard]] nlohmann::json to_json() const;
 
  private:
-  void on_fix(const gnss::GpsFix& fix);
+  void on_fix(const gnss::GpsFix& reported);
+  /// The fix as the station may use it: one whose place is off the Earth becomes no fix.
+  gnss::GpsFix screened(const gnss::GpsFix& reported);
   void offer_survey();
 
   GpsReceiverParts p_;
@@ -50,6 +54,9 @@ class GpsReceiver {
   std::optional<gnss::Site> in_use_;              ///< the site adopted from the GPS this run
   std::optional<gnss::Site> refused_;             ///< the latest jump not adopted while tracking
   bool adopting_ = false;
+  std::uint64_t fixes_refused_ = 0;
+  std::string last_fix_refused_;
+  bool refusing_ = false;  ///< the latest fix was refused: a run of them is logged once
 };
 
 }  // namespace azt::app

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "azt/gnss/fix_range.hpp"
+
 namespace azt::gnss {
 namespace {
 
@@ -23,9 +25,9 @@ double wrap_lon_deg(double lon_deg) {
   return r <= -180.0 ? r + 360.0 : r;
 }
 
-bool finite_3d(const GpsFix& fix) {
-  return fix.mode == FixMode::Fix3d && fix.alt_m && std::isfinite(fix.lat_deg) &&
-         std::isfinite(fix.lon_deg) && std::isfinite(*fix.alt_m);
+/// A 3D fix whose place is on the Earth: out-of-range coordinates are refused, never wrapped.
+bool usable_3d(const GpsFix& fix) {
+  return fix.mode == FixMode::Fix3d && fix.alt_m && !out_of_range(fix);
 }
 
 }  // namespace
@@ -47,7 +49,7 @@ void SiteSurvey::restart() {
 }
 
 void SiteSurvey::on_fix(double now_s, const GpsFix& fix, int sats_used) {
-  const bool good = finite_3d(fix) && sats_used >= settings_.min_sats;
+  const bool good = usable_3d(fix) && sats_used >= settings_.min_sats;
   if (!good || (last_s_ && now_s - *last_s_ > kMaxGapS) || moved_away(fix)) restart();
   if (!good) return;
   if (!first_s_) {

@@ -175,15 +175,16 @@ Result<bool> write_file_atomically(const std::string& path, std::string_view con
 
 Result<bool> publish_file(const std::string& path, std::string_view contents) {
   if (path.empty()) return fail("publish_file: empty path");
-  struct stat old_stat {};
-  const mode_t mode = ::stat(path.c_str(), &old_stat) == 0 ? old_stat.st_mode & 07777 : 0644;
+  // A fixed mode, never the old file's: stat() of a planted symlink would have copied its
+  // target's bits, setuid included (issue 27 §4). open() takes the umask off 0644, and rename()
+  // replaces a link at `path` itself, never its target.
   const std::string temp = path + ".tmp." + std::to_string(::getpid());
   ::unlink(temp.c_str());
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0600);
+  const int fd =
+      ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, kPublishedMode);
   if (fd < 0) return step_error("create temp file", temp, errno);
   FdGuard guard(fd);
   int err = write_all(fd, contents);
-  if (err == 0 && ::fchmod(fd, mode) != 0) err = errno;
   if (const int close_err = guard.close_now(); err == 0) err = close_err;
   if (err == 0 && ::rename(temp.c_str(), path.c_str()) != 0) err = errno;
   if (err != 0) {

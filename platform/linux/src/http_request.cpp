@@ -25,6 +25,16 @@ std::string header(const http::request<http::string_body>& req, http::field f) {
   return it == req.end() ? std::string() : clean(it->value());
 }
 
+/// Any header a reverse proxy (nginx, Caddy, Apache) adds on the way: RFC 7239's Forwarded,
+/// the de-facto X-Forwarded-For/-Host/-Proto, nginx's X-Real-IP, and Via (RFC 9110 §7.6.3).
+bool forwarded(const http::request<http::string_body>& req) {
+  for (const char* name :
+       {"Forwarded", "X-Forwarded-For", "X-Forwarded-Host", "X-Forwarded-Proto", "X-Real-IP"}) {
+    if (req.find(name) != req.end()) return true;
+  }
+  return req.find(http::field::via) != req.end();
+}
+
 }  // namespace
 
 HttpRequest to_http_request(const http::request<http::string_body>& req, const std::string& peer) {
@@ -42,6 +52,7 @@ HttpRequest to_http_request(const http::request<http::string_body>& req, const s
   if (const auto it = req.find("X-CSRF-Token"); it != req.end()) r.csrf = clean(it->value());
   r.client = peer;
   r.websocket = boost::beast::websocket::is_upgrade(req);
+  r.forwarded = forwarded(req);
   return r;
 }
 

@@ -1,5 +1,7 @@
 #include "azt/linux/udp_datagram_server.hpp"
 
+#include <sys/socket.h>
+
 #include "tcp_listen.hpp"
 
 namespace azt::linux_os {
@@ -38,32 +40,38 @@ void UdpDatagramServer::close() {
 }
 
 void UdpDatagramServer::receive() {
-  socket_.async_receive_from(asio::buffer(buffer_), sender_,
+  // MSG_TRUNC: n is the datagram's real length even when it did not fit (Linux, recv(2)).
+  socket_.async_receive_from(asio::buffer(buffer_), sender_, MSG_TRUNC,
                              [this, alive = alive_](boost::system::error_code ec, std::size_t n) {
                                if (!*alive) return;
-                               if (!ec) {
-                                 const std::string client = name_ + " " +
-                                                            sender_.address().to_string() + ":" +
-                                                            std::to_string(sender_.port());
-                                 std::string reply;
-                                 try {
-                                   reply = handler_(std::string_view(buffer_.data(), n), client);
-                                 } catch (const std::exception&) {
-                                   // A fault handling one datagram drops that datagram, never the
-                                   // daemon (issue 12).
-                                   reply.clear();
-                                 }
-                                 if (!reply.empty()) {
-                                   udp::endpoint to = sender_;
-                                   if (reply_port_ != 0) to.port(reply_port_);
-                                   boost::system::error_code send_ec;
-                                   // Datagrams are small and the socket is non-blocking-safe for
-                                   // them; a dropped reply is what UDP means anyway.
-                                   socket_.send_to(asio::buffer(reply), to, 0, send_ec);
-                                 }
-                               }
+                               if (!ec) received(n);
                                receive();
                              });
+}
+
+std::string UdpDatagramServer::client_name() const {
+  return name_ + " " + sender_.address().to_string() + ":" + std::to_string(sender_.port());
+}
+
+void UdpDatagramServer::received(std::size_t real_bytes) {
+  if (real_bytes > buffer_.size()) {
+    if (oversized_) oversized_(real_bytes, client_name());
+    return;
+  }
+  std::string reply;
+  try {
+    reply = handler_(std::string_view(buffer_.data(), real_bytes), client_name());
+  } catch (const std::exception&) {
+    // A fault handling one datagram drops that datagram, never the daemon (issue 12).
+    reply.clear();
+  }
+  if (reply.empty()) return;
+  udp::endpoint to = sender_;
+  if (reply_port_ != 0) to.port(reply_port_);
+  boost::system::error_code send_ec;
+  // Datagrams are small and the socket is non-blocking-safe for them; a dropped reply is what
+  // UDP means anyway.
+  socket_.send_to(asio::buffer(reply), to, 0, send_ec);
 }
 
 }  // namespace azt::linux_os

@@ -9,13 +9,15 @@ namespace azt::linux_os {
 
 WorkerThread::WorkerThread(boost::asio::io_context& io) : io_(io), thread_([this] { run(); }) {}
 
-WorkerThread::~WorkerThread() {
+WorkerThread::~WorkerThread() { finish(); }
+
+void WorkerThread::finish() {
   {
     const std::lock_guard lock(mutex_);
     stopping_ = true;
   }
   wake_.notify_all();
-  thread_.join();
+  if (thread_.joinable()) thread_.join();
 }
 
 void WorkerThread::post(Work work, Done done) {

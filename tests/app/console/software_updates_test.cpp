@@ -8,11 +8,16 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <new>
 #include <string>
+#include <vector>
 
 #include "console/web_api.hpp"
 
@@ -201,6 +206,33 @@ TEST(SoftwareUpdates, WithoutThePackagesUnitThereAreNoUpdates) {
   api.handle(r, [&reply](linux_os::HttpReply a) { reply = std::move(a); });
   EXPECT_EQ(reply.status, 409U) << reply.body;
   EXPECT_EQ(api.body_allowance(r).max_bytes, linux_os::HttpServer::kMaxBodyBytes);
+}
+
+// Issue 27 §5: at a SIGTERM the daemon destroyed the console (and this object) while an upload's
+// job still waited on the worker, whose work half then read the freed object (26 invalid reads
+// under valgrind, and a folder with a garbage name created). The work halves hold what they need
+// by value: here the object is destroyed and its memory overwritten before the queued jobs run,
+// and the package still lands in the inbox. (The done halves, which run only on the loop, are
+// dropped with it, as after the daemon's loop ends.)
+TEST(SoftwareUpdates, QueuedWorkOutlivesTheObjectThatQueuedIt) {
+  Rig rig;
+  std::vector<std::function<void()>> queued;
+  const Offload later = [&queued](const std::function<void()>& work,
+                                  const std::function<void()>& /*done*/) {
+    queued.push_back(work);
+  };
+  alignas(SoftwareUpdates) std::array<unsigned char, sizeof(SoftwareUpdates)> storage{};
+  auto* updates = new (storage.data())
+      SoftwareUpdates({"0.1.0", "amd64", (rig.dir / "inbox").string(), (rig.dir / "status").string()},
+                      later, [] { return 1764241000.0; });
+  const std::string deb = tiny_deb();
+  updates->status([](const ActResult&) {});
+  updates->receive(deb, [](const ActResult&) {});
+  updates->~SoftwareUpdates();
+  std::memset(storage.data(), 0xA5, storage.size());
+  ASSERT_EQ(queued.size(), 2U);
+  for (const auto& work : queued) work();
+  EXPECT_EQ(read_bytes(rig.request_deb()), deb);
 }
 
 }  // namespace

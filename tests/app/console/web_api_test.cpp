@@ -151,6 +151,22 @@ TEST(WebApi, StopFromThisMachineNeedsNoLoginAndFromTheLanDoes) {
   EXPECT_EQ(rig.model.actions.size(), 3U);
 }
 
+// Issue 27 §3: behind nginx or Caddy on the Pi every request comes from 127.0.0.1; one that a
+// proxy passed on is from wherever its first sender is, and a STOP from there needs the login.
+TEST(WebApi, StopThroughALocalProxyNeedsTheLogin) {
+  Rig rig;
+  linux_os::HttpRequest r = Rig::request("POST", "/api/stop");
+  r.client = "127.0.0.1";
+  r.forwarded = true;
+  EXPECT_EQ(rig.handle(r).status, 401U);
+  EXPECT_TRUE(rig.model.actions.empty());
+  const auto [cookie, csrf] = rig.login();
+  r.cookie = cookie;
+  r.csrf = csrf;
+  EXPECT_EQ(rig.handle(r).status, 200U) << "with the login it stops";
+  EXPECT_EQ(rig.model.actions.size(), 1U);
+}
+
 TEST(WebApi, SessionNeedsTheCsrfTokenAndTheSameOrigin) {
   Rig rig;
   const auto [cookie, csrf] = rig.login();

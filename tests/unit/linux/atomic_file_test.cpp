@@ -284,12 +284,40 @@ TEST_F(AtomicFileTest, PublishReplacesWholeWithoutABackup) {
   struct stat st {};
   ASSERT_EQ(::stat(path.c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0644U);
-  ASSERT_EQ(::chmod(path.c_str(), 0640), 0);
+  ASSERT_EQ(::chmod(path.c_str(), 0600), 0);
   ASSERT_TRUE(publish_file(path, "second\n"));
   EXPECT_EQ(read_file(path).value(), "second\n");
   ASSERT_EQ(::stat(path.c_str(), &st), 0);
-  EXPECT_EQ(st.st_mode & 0777, 0640U) << "the operator's mode is kept";
+  EXPECT_EQ(st.st_mode & 07777, 0644U) << "a fixed mode, never the old file's";
   EXPECT_EQ(entries(), std::vector<std::string>{"azel.dat"}) << "no .bak, no temp";
+}
+
+// Issue 27 §4: a symlink planted at the export path, pointing to a setuid file, had given the
+// new azel.dat mode 4755. The link itself is replaced; its target keeps its bits and contents.
+TEST_F(AtomicFileTest, PublishOverASymlinkNeitherCopiesNorTouchesItsTarget) {
+  const std::string target = file("setuid-program");
+  ASSERT_TRUE(publish_file(target, "#!/bin/sh\n"));
+  ASSERT_EQ(::chmod(target.c_str(), 04755), 0);
+  const std::string path = file("azel.dat");
+  ASSERT_EQ(::symlink(target.c_str(), path.c_str()), 0);
+  ASSERT_TRUE(publish_file(path, "AZ 10.0 EL 20.0\n"));
+  struct stat st {};
+  ASSERT_EQ(::lstat(path.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISREG(st.st_mode)) << "the link was replaced by a file";
+  EXPECT_EQ(st.st_mode & 07777, 0644U);
+  ASSERT_EQ(::stat(target.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 07777, 04755U);
+  EXPECT_EQ(read_file(target).value(), "#!/bin/sh\n");
+}
+
+TEST_F(AtomicFileTest, PublishedModeFollowsTheUmask) {
+  const mode_t old_mask = ::umask(027);
+  const auto written = publish_file(file("azel.dat"), "x\n");
+  ::umask(old_mask);
+  ASSERT_TRUE(written);
+  struct stat st {};
+  ASSERT_EQ(::stat(file("azel.dat").c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 07777, 0640U);
 }
 
 TEST_F(AtomicFileTest, PublishIntoAMissingFolderFailsAndLeavesNothing) {

@@ -29,8 +29,10 @@ Result<bool> write_file_atomically(const std::string& path, std::string_view con
 /// Replaces `path` with `contents` atomically for its readers (a temp file renamed over it), but
 /// neither fsynced nor backed up: for a file rewritten every second for other programs to poll
 /// (azel.dat), where a power cut may lose the last second but must never show a torn file, and
-/// an fsync a second would wear an SD card. The file is 0644 (or keeps its existing bits).
+/// an fsync a second would wear an SD card. The file is always kPublishedMode less the umask:
+/// never the bits of what was at `path` before, nor of a link's target.
 Result<bool> publish_file(const std::string& path, std::string_view contents);
+inline constexpr mode_t kPublishedMode = 0644;
 
 /// Removes the temp files that writes to `path` left behind when their process was killed
 /// (`path.tmp.PID`, `path.bak.tmp.PID` of a PID that no longer runs); returns how many.

@@ -38,6 +38,9 @@ struct HttpRequest {
   std::string authorization;  ///< the whole Authorization header
   std::string client;         ///< the peer's address (no port): the login rate limit's key
   bool websocket = false;     ///< an upgrade request for /ws
+  /// It carries a proxy's header (Forwarded, X-Forwarded-*, X-Real-IP, Via): whoever sent it
+  /// first is elsewhere, whatever `client` says, so it is never "from this machine".
+  bool forwarded = false;
 };
 
 struct HttpReply {

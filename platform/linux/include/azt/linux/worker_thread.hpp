@@ -22,8 +22,7 @@ class WorkerThread {
   using Done = std::function<void()>;
 
   explicit WorkerThread(boost::asio::io_context& io);
-  /// Finishes every job asked for (a queued E-stop latch write must reach the disk), then joins.
-  /// The `done` halves of jobs finished after the loop ended never run.
+  /// finish(), if it has not been called.
   ~WorkerThread();
   WorkerThread(const WorkerThread&) = delete;
   WorkerThread& operator=(const WorkerThread&) = delete;
@@ -31,7 +30,12 @@ class WorkerThread {
   /// Queues a job. `work` must not touch loop state; it hands its outcome to `done` through what
   /// both capture. An exception escaping `work` is contained and `done` still runs (finding no
   /// outcome), so a failed job is reported, never lost.
-  void post(Work work, Done done);  ///< ignored once the destructor has begun
+  void post(Work work, Done done);  ///< ignored once finish() has begun
+  /// Stops taking jobs, finishes every job asked for (a queued E-stop latch write must reach the
+  /// disk), then joins; later calls return at once. An owner calls it before destroying anything
+  /// a job may reach (issue 27 §5), as StationDaemon's destructor does first of all. The `done`
+  /// halves of jobs finished after the loop ended never run.
+  void finish();
   /// Jobs queued or running (for bounds and tests).
   [[nodiscard]] std::size_t pending() const;
 
