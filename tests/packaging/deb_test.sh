@@ -15,6 +15,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 source "$src/tests/cli/lib.sh"
 
+# The project's release key (packaging/keys/azeltrack-release.asc), whose signed updates the
+# update helper installs (issue 27 §1).
+release_key=5A33A3747E83ECC0CD2795FE2124FFC9F62C5588
 dpkg-deb -c "$deb" | awk '{ print $6 }' | sed 's|^\./|/|' >"$tmp/files"
 for f in /usr/bin/azeltrack /lib/systemd/system/azeltrack.service \
   /usr/lib/sysusers.d/azeltrack.conf /usr/lib/tmpfiles.d/azeltrack.conf \
@@ -23,7 +26,10 @@ for f in /usr/bin/azeltrack /lib/systemd/system/azeltrack.service \
   /usr/share/azeltrack/firmware/encoder-hub.elf /usr/share/man/man1/azeltrack.1.gz \
   /usr/share/doc/azeltrack/README.md /usr/share/doc/azeltrack/copyright \
   /usr/share/doc/azeltrack/examples/station.toml /usr/libexec/azeltrack/azeltrack-update \
-  /lib/systemd/system/azeltrack-update.path /lib/systemd/system/azeltrack-update.service; do
+  /lib/systemd/system/azeltrack-update.path /lib/systemd/system/azeltrack-update.service \
+  /usr/sbin/azeltrack-update-keys /usr/share/man/man8/azeltrack-update-keys.8.gz \
+  "/etc/azeltrack/update-keys/policies/$release_key/azeltrack.pol" \
+  "/etc/azeltrack/update-keys/keyrings/$release_key/azeltrack.gpg"; do
   grep -qx "$f" "$tmp/files" && ok || bad "the package lacks $f"
 done
 # Every manual under docs/ is in the package, uncompressed (the units' Documentation= links).
@@ -33,12 +39,15 @@ for md in "$src"/docs/*.md; do
 done
 # Nothing else: no test binaries, benchmarks or fuzzers, no hub-sim.
 extra=$(grep -Ev '/$' "$tmp/files" | grep -E '^/usr/(bin|sbin|lib)/' |
-  grep -Evx '/usr/bin/azeltrack|/usr/lib/(sysusers|tmpfiles)\.d/azeltrack\.conf')
+  grep -Evx '/usr/(bin/azeltrack|sbin/azeltrack-update-keys)|/usr/lib/(sysusers|tmpfiles)\.d/azeltrack\.conf')
 [ -z "$extra" ] && ok || bad "unexpected programs or libraries: $extra"
 grep -q '^/var/lib' "$tmp/files" && bad "the package ships files under /var/lib" || ok
 
 dpkg-deb -e "$deb" "$tmp/control"
-[ "$(cat "$tmp/control/conffiles")" = "/etc/chrony/conf.d/azeltrack.conf" ] && ok ||
+expected_conffiles="/etc/azeltrack/update-keys/keyrings/$release_key/azeltrack.gpg
+/etc/azeltrack/update-keys/policies/$release_key/azeltrack.pol
+/etc/chrony/conf.d/azeltrack.conf"
+[ "$(sort "$tmp/control/conffiles")" = "$expected_conffiles" ] && ok ||
   bad "conffiles: $(cat "$tmp/control/conffiles")"
 grep -q 'deb-systemd-invoke $_dh_action' "$tmp/control/postinst" && ok ||
   bad "the postinst does not (re)start the unit"

@@ -185,6 +185,7 @@ function renderLast() {
   $('sw-last').replaceChildren(
     row('Result', working(hp) && stale(hp) ? `${word}, then no word: abandoned` : word, tone),
     row('Versions', versions(hp)),
+    row('Signed by', hp.signer ? String(hp.signer) : '—'),
     row('When', when(hp.at_unix_s)),
     row('Message', hp.message ? String(hp.message) : '—'),
     h('div', { title: sha }, h('span', { class: 'lbl', text: 'Package' }), h('code', { text: sha ? `${sha.slice(0, 16)}…` : '—' })));
@@ -195,7 +196,7 @@ function popup(p) {
   const hp = (sw && sw.helper) || {};
   const running = sw ? `Version ${sw.version} is running.` : '';
   const says = {
-    installed: ['Update installed', `The software was updated from ${hp.from || '?'} to ${hp.to || '?'}. The configuration parameters are unchanged.`],
+    installed: ['Update installed', `The software was updated from ${hp.from || '?'} to ${hp.to || '?'}, signed by ${hp.signer || '?'}. The configuration parameters are unchanged.`],
     refused: ['Update refused', `The update helper refused the package: ${stop(hp.message) || 'no reason given'}. Nothing was installed. ${running}`],
     failed: ['Update failed', `The update failed: ${stop(hp.message) || 'no reason given'}. ${running}`],
   }[p.outcome];

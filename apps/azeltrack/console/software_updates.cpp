@@ -37,6 +37,7 @@ json status_json(const software::UpdateStatus& s) {
           {"from", s.from_version},
           {"to", s.to_version},
           {"sha256", s.sha256_hex},
+          {"signer", s.signer},
           {"at_unix_s", s.at_unix_s}};
 }
 

@@ -80,6 +80,7 @@ bool set_field(UpdateStatus& s, std::string_view key, std::string_view value, bo
     return is_version(value);
   }
   if (key == "message") s.message = std::string(value);
+  if (key == "signer") s.signer = std::string(value);
   return true;  // the message is any text; unknown keys are a newer helper's
 }
 

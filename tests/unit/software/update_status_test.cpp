@@ -17,7 +17,7 @@ TEST(UpdateStatus, AnInstallingReportIsRead) {
   const auto r = parse_update_status(
       "phase=installing\npercent=40\nmessage=Unpacking azeltrack (0.1.1) over (0.1.0)\n"
       "from=0.1.0\nto=0.1.1\nsha256=" +
-      kSha + "\nat=1764241234\n");
+      kSha + "\nsigner=azeltrack release key, FC4892F01AAC91A1\nat=1764241234\n");
   ASSERT_TRUE(r) << r.error().message;
   EXPECT_EQ(r->phase, UpdatePhase::Installing);
   EXPECT_EQ(r->percent, 40);
@@ -25,6 +25,7 @@ TEST(UpdateStatus, AnInstallingReportIsRead) {
   EXPECT_EQ(r->from_version, "0.1.0");
   EXPECT_EQ(r->to_version, "0.1.1");
   EXPECT_EQ(r->sha256_hex, kSha);
+  EXPECT_EQ(r->signer, "azeltrack release key, FC4892F01AAC91A1");
   EXPECT_EQ(r->at_unix_s, 1764241234);
   EXPECT_FALSE(finished(r->phase));
 }

@@ -9,6 +9,7 @@
 //   from=0.1.0
 //   to=0.1.1
 //   sha256=<the package's SHA-256, 64 hex digits>
+//   signer=<who signed it, as the trusted key names itself, and the key's fingerprint>
 //   at=<Unix seconds when this step began>
 
 #include <cstdint>
@@ -34,6 +35,8 @@ struct UpdateStatus {
   std::string from_version;  ///< what was installed when the helper began
   std::string to_version;    ///< the package's version ("" until read from it)
   std::string sha256_hex;    ///< of the package the helper copied: ties it to an upload
+  /// Whose trusted key signed it ("" until the signature is verified): issue 27 §1.
+  std::string signer;
   std::int64_t at_unix_s = 0;
 };
 
