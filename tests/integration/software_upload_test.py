@@ -6,6 +6,8 @@ package's unit starts it (--update-inbox, --update-status): what crosses the HTT
 - an upload from a client without a login is refused (401) from its head, and one that sends
   its body anyway still reads that answer; a logged-in one announcing more than 64 MiB is
   refused (413) from its head; nothing reaches the inbox;
+- one upload at a time, decided from the head: a second one while the first is still arriving
+  is refused (409) before its body is read (issue 27 §10);
 - while a 48 MiB package is received, hashed and written (fsynced) the event loop keeps
   answering: the slowest GET /api/state during the upload is measured and must stay under 250 ms;
 - the helper's report (written here as the helper writes it) is shown, and a bad report is an
@@ -116,6 +118,19 @@ try:
     check(" 413 " in raw_head(head + f"Authorization: Bearer {TOKEN}\r\n"
                                      "Content-Length: 70000000\r\n\r\n"),
           "over 64 MiB with a login: 413 from the head")
+    # Issue 27 §10: one upload at a time, decided from the head. While one connection is still
+    # sending a large body, a second upload is answered 409 before its body is read; once the
+    # first connection is gone, the slot is free again.
+    first = socket.create_connection(("127.0.0.1", PORT), timeout=5)
+    first.sendall((head + f"Authorization: Bearer {TOKEN}\r\nContent-Length: 50000000\r\n\r\n"
+                   ).encode() + b"!<arch>\n" + b"x" * 65536)
+    check(wait_until(lambda: " 409 " in raw_head(head + f"Authorization: Bearer {TOKEN}\r\n"
+                                                 "Content-Length: 50000000\r\n\r\n"), 5),
+          "a second upload while the first is being received: 409 from its head")
+    first.close()
+    check(wait_until(lambda: " 400 " in raw_head(head + f"Authorization: Bearer {TOKEN}\r\n"
+                                                 "Content-Length: 10\r\n\r\n!<arch>\nxx"), 5),
+          "the slot is free once the first connection has gone (a small upload is read: 400)")
     status, reply = http_upload(BASE, "/api/software/update", b"!<arch>\n" + b"x" * 100,
                                 token=TOKEN)
     check(status == 400 and "not a Debian package" in reply["error"], f"a broken archive: {reply}")

@@ -183,15 +183,20 @@ std::optional<linux_os::HttpReply> WebApi::authorize(const linux_os::HttpRequest
   return std::nullopt;
 }
 
-linux_os::HttpServer::BodyAllowance WebApi::body_allowance(
-    const linux_os::HttpRequest& head) const {
-  linux_os::HttpServer::BodyAllowance allowance{linux_os::HttpServer::kMaxBodyBytes, {}};
+linux_os::HttpServer::BodyAllowance WebApi::body_allowance(const linux_os::HttpRequest& head) {
+  linux_os::HttpServer::BodyAllowance allowance{linux_os::HttpServer::kMaxBodyBytes, {}, {}};
   const bool upload = software_ != nullptr && software_->enabled() && head.method == "POST" &&
                       head.path == "/api/software/update";
   if (!upload) return allowance;
   if (!has_session(head)) {
     allowance.refusal = error_reply(401, "login required to upload a package");
+  } else if (!upload_slot_.expired()) {
+    allowance.refusal =
+        error_reply(409, "another package is being uploaded; try again when it is done");
   } else {
+    auto slot = std::make_shared<const int>(0);
+    upload_slot_ = slot;
+    allowance.hold = std::move(slot);
     allowance.max_bytes = SoftwareUpdates::kMaxPackageBytes;
   }
   return allowance;

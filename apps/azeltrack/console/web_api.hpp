@@ -4,6 +4,7 @@
 // implements; this file decides only who may ask and how the answer is shaped.
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,9 +45,11 @@ class WebApi {
   void serve_software(SoftwareUpdates& software) { software_ = &software; }
   /// What body the request whose head this is may send: a package upload from a logged-in
   /// console may be large; one without a login is answered 401 from its head; everything else
-  /// is small (HttpServer::kMaxBodyBytes).
+  /// is small (HttpServer::kMaxBodyBytes). One upload at a time, decided here from the head:
+  /// while another is being received or stored, the next is answered 409 before its body is read
+  /// (issue 27 §10: eight 60 MiB uploads had all been read into memory first).
   [[nodiscard]] linux_os::HttpServer::BodyAllowance body_allowance(
-      const linux_os::HttpRequest& head) const;
+      const linux_os::HttpRequest& head);
   /// The WebSocket upgrade: nullopt accepts it.
   std::optional<linux_os::HttpReply> check_upgrade(const linux_os::HttpRequest& request) const;
   /// Whether the request carries a valid session cookie or bearer token (no CSRF check): a
@@ -72,6 +75,8 @@ class WebApi {
   Clock now_;
   Offload offload_;
   SoftwareUpdates* software_ = nullptr;
+  /// The upload being received or stored: its connection holds the token until it is answered.
+  std::weak_ptr<const void> upload_slot_;
 };
 
 /// The cookie's value named `name` in a Cookie header, "" when absent.

@@ -223,6 +223,7 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
       refuse_and_drain(*allowance.refusal, head.version());
       return;
     }
+    hold_ = std::move(allowance.hold);
     const std::size_t limit = allowance.max_bytes;
     const auto length = parser_->content_length();
     if (length && *length > limit) {
@@ -367,6 +368,7 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
   }
 
   void reply(const HttpReply& reply, unsigned version, bool keep_alive) {
+    hold_.reset();  // answered: the handler's slot is free for the next request
     auto res = std::make_shared<http::response<http::string_body>>(
         to_response(reply, version, keep_alive));
     http::async_write(
@@ -384,6 +386,7 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
   std::shared_ptr<HttpServer::Shared> shared_;
   beast::flat_buffer buffer_;
   std::optional<http::request_parser<http::string_body>> parser_;
+  std::shared_ptr<const void> hold_;  ///< the body allowance's token, until answered
 };
 
 }  // namespace

@@ -184,6 +184,27 @@ TEST(SoftwareUpdates, OnlyALoggedInUploadMayBeLarge) {
   }
 }
 
+// Issue 27 §10: eight concurrent 60 MiB uploads were all read into memory (15 → 496 MiB RSS)
+// before seven were refused. The second is refused from its head while the first holds the slot.
+TEST(SoftwareUpdates, OneUploadAtATimeIsDecidedFromTheHead) {
+  Rig rig;
+  auto first = rig.api.body_allowance(rig.request("POST", "/api/software/update"));
+  ASSERT_FALSE(first.refusal);
+  ASSERT_TRUE(first.hold) << "the connection keeps the slot until it is answered";
+  for (int i = 0; i < 7; ++i) {
+    const auto next = rig.api.body_allowance(rig.request("POST", "/api/software/update"));
+    ASSERT_TRUE(next.refusal) << i;
+    EXPECT_EQ(next.refusal->status, 409U);
+    EXPECT_EQ(next.max_bytes, linux_os::HttpServer::kMaxBodyBytes) << "no large body allowed";
+  }
+  // Small requests are never held up by an upload.
+  EXPECT_FALSE(rig.api.body_allowance(rig.request("POST", "/api/target")).refusal);
+  first.hold.reset();  // answered, or its connection closed
+  const auto after = rig.api.body_allowance(rig.request("POST", "/api/software/update"));
+  EXPECT_FALSE(after.refusal);
+  EXPECT_EQ(after.max_bytes, SoftwareUpdates::kMaxPackageBytes);
+}
+
 TEST(SoftwareUpdates, WithoutThePackagesUnitThereAreNoUpdates) {
   NoModel model;
   WebAuth auth{WebAuth::Config{"", sha256_hex("t")}};

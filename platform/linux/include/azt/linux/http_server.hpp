@@ -66,6 +66,10 @@ class HttpServer {
   struct BodyAllowance {
     std::size_t max_bytes = kMaxBodyBytes;
     std::optional<HttpReply> refusal;
+    /// Kept by the connection until the request is answered or the connection closes: a
+    /// handler's token for "one at a time" decided from the head (a 60 MiB upload's body is
+    /// read only while it holds the one slot; issue 27 §10).
+    std::shared_ptr<const void> hold;
   };
   /// Decides the allowance from the head alone (HttpRequest::body is empty: not read yet).
   using BodyLimit = std::function<BodyAllowance(const HttpRequest&)>;
