@@ -24,11 +24,11 @@ struct Received {
 class UdpServerTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    auto server = UdpDatagramServer::open(
-        io_, "test", "127.0.0.1", 0, 0, [this](std::string_view datagram, const std::string&) {
-          got_.datagrams.emplace_back(datagram);
-          return std::string{};
-        });
+    auto server = UdpDatagramServer::open(io_, "test", "127.0.0.1", 0, 0,
+                                          [this](std::string_view datagram, const std::string&) {
+                                            got_.datagrams.emplace_back(datagram);
+                                            return std::string{};
+                                          });
     ASSERT_TRUE(server) << server.error().message;
     server_ = std::move(server).value();
     server_->on_oversized(

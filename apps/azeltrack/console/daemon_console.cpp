@@ -514,7 +514,8 @@ void DaemonConsole::act_scan_apply(const json& /*body*/, ActDone done) {
         t.insert_or_assign("el_offset_deg", el);
       },
       [this, found] {
-        if (const auto now = p_.scanner->found(); now && now->az_offset_deg == found.az_offset_deg &&
+        if (const auto now = p_.scanner->found(); now &&
+                                                  now->az_offset_deg == found.az_offset_deg &&
                                                   now->el_offset_deg == found.el_offset_deg) {
           p_.scanner->applied();  // not a newer scan's result, which finished meanwhile
         }

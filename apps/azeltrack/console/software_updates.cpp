@@ -50,8 +50,7 @@ std::string SoftwareUpdates::request_path(const Config& config) {
 SoftwareUpdates::Look SoftwareUpdates::look(const Config& config) {
   Look found;
   std::error_code ec;
-  found.pending =
-      !config.inbox_dir.empty() && std::filesystem::exists(request_path(config), ec);
+  found.pending = !config.inbox_dir.empty() && std::filesystem::exists(request_path(config), ec);
   if (config.status_file.empty()) return found;
   const auto text = read_small_file(config.status_file);
   if (!text) return found;  // the helper has not run yet

@@ -336,8 +336,10 @@ void StationDaemon::open_servers() {
         });
     if (!server) throw UsageError("[pstrotator]: " + server.error().message);
     server.value()->on_oversized([this](std::size_t bytes, const std::string& client) {
-      log_.info(client, client + ": a datagram of " + std::to_string(bytes) +
-                            " bytes is over the limit and was dropped whole", now_s());
+      log_.info(client,
+                client + ": a datagram of " + std::to_string(bytes) +
+                    " bytes is over the limit and was dropped whole",
+                now_s());
     });
     spdlog::info("PstRotator UDP on {}:{} (replies to port {})", config_.pstrotator.bind,
                  server.value()->port(), config_.pstrotator_reply_port);

@@ -49,7 +49,8 @@ gnss::GpsFix GpsReceiver::screened(const gnss::GpsFix& reported) {
   }
   ++fixes_refused_;
   last_fix_refused_ = *why;
-  if (!refusing_) p_.log("gps: a fix off the Earth refused (" + *why + "); no fix until a good one");
+  if (!refusing_)
+    p_.log("gps: a fix off the Earth refused (" + *why + "); no fix until a good one");
   refusing_ = true;
   gnss::GpsFix none = reported;
   none.mode = gnss::FixMode::None;  // shown as no fix; the survey restarts

@@ -11,8 +11,8 @@
 #include <array>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <memory>
 #include <new>
@@ -243,9 +243,9 @@ TEST(SoftwareUpdates, QueuedWorkOutlivesTheObjectThatQueuedIt) {
     queued.push_back(work);
   };
   alignas(SoftwareUpdates) std::array<unsigned char, sizeof(SoftwareUpdates)> storage{};
-  auto* updates = new (storage.data())
-      SoftwareUpdates({"0.1.0", "amd64", (rig.dir / "inbox").string(), (rig.dir / "status").string()},
-                      later, [] { return 1764241000.0; });
+  auto* updates = new (storage.data()) SoftwareUpdates(
+      {"0.1.0", "amd64", (rig.dir / "inbox").string(), (rig.dir / "status").string()}, later,
+      [] { return 1764241000.0; });
   const std::string deb = tiny_deb();
   updates->status([](const ActResult&) {});
   updates->receive(deb, [](const ActResult&) {});

@@ -26,8 +26,8 @@ class SiteSurvey {
 
   /// Each TPV at `now_s` (the caller's monotonic clock, in seconds), with the SKY's satellites
   /// used at that moment. A 3D fix (with a place and altitude on the Earth: fix_range.hpp) from
-  /// at least min_sats satellites joins the running average; anything else (2D, no fix, too few satellites)
-  /// restarts the survey, as does more than 5 s between good fixes: the fix must hold.
+  /// at least min_sats satellites joins the running average; anything else (2D, no fix, too few
+  /// satellites) restarts the survey, as does more than 5 s between good fixes: the fix must hold.
   void on_fix(double now_s, const GpsFix& fix, int sats_used);
   /// The mean of the fixes since the survey (re)started, once the 3D fix has held for hold_s
   /// (from the run's first fix to its latest); nullopt before. Longitudes are averaged across
