@@ -27,6 +27,9 @@ if not VALGRIND:
     print("shutdown_memcheck: valgrind is not installed (scripts/install-deps --test)")
     sys.exit(77)
 BIN = os.path.realpath(sys.argv[1])
+if "libasan" in subprocess.run(["ldd", BIN], capture_output=True, text=True).stdout:
+    print("shutdown_memcheck: an AddressSanitizer build; memcheck cannot run it (ASan checks it)")
+    sys.exit(77)
 ROUNDS = int(sys.argv[2]) if len(sys.argv) > 2 else 3
 MIB = 16  # hashed and written on the worker: seconds under memcheck, so SIGTERM finds it busy
 check = Checks()
