@@ -20,7 +20,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "integration"))
-from daemon_harness import free_port, http_json, station_toml, wait_until  # noqa: E402
+from daemon_harness import (free_port, http_json, station_toml, upload_test_deb,  # noqa: E402
+                            wait_until)
 
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
 UPLOADS = int(sys.argv[2]) if len(sys.argv) > 2 else 8
@@ -34,20 +35,6 @@ BASE = f"http://127.0.0.1:{PORT}"
 def kib(pid, field):
     with open(f"/proc/{pid}/status", encoding="ascii") as f:
         return int(re.search(rf"^{field}:\s+(\d+) kB", f.read(), re.M).group(1))
-
-
-def package(mib):
-    root = os.path.join(TMP, "pkg")
-    os.makedirs(f"{root}/DEBIAN")
-    os.makedirs(f"{root}/usr/share/azeltrack-bench")
-    with open(f"{root}/DEBIAN/control", "w", encoding="utf-8") as f:
-        f.write("Package: azeltrack\nVersion: 0.1.0+9\nArchitecture: all\n"
-                "Maintainer: bench <bench@example.org>\nDescription: upload race\n")
-    with open(f"{root}/usr/share/azeltrack-bench/filler", "wb") as f:
-        f.write(os.urandom(mib * 2**20))
-    subprocess.run(["dpkg-deb", "-Znone", "--root-owner-group", "--build", root, f"{root}.deb"],
-                   check=True, capture_output=True)
-    return f"{root}.deb"
 
 
 def upload(path, token, out):
@@ -68,7 +55,7 @@ def main():
         f.write(station_toml(PORT))
     token = subprocess.run([BIN, "web", "token", "--config", config], check=True,
                            capture_output=True, text=True).stdout.strip()
-    deb = package(MIB)
+    deb = upload_test_deb(TMP, MIB * 2**20)
     daemon = subprocess.Popen([BIN, "serve", "--config", config, "--update-inbox",
                                os.path.join(TMP, "inbox"), "--update-status",
                                os.path.join(TMP, "status")], stderr=subprocess.PIPE, text=True)

@@ -2,7 +2,9 @@
 API with a bearer token, waiting for a condition, and a rotctld conversation."""
 import http.client
 import json
+import os
 import socket
+import subprocess
 import sys
 import time
 import urllib.error
@@ -151,3 +153,20 @@ def remove_gpsd_shm(port):
     0x4770 followed by the port in hex, gpsd's GPSD_SHM_KEY scheme for test instances)."""
     import subprocess  # pylint: disable=import-outside-toplevel
     subprocess.run(["ipcrm", "-M", f"0x4770{port:04x}"], capture_output=True, check=False)
+
+
+def upload_test_deb(folder, filler_bytes):
+    """A real package named azeltrack (dpkg-deb, uncompressed) holding `filler_bytes` of random
+    data, built in a new folder under `folder`, for the Software page's upload tests and
+    benchmark; its path."""
+    root = os.path.join(folder, f"pkg-{filler_bytes}")
+    os.makedirs(f"{root}/DEBIAN")
+    os.makedirs(f"{root}/usr/share/azeltrack-test")
+    with open(f"{root}/DEBIAN/control", "w", encoding="utf-8") as f:
+        f.write("Package: azeltrack\nVersion: 0.1.0+9\nArchitecture: all\n"
+                "Maintainer: test <test@example.org>\nDescription: upload test\n")
+    with open(f"{root}/usr/share/azeltrack-test/filler", "wb") as f:
+        f.write(os.urandom(filler_bytes))
+    subprocess.run(["dpkg-deb", "-Znone", "--root-owner-group", "--build", root, f"{root}.deb"],
+                   check=True, capture_output=True)
+    return f"{root}.deb"

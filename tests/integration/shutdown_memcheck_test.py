@@ -5,11 +5,11 @@ Software-page looks, then SIGTERM at 1.5, 3 and 4.5 s. The issue's report: memch
 invalid reads in the worker's jobs on memory the console's destructor had freed, and a folder
 with a garbage name appeared in the daemon's working directory. (This bounded version did not
 catch that on the old code in three tries: its timing is the machine's. The deterministic
-regression test is SoftwareUpdates.QueuedWorkOutlivesTheObjectThatQueuedIt.) Now the daemon finishes its workers before destroying any part: no memcheck
-error (exit code 0, not valgrind's 99), nothing new in its working directory, and the upload
-either stored whole or not at all. Three rounds, SIGTERM at a different moment of each.
-The bounded version in the test command; `scripts/test-memcheck` runs the integration suite's
-shutdown paths and the asan-ubsan build at length.
+regression test is SoftwareUpdates.QueuedWorkOutlivesTheObjectThatQueuedIt.) Now the daemon
+finishes its workers before destroying any part: no memcheck error (exit code 0, not valgrind's
+99), nothing new in its working directory, and the upload either stored whole or not at all.
+Three rounds, SIGTERM at a different moment of each. The bounded version in the test command;
+`scripts/test-memcheck` runs more rounds, and the integration suite against the ASan program.
 Usage: shutdown_memcheck_test.py AZELTRACK [ROUNDS]   (skipped, 77, without valgrind)"""
 import os
 import shutil
@@ -20,7 +20,8 @@ import tempfile
 import threading
 import time
 
-from daemon_harness import Checks, free_port, http_json, station_toml, wait_until
+from daemon_harness import (Checks, free_port, http_json, station_toml, upload_test_deb,
+                            wait_until)
 
 VALGRIND = shutil.which("valgrind")
 if not VALGRIND:
@@ -33,20 +34,6 @@ if "libasan" in subprocess.run(["ldd", BIN], capture_output=True, text=True).std
 ROUNDS = int(sys.argv[2]) if len(sys.argv) > 2 else 3
 MIB = 16  # hashed and written on the worker: seconds under memcheck, so SIGTERM finds it busy
 check = Checks()
-
-
-def package(tmp, mib):
-    root = os.path.join(tmp, "pkg")
-    os.makedirs(f"{root}/DEBIAN")
-    os.makedirs(f"{root}/usr/share/azeltrack-test")
-    with open(f"{root}/DEBIAN/control", "w", encoding="utf-8") as f:
-        f.write("Package: azeltrack\nVersion: 0.1.0+9\nArchitecture: all\n"
-                "Maintainer: test <test@example.org>\nDescription: shutdown test\n")
-    with open(f"{root}/usr/share/azeltrack-test/filler", "wb") as f:
-        f.write(os.urandom(mib * 2**20))
-    subprocess.run(["dpkg-deb", "-Znone", "--root-owner-group", "--build", root, f"{root}.deb"],
-                   check=True, capture_output=True)
-    return f"{root}.deb"
 
 
 def one_round(n, delay_s):
@@ -62,7 +49,7 @@ def one_round(n, delay_s):
                            capture_output=True, text=True).stdout.strip()
     subprocess.run([BIN, "web", "password", "--config", config], input=b"a-long-password\n",
                    check=True, capture_output=True)
-    deb = package(tmp, MIB)
+    deb = upload_test_deb(tmp, MIB * 2**20)
     log_path = os.path.join(tmp, "memcheck.log")
     daemon = subprocess.Popen(
         [VALGRIND, "--tool=memcheck", "--error-exitcode=99", "--leak-check=no",

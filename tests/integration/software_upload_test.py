@@ -23,7 +23,8 @@ import tempfile
 import threading
 import time
 
-from daemon_harness import Checks, free_port, http_json, http_upload, station_toml, wait_until
+from daemon_harness import (Checks, free_port, http_json, http_upload, station_toml,
+                            upload_test_deb, wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-software-")
@@ -36,20 +37,10 @@ check = Checks()
 
 
 def build_deb(filler_bytes):
-    """A real package (dpkg-deb) with `filler_bytes` of incompressible data inside."""
-    root = tempfile.mkdtemp(dir=TMP)
-    os.makedirs(f"{root}/DEBIAN")
-    os.makedirs(f"{root}/usr/share/azeltrack-test")
-    with open(f"{root}/DEBIAN/control", "w", encoding="utf-8") as f:
-        f.write("Package: azeltrack\nVersion: 0.1.0+9\nArchitecture: all\n"
-                "Maintainer: test <test@example.org>\nDescription: upload test\n")
-    with open(f"{root}/usr/share/azeltrack-test/filler", "wb") as f:
-        f.write(os.urandom(filler_bytes))
-    out = f"{root}.deb"
-    subprocess.run(["dpkg-deb", "-Znone", "--root-owner-group", "--build", root, out],
-                   check=True, capture_output=True)
-    with open(out, "rb") as f:
-        return out, f.read()
+    """The upload test's package and its bytes."""
+    path = upload_test_deb(TMP, filler_bytes)
+    with open(path, "rb") as f:
+        return path, f.read()
 
 
 def curl_upload(path):
