@@ -8,7 +8,10 @@ Measured: the daemon's resident memory before and its peak (VmHWM) after, how th
 answered, the latency of every /api/state (p50, p99, max) and the control tick's lateness over
 the run (the daemon's own statistics, printed when it stops). A Markdown table goes to stdout.
 
-Usage: bench/upload_race.py BUILD_DIR [UPLOADS] [MIB]   (default 8 uploads of 60 MiB)"""
+The race is run ROUNDS times (the inbox emptied between rounds, as the helper would), so that
+the percentiles rest on some hundreds of requests.
+
+Usage: bench/upload_race.py BUILD_DIR [UPLOADS] [MIB] [ROUNDS]   (default 8 of 60 MiB, 10 rounds)"""
 import os
 import re
 import shutil
@@ -26,6 +29,7 @@ from daemon_harness import (free_port, http_json, station_toml, upload_test_deb,
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
 UPLOADS = int(sys.argv[2]) if len(sys.argv) > 2 else 8
 MIB = int(sys.argv[3]) if len(sys.argv) > 3 else 60
+ROUNDS = int(sys.argv[4]) if len(sys.argv) > 4 else 10
 BIN = os.path.realpath(os.path.join(BUILD, "azeltrack"))
 TMP = tempfile.mkdtemp(prefix="azt-upload-race-")
 PORT = free_port()
@@ -42,6 +46,19 @@ def upload(path, token, out):
                         "-H", f"Authorization: Bearer {token}", "-X", "POST", "-T", path,
                         f"{BASE}/api/software/update"], capture_output=True, text=True, timeout=300)
     out.append(r.stdout.strip() or r.stderr.strip())
+
+
+def race(deb, token, answers, latencies):
+    """One round: UPLOADS at once, GET /api/state every 10 ms until all are answered."""
+    threads = [threading.Thread(target=upload, args=(deb, token, answers))
+               for _ in range(UPLOADS)]
+    for t in threads:
+        t.start()
+    while any(t.is_alive() for t in threads):
+        t0 = time.monotonic()
+        http_json(BASE, "GET", "/api/state")
+        latencies.append(time.monotonic() - t0)
+        time.sleep(0.01)
 
 
 def pct(values, p):
@@ -66,15 +83,10 @@ def main():
             f.write("5")  # resets the peak (VmHWM) to now: the start's own peak is not counted
         rss_before = kib(daemon.pid, "VmRSS")
         answers, latencies = [], []
-        threads = [threading.Thread(target=upload, args=(deb, token, answers))
-                   for _ in range(UPLOADS)]
-        for t in threads:
-            t.start()
-        while any(t.is_alive() for t in threads):
-            t0 = time.monotonic()
-            http_json(BASE, "GET", "/api/state")
-            latencies.append(time.monotonic() - t0)
-            time.sleep(0.01)
+        for _ in range(ROUNDS):
+            race(deb, token, answers, latencies)
+            # The helper's part: the inbox is empty again, so the next round's upload is taken.
+            os.remove(os.path.join(TMP, "inbox", "request.deb"))
         peak = kib(daemon.pid, "VmHWM")
     finally:
         daemon.terminate()
@@ -82,7 +94,7 @@ def main():
         shutil.rmtree(TMP, ignore_errors=True)
     tick = re.search(r"late p50 ([\d.]+) ms p99 ([\d.]+) ms max ([\d.]+) ms", err)
     counts = {a: answers.count(a) for a in sorted(set(answers))}
-    print(f"| {UPLOADS} uploads of {MIB} MiB | value |\n| --- | --- |")
+    print(f"| {UPLOADS} uploads of {MIB} MiB, {ROUNDS} rounds | value |\n| --- | --- |")
     print(f"| answers | {counts} |")
     print(f"| RSS before, peak | {rss_before / 1024:.0f} MiB, {peak / 1024:.0f} MiB "
           f"(growth {(peak - rss_before) / 1024:.0f} MiB) |")

@@ -5,10 +5,7 @@
 #include <memory>
 #include <string_view>
 
-#include "azt/linux/atomic_file.hpp"
-#include "azt/software/deb_archive.hpp"
 #include "azt/software/update_status.hpp"
-#include "console/web_auth.hpp"
 
 namespace azt::app {
 namespace {
@@ -50,7 +47,7 @@ std::string SoftwareUpdates::request_path(const Config& config) {
 SoftwareUpdates::Look SoftwareUpdates::look(const Config& config) {
   Look found;
   std::error_code ec;
-  found.pending = !config.inbox_dir.empty() && std::filesystem::exists(request_path(config), ec);
+  found.pending = enabled(config) && std::filesystem::exists(request_path(config), ec);
   if (config.status_file.empty()) return found;
   const auto text = read_small_file(config.status_file);
   if (!text) return found;  // the helper has not run yet
@@ -105,41 +102,51 @@ void SoftwareUpdates::status(ActDone done) {
            });
 }
 
-void SoftwareUpdates::receive(std::string package, ActDone done) {
+std::shared_ptr<PackageUpload> SoftwareUpdates::start_upload() const {
+  return std::make_shared<PackageUpload>(config_.inbox_dir, offload_);
+}
+
+void SoftwareUpdates::receive(const PackageUpload& upload, ActDone done) {
   if (!enabled()) {
     throw ApiError(409, "",
                    "software updates are not set up here: " + std::string(kNoUpdatesReason));
   }
-  if (package.size() > kMaxPackageBytes) throw ApiError(413, "package", "over 64 MiB");
-  if (const auto archive = software::check_deb_archive(package); !archive) {
-    throw ApiError(400, "package", archive.error().message);
-  }
   struct Outcome {
     std::optional<ApiError> error;
     std::string sha256_hex;
+    std::uint64_t bytes = 0;
   };
   auto outcome = std::make_shared<Outcome>();
-  auto bytes = std::make_shared<std::string>(std::move(package));
-  // Hashing and writing megabytes, with an fsync, never on the loop.
+  // Reading back, hashing and storing megabytes, with an fsync, never on the loop.
   offload_(
-      [outcome, bytes, config = config_, now_unix_s = unix_s_()] {
-        if ((outcome->error = busy(look(config), now_unix_s))) return;
-        std::error_code ec;
-        std::filesystem::create_directories(config.inbox_dir, ec);
-        outcome->sha256_hex = sha256_hex(*bytes);
-        if (auto w = linux_os::write_file_atomically(request_path(config), *bytes, 0600); !w) {
-          outcome->error =
-              ApiError(500, "package", "cannot store the package: " + w.error().message);
-        }
+      [outcome, package = upload.received(), config = config_, now_unix_s = unix_s_()] {
+        outcome->error = store(*package, config, now_unix_s);
+        outcome->sha256_hex = package->finish_sha256_hex();
+        outcome->bytes = package->bytes();
       },
-      [this, outcome, bytes, done = std::move(done)] {
+      [this, outcome, done = std::move(done)] {
         if (outcome->error) {
           done(ActResult{{}, outcome->error});
           return;
         }
-        last_upload_ = Upload{outcome->sha256_hex, bytes->size(), unix_s_()};
-        done(ActResult{{{"sha256", outcome->sha256_hex}, {"bytes", bytes->size()}}, {}});
+        last_upload_ = Upload{outcome->sha256_hex, outcome->bytes, unix_s_()};
+        done(ActResult{{{"sha256", outcome->sha256_hex}, {"bytes", outcome->bytes}}, {}});
       });
+}
+
+std::optional<ApiError> SoftwareUpdates::store(ReceivedPackage& package, const Config& config,
+                                               double now_unix_s) {
+  if (!package.error().empty()) {
+    return ApiError(500, "package", "cannot store the package: " + package.error());
+  }
+  if (const auto archive = package.check_archive(); !archive) {
+    return ApiError(400, "package", archive.error().message);
+  }
+  if (auto refusal = busy(look(config), now_unix_s)) return refusal;
+  if (auto stored = package.publish(request_path(config)); !stored) {
+    return ApiError(500, "package", "cannot store the package: " + stored.error().message);
+  }
+  return std::nullopt;
 }
 
 }  // namespace azt::app

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -17,6 +18,7 @@
 
 #include "common/off_loop.hpp"
 #include "console/console_model.hpp"
+#include "console/package_upload.hpp"
 
 namespace azt::app {
 
@@ -38,13 +40,15 @@ class SoftwareUpdates {
   SoftwareUpdates(Config config, Offload offload, std::function<double()> unix_s)
       : config_(std::move(config)), offload_(std::move(offload)), unix_s_(std::move(unix_s)) {}
 
-  [[nodiscard]] bool enabled() const { return !config_.inbox_dir.empty(); }
+  [[nodiscard]] bool enabled() const { return enabled(config_); }
   /// GET /api/software: the version, the last upload and the helper's report (read off the loop).
   void status(ActDone done);
-  /// POST /api/software/update: `package` is the .deb. Refused at once when updates are not set
-  /// up (409) or it is no Debian archive (400); then, off the loop, refused while another
-  /// update waits or runs (409), else written to the inbox (its SHA-256 in the answer).
-  void receive(std::string package, ActDone done);
+  /// Where POST /api/software/update's body goes as it arrives (updates must be enabled()).
+  [[nodiscard]] std::shared_ptr<PackageUpload> start_upload() const;
+  /// POST /api/software/update once its body is whole in `upload`: refused when updates are not
+  /// set up (409); off the loop, refused when it is no Debian archive (400) or while another
+  /// update waits or runs (409), else stored in the inbox (its SHA-256 in the answer).
+  void receive(const PackageUpload& upload, ActDone done);
 
  private:
   struct Upload {
@@ -62,8 +66,12 @@ class SoftwareUpdates {
   // this object is destroyed at shutdown (issue 27 §5), so it never reaches `this`.
   [[nodiscard]] static Look look(const Config& config);  // worker thread
   [[nodiscard]] static std::string request_path(const Config& config);
+  [[nodiscard]] static bool enabled(const Config& config) { return !config.inbox_dir.empty(); }
   /// The refusal for a new upload given what the worker found at `now_unix_s`, or nullopt.
   [[nodiscard]] static std::optional<ApiError> busy(const Look& now, double now_unix_s);
+  /// Checks the whole package and stores it for the helper: the refusal, or nullopt.
+  [[nodiscard]] static std::optional<ApiError> store(ReceivedPackage& package, const Config& config,
+                                                     double now_unix_s);
   nlohmann::json to_json(const Look& found) const;
 
   Config config_;

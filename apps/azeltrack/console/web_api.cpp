@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "azt/linux/asio.hpp"
+#include "console/api_reply.hpp"
 #include "console/locator_api.hpp"
 #include "console/query_string.hpp"
 #include "console/web_assets.hpp"
@@ -14,20 +15,6 @@ namespace azt::app {
 namespace {
 
 using json = nlohmann::json;
-
-linux_os::HttpReply json_reply(unsigned status, const json& body) {
-  // Replace, never throw: whatever text reached the body (a header echoed in a message, a name
-  // from a file), the answer is sent (issue 12 rows 1, 2 and 12).
-  return linux_os::HttpReply{
-      status, "application/json", body.dump(-1, ' ', false, json::error_handler_t::replace), {}};
-}
-
-linux_os::HttpReply error_reply(unsigned status, const std::string& message,
-                                const std::string& field = "") {
-  json body{{"error", message}};
-  if (!field.empty()) body["field"] = field;
-  return json_reply(status, body);
-}
 
 /// "host:port" or "[v6]:port" -> host.
 std::string host_name(const std::string& host_header) {
@@ -184,7 +171,7 @@ std::optional<linux_os::HttpReply> WebApi::authorize(const linux_os::HttpRequest
 }
 
 linux_os::HttpServer::BodyAllowance WebApi::body_allowance(const linux_os::HttpRequest& head) {
-  linux_os::HttpServer::BodyAllowance allowance{linux_os::HttpServer::kMaxBodyBytes, {}, {}};
+  linux_os::HttpServer::BodyAllowance allowance{linux_os::HttpServer::kMaxBodyBytes, {}, {}, {}};
   const bool upload = software_ != nullptr && software_->enabled() && head.method == "POST" &&
                       head.path == "/api/software/update";
   if (!upload) return allowance;
@@ -198,6 +185,7 @@ linux_os::HttpServer::BodyAllowance WebApi::body_allowance(const linux_os::HttpR
     upload_slot_ = slot;
     allowance.hold = std::move(slot);
     allowance.max_bytes = SoftwareUpdates::kMaxPackageBytes;
+    allowance.sink = software_->start_upload();  // streamed to the inbox, never held whole
   }
   return allowance;
 }
@@ -296,7 +284,12 @@ void WebApi::handle_action(linux_os::HttpRequest& request, const Respond& respon
       respond(error_reply(404, "no software updates here"));
       return;
     }
-    software_->receive(std::move(request.body), answer(respond));
+    const auto* upload = dynamic_cast<const PackageUpload*>(request.streamed_body.get());
+    if (upload == nullptr) {
+      respond(error_reply(409, "software updates are not set up here"));
+      return;
+    }
+    software_->receive(*upload, answer(respond));
     return;
   }
   const bool is_config = request.path.rfind("/api/config/", 0) == 0;

@@ -1,5 +1,6 @@
 #include "azt/software/deb_archive.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <initializer_list>
@@ -14,7 +15,8 @@ constexpr std::size_t kHeaderBytes = 60;  // ar(5): name 16, mtime 12, uid 6, gi
 
 struct Member {
   std::string name;
-  std::string_view body;
+  std::uint64_t start = 0;  ///< where its body begins
+  std::uint64_t size = 0;
 };
 
 std::string_view trim_right(std::string_view s) {
@@ -39,19 +41,21 @@ std::optional<std::uint64_t> decimal(std::string_view field) {
 }
 
 /// The member starting at `offset` (its header), advancing `offset` past its padded body.
-Result<Member> read_member(std::string_view bytes, std::size_t& offset) {
+Result<Member> read_member(std::uint64_t archive_size, const ReadAt& read_at,
+                           std::uint64_t& offset) {
   // After an odd-sized last member the padding byte may be missing: offset is then past the end.
-  if (offset > bytes.size() || bytes.size() - offset < kHeaderBytes) {
+  if (offset > archive_size || archive_size - offset < kHeaderBytes) {
     return fail("a member's header is cut short");
   }
-  const std::string_view header = bytes.substr(offset, kHeaderBytes);
+  const std::string header = read_at(offset, kHeaderBytes);
+  if (header.size() != kHeaderBytes) return fail("a member's header is cut short");
   if (header.substr(58, 2) != "`\n") return fail("a member's header is malformed");
-  const auto size = decimal(header.substr(48, 10));
+  const auto size = decimal(std::string_view(header).substr(48, 10));
   if (!size) return fail("a member's size is not a decimal number");
-  const std::size_t start = offset + kHeaderBytes;
-  if (*size > bytes.size() - start) return fail("a member runs past the end of the file");
+  const std::uint64_t start = offset + kHeaderBytes;
+  if (*size > archive_size - start) return fail("a member runs past the end of the file");
   offset = start + *size + (*size % 2);  // bodies are padded to an even length
-  return Member{member_name(header.substr(0, 16)), bytes.substr(start, *size)};
+  return Member{member_name(std::string_view(header).substr(0, 16)), start, *size};
 }
 
 bool one_of(std::string_view name, std::string_view stem,
@@ -64,11 +68,14 @@ bool one_of(std::string_view name, std::string_view stem,
   return false;
 }
 
-Result<std::string> format_version(const Member& m) {
+Result<std::string> format_version(const Member& m, const ReadAt& read_at) {
   if (m.name != "debian-binary") return fail("the first member is not debian-binary");
-  const auto line_end = m.body.find('\n');
-  if (line_end == std::string_view::npos) return fail("debian-binary has no version line");
-  const std::string_view version = m.body.substr(0, line_end);
+  // "2.0\n" in every package; a longer line is read only as far as a version could go.
+  const std::string body =
+      read_at(m.start, static_cast<std::size_t>(std::min<std::uint64_t>(m.size, 64)));
+  const auto line_end = body.find('\n');
+  if (line_end == std::string::npos) return fail("debian-binary has no version line");
+  const std::string_view version = std::string_view(body).substr(0, line_end);
   // deb(5): a major version other than 2 is a different format altogether.
   if (version.substr(0, 2) != "2.") return fail("format version is not 2.x");
   return std::string(version);
@@ -76,18 +83,18 @@ Result<std::string> format_version(const Member& m) {
 
 }  // namespace
 
-Result<DebArchive> check_deb_archive(std::string_view bytes) {
-  if (bytes.substr(0, kArMagic.size()) != kArMagic) {
+Result<DebArchive> check_deb_archive(std::uint64_t size, const ReadAt& read_at) {
+  if (read_at(0, kArMagic.size()) != kArMagic) {
     return fail("not a Debian package (no ar archive header)");
   }
-  std::size_t offset = kArMagic.size();
+  std::uint64_t offset = kArMagic.size();
   std::array<Member, 3> members;
   for (auto& m : members) {
-    auto member = read_member(bytes, offset);
+    auto member = read_member(size, read_at, offset);
     if (!member) return fail("not a Debian package: " + member.error().message);
     m = std::move(member).value();
   }
-  auto version = format_version(members[0]);
+  auto version = format_version(members[0], read_at);
   if (!version) return fail("not a Debian package: " + version.error().message);
   if (!one_of(members[1].name, "control.tar", {"", ".gz", ".xz", ".zst"})) {
     return fail("not a Debian package: the second member is not control.tar");
@@ -95,8 +102,13 @@ Result<DebArchive> check_deb_archive(std::string_view bytes) {
   if (!one_of(members[2].name, "data.tar", {"", ".gz", ".xz", ".zst", ".bz2", ".lzma"})) {
     return fail("not a Debian package: the third member is not data.tar");
   }
-  return DebArchive{std::move(version).value(), members[1].name, members[2].name,
-                    members[2].body.size()};
+  return DebArchive{std::move(version).value(), members[1].name, members[2].name, members[2].size};
+}
+
+Result<DebArchive> check_deb_archive(std::string_view bytes) {
+  return check_deb_archive(bytes.size(), [bytes](std::uint64_t offset, std::size_t n) {
+    return offset >= bytes.size() ? std::string() : std::string(bytes.substr(offset, n));
+  });
 }
 
 }  // namespace azt::software

@@ -1,5 +1,7 @@
 #include "azt/linux/atomic_file.hpp"
 
+#include "file_steps.hpp"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -12,20 +14,6 @@
 
 namespace azt::linux_os {
 namespace {
-
-std::string errno_text(int err) { return std::strerror(err); }
-
-Error step_error(const std::string& step, const std::string& path, int err) {
-  return fail(step + " '" + path + "': " + errno_text(err));
-}
-
-/// The directory holding `path`, for the final fsync.
-std::string parent_directory(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  if (slash == 0) return "/";
-  return path.substr(0, slash);
-}
 
 /// Closes a descriptor on scope exit unless released.
 class FdGuard {
@@ -47,30 +35,6 @@ class FdGuard {
  private:
   int fd_;
 };
-
-/// Writes all of `data`, retrying partial writes and EINTR. Returns 0 or an errno.
-int write_all(int fd, std::string_view data) {
-  const char* cursor = data.data();
-  std::size_t left = data.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, cursor, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return errno;
-    }
-    if (n == 0) return EIO;
-    cursor += n;
-    left -= static_cast<std::size_t>(n);
-  }
-  return 0;
-}
-
-int fsync_retrying(int fd) {
-  while (::fsync(fd) != 0) {
-    if (errno != EINTR) return errno;
-  }
-  return 0;
-}
 
 /// Creates `temp` (O_EXCL: never adopts a stranger's file), writes `contents`, applies `mode`,
 /// fsyncs and closes. On failure removes whatever it created.
@@ -163,14 +127,7 @@ Result<bool> write_file_atomically(const std::string& path, std::string_view con
   }
 
   // Make both renames durable: without this a power cut may resurrect the old directory entry.
-  const std::string dir = parent_directory(path);
-  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir_fd < 0) return step_error("open directory for fsync", dir, errno);
-  FdGuard dir_guard(dir_fd);
-  if (const int err = fsync_retrying(dir_fd); err != 0) {
-    return step_error("fsync directory", dir, err);
-  }
-  return true;
+  return fsync_directory_of(path);
 }
 
 Result<bool> publish_file(const std::string& path, std::string_view contents) {

@@ -6,7 +6,9 @@
 // not a package at all; the helper's dpkg-deb checks the rest (the control fields, every byte of
 // the compressed members) before anything is installed.
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -21,7 +23,15 @@ struct DebArchive {
   std::uint64_t data_bytes = 0;  ///< the compressed data member's size
 };
 
-/// The archive's members as deb(5) requires them; an Error names the first thing wrong.
+/// Up to `n` bytes of the archive from `offset` (fewer at its end): how the check reads a package
+/// it does not hold (an upload streamed to a file, issue 27 §10). It reads the headers and the
+/// few bytes of debian-binary only.
+using ReadAt = std::function<std::string(std::uint64_t offset, std::size_t n)>;
+
+/// The archive of `size` bytes, its members as deb(5) requires them; an Error names the first
+/// thing wrong.
+Result<DebArchive> check_deb_archive(std::uint64_t size, const ReadAt& read_at);
+/// The same for an archive in memory.
 Result<DebArchive> check_deb_archive(std::string_view bytes);
 
 }  // namespace azt::software

@@ -13,7 +13,11 @@
 
 namespace azt::linux_os {
 
-/// `peer` is the client's address without the port (HttpRequest::client).
+/// The head alone (HttpRequest::body empty): what decides a body's allowance, and a streamed
+/// body's request. `peer` is the client's address without the port (HttpRequest::client).
+HttpRequest to_http_request(const boost::beast::http::request_header<>& head,
+                            const std::string& peer);
+/// The head and its body.
 HttpRequest to_http_request(const boost::beast::http::request<boost::beast::http::string_body>& req,
                             const std::string& peer);
 

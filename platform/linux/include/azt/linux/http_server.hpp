@@ -2,9 +2,9 @@
 // The console's HTTP and WebSocket transport (Boost.Beast on the daemon's io_context). It knows
 // nothing of the API: every request goes to a handler as a HttpRequest (its text made valid UTF-8
 // first), and WebSocket clients get the same state text pushed at a fixed period. Bounded: 64 KiB
-// bodies unless the handler's body_limit lets a route take more (413), 8 KiB headers (431), 30 s
-// idle HTTP connections, one pending frame per slow WebSocket client (older frames are dropped,
-// never queued).
+// bodies unless the handler's body_limit lets a route take more (413) or streams it to a sink,
+// 8 KiB headers (431), 30 s idle HTTP connections, one pending frame per slow WebSocket client
+// (older frames are dropped, never queued).
 //
 // The operator can always reach STOP (issue 12): at most kMaxPerAddress connections from one
 // address; at most kMaxConnections in all, and when they are taken a new connection evicts the
@@ -26,6 +26,28 @@
 
 namespace azt::linux_os {
 
+struct HttpReply {
+  unsigned status = 200;
+  std::string content_type = "application/json";
+  std::string body;
+  std::vector<std::pair<std::string, std::string>> headers;
+};
+
+/// Takes a request's body as it arrives, for a route whose body is too large to hold whole (a
+/// package upload, issue 27 §10): the transport reads the next chunk only once `write` has
+/// called `next`, so one chunk at a time is in memory. `next` with a reply refuses the rest of
+/// the body: the reply is sent, what the client still sends is dropped, the connection closes.
+class HttpBodySink {
+ public:
+  using Next = std::function<void(std::optional<HttpReply> refusal)>;
+  HttpBodySink() = default;
+  HttpBodySink(const HttpBodySink&) = delete;
+  HttpBodySink& operator=(const HttpBodySink&) = delete;
+  virtual ~HttpBodySink() = default;
+  /// Runs on the loop; `next` runs on the loop exactly once, at once or later.
+  virtual void write(std::string chunk, Next next) = 0;
+};
+
 struct HttpRequest {
   std::string method;  ///< "GET", "POST", …
   std::string path;    ///< without the query
@@ -41,13 +63,9 @@ struct HttpRequest {
   /// It carries a proxy's header (Forwarded, X-Forwarded-*, X-Real-IP, Via): whoever sent it
   /// first is elsewhere, whatever `client` says, so it is never "from this machine".
   bool forwarded = false;
-};
-
-struct HttpReply {
-  unsigned status = 200;
-  std::string content_type = "application/json";
-  std::string body;
-  std::vector<std::pair<std::string, std::string>> headers;
+  /// The sink that took the body as it arrived (`body` is then empty), when the route's
+  /// HttpServer::BodyAllowance gave one.
+  std::shared_ptr<HttpBodySink> streamed_body;
 };
 
 class HttpServer {
@@ -70,6 +88,9 @@ class HttpServer {
     /// handler's token for "one at a time" decided from the head (a 60 MiB upload's body is
     /// read only while it holds the one slot; issue 27 §10).
     std::shared_ptr<const void> hold;
+    /// Given: the body goes to it chunk by chunk (never held whole) and the handler gets the
+    /// request with HttpRequest::streamed_body set once the last chunk is taken.
+    std::shared_ptr<HttpBodySink> sink;
   };
   /// Decides the allowance from the head alone (HttpRequest::body is empty: not read yet).
   using BodyLimit = std::function<BodyAllowance(const HttpRequest&)>;
