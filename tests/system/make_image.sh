@@ -83,4 +83,8 @@ mke2fs -q -t ext4 -L azt-root -d "$work/root" "$out.part/root.img" 3G >&2
 touch "$out.part/done"
 rm -rf "$out"
 mv "$out.part" "$out"
+# Older images of this architecture (another package list, kernel or script): 870 MB each.
+for old in "$cache_dir/$arch"-*; do
+  [ "$old" = "$out" ] || rm -rf "$old"
+done
 echo "$out"

@@ -39,10 +39,13 @@ def sign(deb, out):
         subprocess.run(["debsigs", "--sign=origin", f"--default-key={TEST_KEY}", out], **quiet)
 
 
-def make_payload(work, image, deb_n, deb_n1):
+def make_payload(work, image, deb_n, deb_n1, broken_udev):
     payload = os.path.join(work, "payload")
     os.makedirs(os.path.join(payload, "debs"))
-    shutil.copy(os.path.join(HERE, "guest", "run"), payload)
+    if broken_udev:
+        open(os.path.join(payload, "break-udev"), "w", encoding="ascii").close()
+    for name in ("run", "gpio_watch.py", "gpio_sim", "rotctld_p.py"):
+        shutil.copy(os.path.join(HERE, "guest", name), payload)
     shutil.copy(deb_n, os.path.join(payload, "debs", "azeltrack_N.deb"))
     sign(deb_n1, os.path.join(payload, "debs", "azeltrack_N1_signed.deb"))
     shutil.copy(os.path.join(SIGNING, "test-key.asc"), payload)
@@ -90,6 +93,21 @@ def follow(qemu, results_path, started, timeout_s):
         time.sleep(0.5)
 
 
+def expect_gpio_refused(steps):
+    """With the wrong group in the udev rule the device must not be the daemon's: the ACL step
+    and the daemon's start on the lines fail. Those failures become this run's passes."""
+    out = []
+    for line in steps:
+        name = line.split()[2].rstrip(":")
+        if name in ("gpio_acl", "gpio_start"):
+            ok = line.startswith("STEP FAIL ")
+            out.append(f"STEP {'ok' if ok else 'FAIL'} {name}_refused: " +
+                       ("failed as it must: " if ok else "passed with a broken rule: ") + line)
+        elif not name.startswith("gpio_") or name in ("gpio_module", "gpio_config"):
+            out.append(line)
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("deb_n")
@@ -97,6 +115,9 @@ def main():
     ap.add_argument("--cache-dir", default=os.path.expanduser("~/.cache/azeltrack/system"))
     ap.add_argument("--arch", default="amd64")
     ap.add_argument("--timeout", type=int, default=900)
+    ap.add_argument("--broken-udev", action="store_true",
+                    help="the proof: with the package's udev rule naming the wrong group, the "
+                         "GPIO step must fail (and only the install and GPIO steps run)")
     args = ap.parse_args()
     if os.geteuid() != 0:
         print("system test: skipped: mmdebstrap and mke2fs -d of a root tree need root")
@@ -108,7 +129,7 @@ def main():
                            stdout=subprocess.PIPE, text=True).stdout.strip()
     log(f"image ready in {time.monotonic() - t0:.0f} s: {image}")
     with tempfile.TemporaryDirectory(prefix="azt-system-") as work:
-        payload = make_payload(work, image, args.deb_n, args.deb_n1)
+        payload = make_payload(work, image, args.deb_n, args.deb_n1, args.broken_udev)
         overlay = os.path.join(work, "root.qcow2")
         subprocess.run(["qemu-img", "create", "-q", "-f", "qcow2", "-F", "raw", "-b",
                         os.path.join(image, "root.img"), overlay], check=True)
@@ -119,6 +140,8 @@ def main():
         lines = follow(qemu, os.path.join(work, "results.log"), started, args.timeout)
         wall = time.monotonic() - started
         steps = [l for l in lines if l.startswith("STEP ")]
+        if args.broken_udev:
+            steps = expect_gpio_refused(steps)
         failed = [l for l in steps if not l.startswith("STEP ok ")]
         passed = len(steps) - len(failed)
         if not any(l.strip() == "DONE" for l in lines):
