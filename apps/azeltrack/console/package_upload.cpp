@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "console/api_reply.hpp"
+#include "console/web_auth.hpp"
 
 namespace azt::app {
 
@@ -40,9 +41,7 @@ void ReceivedPackage::append(std::string_view chunk) {
 std::string ReceivedPackage::finish_sha256_hex() {
   std::array<unsigned char, crypto_hash_sha256_BYTES> digest{};
   crypto_hash_sha256_final(hash_.get(), digest.data());
-  std::array<char, crypto_hash_sha256_BYTES * 2 + 1> hex{};
-  sodium_bin2hex(hex.data(), hex.size(), digest.data(), digest.size());
-  return {hex.data(), hex.size() - 1};
+  return to_hex(digest.data(), digest.size());
 }
 
 Result<software::DebArchive> ReceivedPackage::check_archive() const {
@@ -53,8 +52,8 @@ Result<software::DebArchive> ReceivedPackage::check_archive() const {
 }
 
 Result<bool> ReceivedPackage::publish(const std::string& path) {
-  if (!file_) append({});  // an empty body is still a file: the archive check refuses it first
   if (!error_.empty()) return fail(error_);
+  if (!file_) return fail("no package was received");  // check_archive refuses this first
   return file_->publish(path);
 }
 

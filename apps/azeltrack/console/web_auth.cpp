@@ -15,13 +15,6 @@ void init_sodium() {
   if (sodium_init() < 0) throw std::runtime_error("libsodium could not initialise");
 }
 
-std::string to_hex(const unsigned char* data, std::size_t size) {
-  std::string out(size * 2 + 1, '\0');
-  sodium_bin2hex(out.data(), out.size(), data, size);
-  out.pop_back();
-  return out;
-}
-
 constexpr double kMinute = 60.0;
 constexpr double kHour = 3600.0;
 constexpr std::size_t kFreeFailuresPerMinute = 3;
@@ -30,6 +23,13 @@ constexpr double kFirstDelayS = 5.0;
 constexpr double kMaxDelayS = 300.0;
 
 }  // namespace
+
+std::string to_hex(const unsigned char* data, std::size_t size) {
+  std::string out(size * 2 + 1, '\0');
+  sodium_bin2hex(out.data(), out.size(), data, size);
+  out.pop_back();
+  return out;
+}
 
 std::string hash_password(std::string_view password) {
   init_sodium();

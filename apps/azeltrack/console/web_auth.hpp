@@ -16,6 +16,8 @@ namespace azt::app {
 std::string hash_password(std::string_view password);
 /// False for a wrong password and for a hash that is not in that format.
 bool verify_password(const std::string& hash, std::string_view password);
+/// `size` bytes as lower-case hex (a digest's usual form).
+std::string to_hex(const unsigned char* data, std::size_t size);
 /// Lower-case hex SHA-256, the form `[web] api_token_sha256` keeps.
 std::string sha256_hex(std::string_view data);
 /// `bytes` random bytes as lower-case hex.

@@ -175,7 +175,7 @@ void HttpSession::on_read(beast::error_code ec) {
   HttpRequest request = to_http_request(req.base(), peer);
   request.body = std::move(body);
   guarded(request.method + " " + quote(request.path), [&] {
-    if (!has_session && shared_->callbacks.has_session(request)) has_session = true;
+    note_session(request);
     if (request.websocket && request.path == "/ws") {
       upgrade(req, request);
       return;
@@ -225,8 +225,10 @@ void HttpSession::finish_streamed() {
   const unsigned version = req.version();
   const bool keep_alive = req.keep_alive();
   streaming_.reset();
-  guarded(request.method + " " + quote(request.path),
-          [&] { dispatch(std::move(request), version, keep_alive); });
+  guarded(request.method + " " + quote(request.path), [&] {
+    note_session(request);
+    dispatch(std::move(request), version, keep_alive);
+  });
 }
 
 void HttpSession::guarded(const std::string& what, const std::function<void()>& step) {
@@ -239,8 +241,11 @@ void HttpSession::guarded(const std::string& what, const std::function<void()>& 
   }
 }
 
-void HttpSession::dispatch(HttpRequest request, unsigned version, bool keep_alive) {
+void HttpSession::note_session(const HttpRequest& request) {
   if (!has_session && shared_->callbacks.has_session(request)) has_session = true;
+}
+
+void HttpSession::dispatch(HttpRequest request, unsigned version, bool keep_alive) {
   shared_->callbacks.handler(std::move(request),
                              [self = shared_from_this(), version, keep_alive](const HttpReply& r) {
                                self->reply(r, version, keep_alive);

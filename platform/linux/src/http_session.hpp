@@ -44,6 +44,8 @@ class HttpSession : public WebConnection, public std::enable_shared_from_this<Ht
   /// Runs `step` (a handler's call); an exception from it closes this connection with a log
   /// line naming `what`, and the daemon and other clients carry on.
   void guarded(const std::string& what, const std::function<void()>& step);
+  /// Marks this connection as logged in once a request on it shows a session (never evicted).
+  void note_session(const HttpRequest& request);
   void dispatch(HttpRequest request, unsigned version, bool keep_alive);
   void upgrade(const StringRequest& req, const HttpRequest& request);
   void reply(const HttpReply& reply, unsigned version, bool keep_alive);
