@@ -166,6 +166,18 @@ serial_move 601 "$tmp/pty/gs232a" 170 20 1.0
 serial_move 202 "$tmp/pty/easycomm2" 123.4 45.6 0.3
 serial_move 901 "$tmp/pty/spid" 210.5 15.5 0.6 -s 600
 
+# One daemon per pty name: a second daemon (other ports) naming the same link refuses to start,
+# naming the first one's pid, and the first one's link still leads to it.
+write_config "$tmp/second.toml" "$(free_port)" 0 "
+[[serial]]
+protocol = \"gs232b\"
+device = \"pty:$tmp/pty/gs232b\""
+"$bin" serve --config "$tmp/second.toml" </dev/null >"$tmp/out" 2>"$tmp/err"
+rc=$?
+[ $rc -eq 2 ] && tail -1 "$tmp/err" | grep -q "in use by another azeltrack daemon (pid $daemon_pid)" &&
+  ok || bad "second daemon: rc=$rc, $(cat "$tmp/err")"
+serial_move 603 "$tmp/pty/gs232b" 190 25 1.0
+
 # 3. PstRotator UDP: a target, then the AZ?/EL? replies on port+1.
 pst=$(python3 - "$uport" <<'PY'
 import socket, sys, time

@@ -9,7 +9,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 
 #include "azt/linux/runtime_dir.hpp"
 #include "azt/linux/serial_port.hpp"
@@ -54,25 +53,6 @@ std::string link_path(const std::string& spec) {
   return runtime_dir() + "/" + spec;
 }
 
-/// Links `link` to `target` in a directory of our own (runtime_dir.hpp), replacing only a
-/// stale symlink (never a regular file or device).
-Result<bool> make_link(const std::string& link, const std::string& target) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path path(link);
-  if (path.has_parent_path()) {
-    if (auto ok = ensure_private_dir(path.parent_path().string()); !ok) return ok;
-  }
-  const auto status = fs::symlink_status(path, ec);
-  if (fs::exists(status)) {
-    if (!fs::is_symlink(status)) return fail(link + " exists and is not a symbolic link");
-    fs::remove(path, ec);
-  }
-  fs::create_symlink(target, path, ec);
-  if (ec) return fail("cannot link " + link + ": " + ec.message());
-  return true;
-}
-
 }  // namespace
 
 SerialProtocolServer::SerialProtocolServer(asio::io_context& io, SessionFactory factory, Log log)
@@ -99,13 +79,14 @@ Result<std::unique_ptr<SerialProtocolServer>> SerialProtocolServer::open(asio::i
       ::close(pty->slave);
       return fail(device + ": " + raw.error().message);
     }
-    if (auto linked = make_link(link, pty->slave_name); !linked) {
+    auto linked = PtyLink::claim(link, pty->slave_name);
+    if (!linked) {
       ::close(pty->master);
       ::close(pty->slave);
       return fail(device + ": " + linked.error().message);
     }
     server->keep_slave_fd_ = pty->slave;
-    server->link_ = link;
+    server->link_.emplace(std::move(linked).value());
     server->path_ = link;
     server->stream_.assign(pty->master);
     server->watch_clients(pty->slave_name);
@@ -128,11 +109,7 @@ void SerialProtocolServer::close() {
     ::close(keep_slave_fd_);
     keep_slave_fd_ = -1;
   }
-  if (!link_.empty()) {
-    std::error_code ec;
-    std::filesystem::remove(link_, ec);
-    link_.clear();
-  }
+  link_.reset();  // removes the link if it is still ours
 }
 
 void SerialProtocolServer::read() {

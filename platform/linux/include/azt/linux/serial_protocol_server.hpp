@@ -4,7 +4,8 @@
 // Hamlib's rotctl) opens that path as if it were the controller's COM port.
 //
 // Device syntax: "pty:gs232b" (pseudo-terminal, symlink in the runtime directory, runtime_dir.hpp),
-// "pty:/abs/path" (symlink there, in a directory owned by this program's user) or a device path
+// "pty:/abs/path" (symlink there, in a directory owned by this program's user; either held by
+// one daemon at a time, pty_link.hpp) or a device path
 // ("/dev/ttyUSB0"; opened exclusively, raw 8N1 at the configured baud). On a pseudo-terminal a
 // client's open and hang-up discard what is pending, so one client's unread replies never
 // reach the next.
@@ -12,9 +13,11 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "azt/linux/asio.hpp"
+#include "azt/linux/pty_link.hpp"
 #include "azt/proto/rotator_service.hpp"
 #include "azt/util/result.hpp"
 
@@ -61,7 +64,7 @@ class SerialProtocolServer {
   std::array<char, 1024> events_{};
   int keep_slave_fd_ = -1;  ///< our own open slave end: reads never fail with EIO between clients
   std::string path_;
-  std::string link_;  ///< the symlink we created, removed on close
+  std::optional<PtyLink> link_;  ///< the link we hold to our pseudo-terminal
   SessionFactory factory_;
   std::unique_ptr<proto::ProtocolSession> session_;
   Log log_;
