@@ -3,6 +3,7 @@
 // figure 6-1, MCP41010 DS11195 section 5, ADS1115 SBAS444 section 8.6), and the real spidev and
 // i2c-dev adapters' refusals of a missing device and of a file that is not one.
 #include <gtest/gtest.h>
+#include <linux/i2c.h>
 #include <unistd.h>
 
 #include <array>
@@ -299,6 +300,41 @@ TEST_F(SpiI2cNotADevice, SpidevBusOpenRefusesARegularFile) {
 TEST(SpidevBusOpen, RejectsBadModeAndSpeed) {
   EXPECT_FALSE(SpidevBus::open("/dev/spidev0.0", 1000000, 4).ok());
   EXPECT_FALSE(SpidevBus::open("/dev/spidev0.0", 0).ok());
+}
+
+// On an SMBus-only adapter (the system test's i2c-stub) the ADS1115's transactions travel as
+// SMBus word transfers carrying the same bytes: Config 0xC383 written is the word 0x83C3.
+TEST(SmbusForm, APointerWriteIsASendByteAndARegisterWriteAWordLowByteFirst) {
+  const std::array<std::uint8_t, 1> pointer{0x01};
+  auto send = smbus_write_form(pointer);
+  ASSERT_TRUE(send.ok());
+  EXPECT_FALSE(send->read);
+  EXPECT_EQ(send->command, 0x01);
+  EXPECT_EQ(send->size, static_cast<std::uint32_t>(I2C_SMBUS_BYTE));
+  const std::array<std::uint8_t, 3> config{0x01, 0xC3, 0x83};
+  auto word = smbus_write_form(config);
+  ASSERT_TRUE(word.ok());
+  EXPECT_EQ(word->command, 0x01);
+  EXPECT_EQ(word->size, static_cast<std::uint32_t>(I2C_SMBUS_WORD_DATA));
+  EXPECT_EQ(word->word, 0x83C3);
+}
+
+TEST(SmbusForm, OtherWriteLengthsHaveNone) {
+  const std::array<std::uint8_t, 2> two{0x01, 0xC3};
+  auto form = smbus_write_form(two);
+  ASSERT_FALSE(form.ok());
+  EXPECT_NE(form.error().message.find("a write of 2 bytes has no SMBus form"), std::string::npos);
+  EXPECT_FALSE(smbus_write_form(std::span<const std::uint8_t>{}).ok());
+}
+
+TEST(SmbusForm, AReadNamesTheRegisterLastWrittenAndIsTwoBytes) {
+  auto read = smbus_read_form(std::uint8_t{0x00}, 2);
+  ASSERT_TRUE(read.ok());
+  EXPECT_TRUE(read->read);
+  EXPECT_EQ(read->command, 0x00);
+  EXPECT_EQ(read->size, static_cast<std::uint32_t>(I2C_SMBUS_WORD_DATA));
+  EXPECT_FALSE(smbus_read_form(std::nullopt, 2).ok());
+  EXPECT_FALSE(smbus_read_form(std::uint8_t{0x00}, 3).ok());
 }
 
 TEST(I2cDevBusOpen, MissingDeviceNamesThePathAndTheHint) {

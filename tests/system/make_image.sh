@@ -15,7 +15,9 @@
 # The result is cached in CACHE_DIR/KEY/, the key being a hash of this script, the package list
 # and the kernel's ABI: root.img (raw ext4), vmlinuz, initrd.img, gpio-sim.ko.
 #
-# Usage: make_image.sh ARCH CACHE_DIR DEB…   prints the folder of the image on stdout.
+# Usage: make_image.sh ARCH CACHE_DIR DEB…   prints the folder of the image on stdout. The DEBs
+# (azeltrack's and the panel's) name the dependencies to preinstall; the panel's brings cage and
+# cog, as `apt install` of it would on a Pi.
 set -euo pipefail
 arch=${1:?usage: make_image.sh ARCH CACHE_DIR DEB...}
 cache_dir=${2:?usage: make_image.sh ARCH CACHE_DIR DEB...}
@@ -33,7 +35,8 @@ abi=$(dpkg-query -W -f='${Depends}' "linux-headers-$kernel_flavour" 2>/dev/null 
 
 # Runtime dependencies of the packages under test, preinstalled: the machine has no network.
 depends=$(for d in "${debs[@]}"; do dpkg-deb -f "$d" Depends; done | tr ',' '\n' |
-  sed 's/([^)]*)//g; s/|.*//; s/[[:space:]]//g' | grep -v '^$' | sort -u | tr '\n' ',')
+  sed 's/([^)]*)//g; s/|.*//; s/[[:space:]]//g' | grep -v -e '^$' -e '^azeltrack$' | sort -u |
+  tr '\n' ',')
 recommends=chrony,swe-basic-data
 tools=systemd,systemd-sysv,udev,kmod,dbus,initramfs-tools,linux-image-$abi,gpiod,i2c-tools,curl,procps,python3,e2fsprogs,iproute2
 include="$tools,$recommends,${depends%,}"

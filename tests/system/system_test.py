@@ -8,7 +8,8 @@ accelerator and the wall time, then "N passed, M failed".
 
 Exit status 0 when every step passed, 77 when it cannot run here (not root), 1 otherwise.
 
-Usage (as root): system_test.py DEB_N DEB_N_PLUS_1 [--cache-dir DIR] [--arch amd64]
+Usage (as root): system_test.py DEB_N DEB_N_PLUS_1 --panel PANEL_DEB_N [--cache-dir DIR]
+                [--arch amd64]
 KVM is used when AZT_SYSTEM_ACCEL=kvm (nested KVM fails on the reference machine); TCG else."""
 import argparse
 import os
@@ -39,15 +40,17 @@ def sign(deb, out):
         subprocess.run(["debsigs", "--sign=origin", f"--default-key={TEST_KEY}", out], **quiet)
 
 
-def make_payload(work, image, deb_n, deb_n1, broken_udev):
+def make_payload(work, image, debs, broken_udev):
+    """The payload disk: the test, the packages (N, the panel's, and N+1 signed), the key."""
     payload = os.path.join(work, "payload")
     os.makedirs(os.path.join(payload, "debs"))
     if broken_udev:
         open(os.path.join(payload, "break-udev"), "w", encoding="ascii").close()
-    for name in ("run", "gpio_watch.py", "gpio_sim", "rotctld_p.py"):
+    for name in ("run", "gpio_watch.py", "board", "rotator.py", "rotctld_p.py"):
         shutil.copy(os.path.join(HERE, "guest", name), payload)
-    shutil.copy(deb_n, os.path.join(payload, "debs", "azeltrack_N.deb"))
-    sign(deb_n1, os.path.join(payload, "debs", "azeltrack_N1_signed.deb"))
+    shutil.copy(debs.deb_n, os.path.join(payload, "debs", "azeltrack_N.deb"))
+    shutil.copy(debs.panel, os.path.join(payload, "debs", "azeltrack-panel.deb"))
+    sign(debs.deb_n1, os.path.join(payload, "debs", "azeltrack_N1_signed.deb"))
     shutil.copy(os.path.join(SIGNING, "test-key.asc"), payload)
     shutil.copy(os.path.join(image, "gpio-sim.ko"), payload)
     img = os.path.join(work, "payload.img")
@@ -112,6 +115,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("deb_n")
     ap.add_argument("deb_n1")
+    ap.add_argument("--panel", required=True, help="the azeltrack-panel package of version N")
     ap.add_argument("--cache-dir", default=os.path.expanduser("~/.cache/azeltrack/system"))
     ap.add_argument("--arch", default="amd64")
     ap.add_argument("--timeout", type=int, default=900)
@@ -125,11 +129,11 @@ def main():
     accel = os.environ.get("AZT_SYSTEM_ACCEL", "tcg")
     t0 = time.monotonic()
     image = subprocess.run([os.path.join(HERE, "make_image.sh"), args.arch, args.cache_dir,
-                            args.deb_n], check=True, capture_output=False,
+                            args.deb_n, args.panel], check=True, capture_output=False,
                            stdout=subprocess.PIPE, text=True).stdout.strip()
     log(f"image ready in {time.monotonic() - t0:.0f} s: {image}")
     with tempfile.TemporaryDirectory(prefix="azt-system-") as work:
-        payload = make_payload(work, image, args.deb_n, args.deb_n1, args.broken_udev)
+        payload = make_payload(work, image, args, args.broken_udev)
         overlay = os.path.join(work, "root.qcow2")
         subprocess.run(["qemu-img", "create", "-q", "-f", "qcow2", "-F", "raw", "-b",
                         os.path.join(image, "root.img"), overlay], check=True)

@@ -1,5 +1,5 @@
 // `azeltrack config check|get|set`: the configuration file through the same validated, atomic,
-// locked path the daemon uses for runtime changes (README "Configuration").
+// locked path the daemon uses for runtime changes (docs/configuration.md).
 #include <spdlog/spdlog.h>
 
 #include <iostream>

@@ -190,7 +190,7 @@ std::optional<std::string> ConfigStore::remove_stale_temps() const {
 std::string ConfigStore::serialize(const toml::table& root) {
   std::ostringstream out;
   out << "# azeltrack configuration, schema " << kSchemaVersion
-      << ", saved by azeltrack (README \"Configuration\").\n"
+      << ", saved by azeltrack (docs/configuration.md).\n"
          "# The previous version of this file is kept beside it as <name>.bak.\n\n"
       << toml_text(root) << '\n';
   return out.str();

@@ -14,8 +14,8 @@
 
 namespace azt::app {
 
-/// The daemon's configuration file as the one place settings change at runtime (README
-/// "Configuration", docs/daemon.md "Configuration").
+/// The daemon's configuration file as the one place settings change at runtime
+/// (docs/configuration.md, docs/daemon.md "Configuration").
 ///
 /// Loading: a primary that cannot be read or is not TOML (a torn or zeroed file) falls back to
 /// `FILE.bak` with a warning in notices(); a primary that is valid TOML but has a bad value is

@@ -103,7 +103,7 @@ struct WebConfig {
   std::vector<std::string> allowed_hosts;  ///< Host names besides IP literals and localhost
 };
 
-/// Everything `serve` reads (README "Configuration").
+/// Everything `serve` reads (docs/configuration.md).
 struct DaemonConfig {
   SkyConfig sky;                      ///< where the station is and what it can point at
   MountConfig mount;                  ///< [mount.az] / [mount.el]

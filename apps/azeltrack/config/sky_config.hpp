@@ -12,7 +12,7 @@
 namespace azt::app {
 
 /// Where the station is and what it can point at: [station], [atmosphere], [sources] and the
-/// band ([moon]); what `watch` reads (see README "Configuration").
+/// band ([moon]); what `watch` reads (docs/configuration.md).
 struct SkyConfig {
   SkySettings settings;
   std::string band_name;               ///< the band whose Moon echo Doppler is shown
