@@ -31,3 +31,10 @@ export function ago(s) {
   if (s < 172800) return `${Math.round(s / 3600)} h`;
   return `${Math.round(s / 86400)} d`;
 }
+// target.waiting as one line: "up at 00:47 UTC, in 2 h 13 min", or why it will not be.
+export function waitLine(w) {
+  if (!w.until) return w.reason || 'waiting';
+  const s = Math.max(0, isNum(w.in_s) ? w.in_s : 0);
+  const h = Math.floor(s / 3600); const m = Math.floor((s % 3600) / 60);
+  return `up at ${String(w.until).slice(11, 16)} UTC, in ${h ? `${h} h ` : ''}${m} min`;
+}

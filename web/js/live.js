@@ -3,7 +3,7 @@
 
 import { S, targetLabel } from './state.js';
 import { $, h, setText } from './dom.js';
-import { deg, fix, hz, isNum, pad, sameName, sdeg } from './format.js';
+import { deg, fix, hz, isNum, pad, sameName, sdeg, waitLine } from './format.js';
 import { bandList, wavelength } from './bands.js';
 import { drawTrend, TREND_S } from './trend.js';
 import { drawSky } from './sky.js';
@@ -51,6 +51,10 @@ export function onState(st) {
   const sat = st.mode === 'TRACK' ? t.satellite : null;
   $('sat-row').hidden = !sat;
   if (sat) setText('sat-pass', passLine(sat));
+  // Below the horizon limit: when it rises, instead of a pointing error that means nothing.
+  const wait = st.mode === 'TRACK' ? t.waiting : null;
+  $('wait-row').hidden = !wait;
+  if (wait) setText('wait-line', waitLine(wait));
   // B: corrections; C: antenna
   const known = renderCorrectionsAndPosition(st);
   const a = st.antenna || {};
@@ -74,7 +78,8 @@ export function onState(st) {
   const mode = st.mode || '—';
   setText('mode', mode);
   $('mode').className = `mode m-${mode}`;
-  setText('mode-who', st.who ? `by ${st.who}${st.pc_locked_out ? ' · PC programs locked out' : ''}` : '');
+  setText('mode-who', st.who ? `by ${st.who}` : '');
+  $('pc-locked').hidden = !st.pc_locked_out;
   setText('track-name', S.sel ? S.sel.label : 'choose a target');
   const d = st.utc ? new Date(st.utc) : null;
   if (d && !Number.isNaN(d.getTime())) {

@@ -49,6 +49,12 @@ function wire() {
     if (r.ok) toast('Faults cleared. Choose a target to move again.');
     return r;
   }));
+  // After a console STOP: hands the antenna to PC programs without moving it (EXT, no target).
+  $('allow-pc').addEventListener('click', () => perform(async () => {
+    const r = await act('allow PC control', 'POST', '/api/control/pc', undefined, { btn: $('allow-pc') });
+    if (r.ok) toast('PC programs may move the antenna; nothing moved.');
+    return r;
+  }));
   wireLogin();
   wireTargets(go);
 }

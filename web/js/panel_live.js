@@ -5,7 +5,7 @@
 
 import { S, targetLabel } from './state.js';
 import { $, setText } from './dom.js';
-import { deg, hz, pad, sameName, sdeg } from './format.js';
+import { deg, hz, pad, sameName, sdeg, waitLine } from './format.js';
 import { gpsLevel, gpsSummary } from './gps.js';
 import { linkOf, netSummary } from './network.js';
 import { timeLine } from './time.js';
@@ -48,6 +48,7 @@ function renderStatus(st, faults) {
   setText('st-net', netSummary(st.network));
   setText('st-faults', faults.length ? faults.join('; ') : 'none');
   $('faults-clear').hidden = !faults.length;
+  $('allow-pc').hidden = !st.pc_locked_out;
 }
 
 export function renderPanel(st) {
@@ -60,6 +61,9 @@ export function renderPanel(st) {
   const onMoon = st.mode === 'TRACK' && sameName(t.name, 'moon');
   $('echo-row').hidden = !onMoon;
   if (onMoon) setText('doppler', hz(st.moon ? st.moon.echo_doppler_hz : null));
+  const wait = st.mode === 'TRACK' ? t.waiting : null;
+  $('wait-row').hidden = !wait;
+  if (wait) setText('wait-line', waitLine(wait));
   renderIndicators(st);
   // B: the operator's corrections; C: where the antenna points
   const known = renderCorrectionsAndPosition(st);

@@ -57,6 +57,11 @@ export function wire() {
     if (r.ok) toast('STOP: motors stopped, PC programs locked out.');
     else if (r.status === 401) setText('login-error', 'STOP was refused: not logged in. Log in here, or stop the antenna at the controller.');
   });
+  // The hand-over to PC programs after a console STOP: EXT with nothing to go to, so nothing moves.
+  $('btn-allow-pc').addEventListener('click', async () => {
+    const r = await act('Allow PC control', 'POST', '/api/control/pc', undefined, { btn: $('btn-allow-pc') });
+    if (r.ok) toast('PC programs may move the antenna again; nothing moved.');
+  });
   $('btn-track').addEventListener('click', () => {
     const t = S.state && S.state.target;
     const sel = S.sel || (t && t.name ? { body: { name: t.name }, label: t.name } : null);

@@ -1,5 +1,6 @@
 #include "config/sim_config.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 #include "azt/proto/hub_frame.hpp"
@@ -21,10 +22,18 @@ sim::AxisParams read_plant(const ConfigSection& s, const AxisMount& mount,
   p.time_constant_s = s.number("time_constant_s").value_or(mount.time_constant_s);
   p.backlash_deg = s.number("backlash_deg").value_or(mount.backlash_deg);
   p.stiction_duty = s.number("stiction_duty").value_or(mount.min_duty);
-  p.start_deg = s.number("start_deg").value_or(p.start_deg);
   p.min_deg = s.number("min_deg").value_or(p.min_deg);
   p.max_deg = s.number("max_deg").value_or(p.max_deg);
-  if (auto ok = p.validate(); !ok) s.fail("time_constant_s", ok.error().message);
+  // Unless given, the antenna starts where the travel allows (an elevation limit above 0°).
+  const bool travel = p.min_deg < p.max_deg;  // else validate() says so
+  p.start_deg = s.number("start_deg")
+                    .value_or(travel ? std::clamp(p.start_deg, p.min_deg, p.max_deg) : p.start_deg);
+  if (auto ok = p.validate(); !ok) {
+    // "start_deg must be within …": the key the message begins with is the one at fault.
+    const std::string& message = ok.error().message;
+    const auto space = message.find(' ');
+    s.fail(message.substr(0, space), message.substr(space + 1));
+  }
   return p;
 }
 

@@ -174,12 +174,22 @@ json DaemonConsole::target_json() {
     const auto fix = p_.sky.at(p_.unix_s());
     return {{"name", p_.sky.target()->name},
             {"az_deg", fix ? json(fix->position.az_deg) : json(nullptr)},
-            {"el_deg", fix ? json(fix->position.el_deg) : json(nullptr)}};
+            {"el_deg", fix ? json(fix->position.el_deg) : json(nullptr)},
+            {"waiting", fix ? wait_.waiting(p_.sky.target(), fix->position.el_deg, p_.unix_s())
+                            : json(nullptr)}};
   }
   if (const auto fixed = p_.modes.fixed_target()) {
     return {{"name", p_.modes.who()}, {"az_deg", fixed->az_deg}, {"el_deg", fixed->el_deg}};
   }
   return {{"name", nullptr}, {"az_deg", nullptr}, {"el_deg", nullptr}};
+}
+
+json DaemonConsole::control_json() const {
+  const ControlHolder c = p_.commands.control();
+  return {{"holder", c.holder},
+          {"by", c.by},
+          {"since", c.since_unix_s > 0.0 ? json(utc_text(c.since_unix_s)) : json(nullptr)},
+          {"pc_allowed", c.pc_allowed}};
 }
 
 json DaemonConsole::state() {
@@ -198,7 +208,9 @@ json DaemonConsole::state() {
   }
   json target = target_json();
   json error = nullptr;
-  if (here && target["az_deg"].is_number() && target["el_deg"].is_number()) {
+  // While the target is below the horizon limit the antenna holds: no error to show.
+  const bool waiting = target.contains("waiting") && !target["waiting"].is_null();
+  if (here && !waiting && target["az_deg"].is_number() && target["el_deg"].is_number()) {
     error = {{"az", std::remainder(target["az_deg"].get<double>() - here->az_deg, 360.0)},
              {"el", target["el_deg"].get<double>() - here->el_deg}};
   }
@@ -209,6 +221,7 @@ json DaemonConsole::state() {
           {"mode", std::string(control::to_string(p_.modes.mode()))},
           {"who", p_.commands.commander()},
           {"pc_locked_out", p_.modes.external_locked()},
+          {"control", control_json()},
           {"antenna", antenna},
           {"target", target},
           {"error_deg", error},
@@ -369,6 +382,11 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
   if (action == "stop") {
     p_.commands.stop(CommandSource{CommandSource::Kind::Console, source});
     done(ActResult{});
+    return;
+  }
+  if (action == "control/pc") {
+    const auto outcome = p_.commands.allow_pc(CommandSource{CommandSource::Kind::Console, source});
+    done(ActResult{{{"mode", outcome.mode}, {"control", control_json()}}, std::nullopt});
     return;
   }
   if (action == "scan") {

@@ -25,6 +25,7 @@
 #include "station/satellite_tracker.hpp"
 #include "station/sky_follower.hpp"
 #include "station/station_commands.hpp"
+#include "station/target_wait.hpp"
 
 namespace azt::app {
 
@@ -63,7 +64,9 @@ struct ConsoleParts {
 class DaemonConsole final : public ConsoleModel {
  public:
   explicit DaemonConsole(ConsoleParts parts)
-      : p_(std::move(parts)), planner_({p_.config.sky, p_.offload, p_.unix_s}) {}
+      : p_(std::move(parts)),
+        planner_({p_.config.sky, p_.offload, p_.unix_s}),
+        wait_({p_.config.sky, p_.config.station.el_range.min_deg, p_.offload}) {}
 
   nlohmann::json state() override;
   nlohmann::json config() override;
@@ -87,6 +90,7 @@ class DaemonConsole final : public ConsoleModel {
   /// The Moon panel: position, distance, echo delay and Doppler for the band (and DX).
   nlohmann::json moon_json(const astro::TargetReport& r, const astro::SkySnapshot& sky) const;
   nlohmann::json target_json();
+  [[nodiscard]] nlohmann::json control_json() const;
 
   /// The console's target body, parsed into the one request type (a malformed field: ApiError).
   static TargetRequest target_request(const nlohmann::json& body);
@@ -117,6 +121,7 @@ class DaemonConsole final : public ConsoleModel {
 
   ConsoleParts p_;
   MoonPlanner planner_;
+  TargetWait wait_;
   Snapshot snapshot_;
   std::vector<std::string> restart_needed_;
   bool scan_apply_pending_ = false;  ///< a scan's apply is being saved: a second is refused

@@ -69,6 +69,8 @@ CommandRecord StationCommands::record_of(const TargetRequest& request) const {
 
 CommandOutcome StationCommands::accept(const CommandSource& source, const CommandRecord& record) {
   commander_ = source.name;
+  commander_kind_ = source.kind;
+  commander_since_unix_s_ = p_.unix_s ? p_.unix_s() : 0.0;
   commander_signature_ = mode_signature();
   if (p_.accepted) p_.accepted(source, record);
   return CommandOutcome{std::nullopt, std::string(control::to_string(p_.modes.mode())),
@@ -201,6 +203,31 @@ void StationCommands::stop(const CommandSource& source) {
 
 void StationCommands::heard_from(const CommandSource& source) {
   p_.modes.heard_from(source.name, p_.monotonic_s());
+}
+
+CommandOutcome StationCommands::allow_pc(const CommandSource& source) {
+  if (source.kind != CommandSource::Kind::Console) {
+    return refuse(source, Refusal{ServiceStatus::Rejected, "", "only the console hands over"});
+  }
+  p_.modes.allow_external();
+  forget_satellite();
+  return accept(source, {"allow PC control (nothing moves until a program sends a position)", ""});
+}
+
+ControlHolder StationCommands::control() const {
+  std::string holder;
+  switch (commander_kind_) {
+    case CommandSource::Kind::Console:
+      holder = "console";
+      break;
+    case CommandSource::Kind::Program:
+      holder = "pc";
+      break;
+    case CommandSource::Kind::Configuration:
+      holder = "configuration";
+      break;
+  }
+  return ControlHolder{holder, commander(), commander_since_unix_s_, !p_.modes.external_locked()};
 }
 
 }  // namespace azt::app

@@ -53,6 +53,15 @@ struct CommandRecord {
   std::string stream_kind;
 };
 
+/// Who holds the antenna: the source of the last accepted command, and whether PC programs'
+/// motion is taken now (/api/state `control`, the console's hand-over).
+struct ControlHolder {
+  std::string holder;  ///< "console", "pc" or "configuration": the kind of that source
+  std::string by;      ///< its name: "console 192.168.1.20", "rotctld 127.0.0.1:51234"
+  double since_unix_s = 0.0;
+  bool pc_allowed = true;  ///< false while the console's STOP locks programs out
+};
+
 struct StationCommandParts {
   control::ModeController& modes;
   AntennaBackend& antenna;
@@ -79,6 +88,10 @@ class StationCommands {
   CommandOutcome jog(const CommandSource& source, control::Jog jog);
   /// STOP, always accepted. The console's latches PC programs out until it chooses again.
   void stop(const CommandSource& source);
+  /// "Allow PC control" (console only): EXT with nothing to move to until a program sends a
+  /// position; lifts the console STOP's lock-out. Moves nothing.
+  CommandOutcome allow_pc(const CommandSource& source);
+  [[nodiscard]] ControlHolder control() const;
   /// Any traffic from a program: the keep-alive of its continuous move.
   void heard_from(const CommandSource& source);
   /// A refusal decided before the front door (a session's malformed line): reported the same way.
@@ -111,6 +124,8 @@ class StationCommands {
 
   StationCommandParts p_;
   std::string commander_ = "configuration";
+  CommandSource::Kind commander_kind_ = CommandSource::Kind::Configuration;
+  double commander_since_unix_s_ = 0.0;
   std::string commander_signature_;
 };
 

@@ -63,6 +63,7 @@ Result<Mode> ModeController::external(AzEl position, std::string client) {
   auto p = checked(position);
   if (!p) return p.error();
   jog_.reset();
+  external_waiting_ = false;
   mode_ = Mode::External;
   fixed_ = *p;
   who_ = std::move(client);
@@ -75,6 +76,7 @@ Result<Mode> ModeController::external_jog(Jog jog, std::string client, double no
     return fail("a move needs a direction on at least one axis");
   }
   mode_ = Mode::External;
+  external_waiting_ = false;
   jog_ = jog;
   jog_heard_s_ = now_s;
   who_ = std::move(client);
@@ -100,8 +102,17 @@ void ModeController::stop(bool from_console) {
   external_locked_ = from_console;
 }
 
+void ModeController::allow_external() {
+  jog_.reset();
+  external_locked_ = false;
+  external_waiting_ = true;
+  mode_ = Mode::External;
+  who_ = "PC programs";
+}
+
 std::optional<AzEl> ModeController::fixed_target() const {
-  if (mode_ == Mode::Manual || mode_ == Mode::Park || (mode_ == Mode::External && !jog_)) {
+  const bool external_fixed = mode_ == Mode::External && !jog_ && !external_waiting_;
+  if (mode_ == Mode::Manual || mode_ == Mode::Park || external_fixed) {
     return fixed_;
   }
   return std::nullopt;
@@ -121,6 +132,9 @@ Demand ModeController::demand(const std::optional<AzEl>& sky) const {
     case Mode::Park:
     case Mode::External:
       if (jog_) return Demand{std::nullopt, "EXT move by " + who_, jog_};
+      if (mode_ == Mode::External && external_waiting_) {
+        return hold_or_go(std::nullopt, "EXT: waiting for a PC program's position");
+      }
       return hold_or_go(fixed_, std::string(to_string(mode_)) + " " + who_);
     case Mode::Track:
       break;

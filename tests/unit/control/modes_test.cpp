@@ -48,6 +48,24 @@ TEST(Modes, ManualParkExternalAndStop) {
   EXPECT_FALSE(m.demand(AzEl{1, 1}).position.has_value());
 }
 
+TEST(Modes, AllowingPcControlAfterAConsoleStopMovesNothingUntilAProgramAsks) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  ASSERT_TRUE(m.external(AzEl{10, 10}, "gpredict").ok());
+  m.stop(/*from_console=*/true);
+  EXPECT_TRUE(m.external_locked());
+  EXPECT_FALSE(m.external(AzEl{20, 20}, "gpredict").ok());
+  m.allow_external();
+  EXPECT_FALSE(m.external_locked());
+  EXPECT_EQ(m.mode(), Mode::External);
+  // Not the last EXT position (10, 10) again: nothing until a program sends one.
+  EXPECT_FALSE(m.demand(AzEl{50, 50}).position.has_value());
+  EXPECT_FALSE(m.fixed_target().has_value());
+  EXPECT_NE(m.demand(std::nullopt).reason.find("waiting"), std::string::npos);
+  ASSERT_TRUE(m.external(AzEl{20, 20}, "gpredict").ok());
+  EXPECT_DOUBLE_EQ(m.demand(std::nullopt).position->az_deg, 20);
+  EXPECT_DOUBLE_EQ(m.fixed_target()->el_deg, 20);
+}
+
 TEST(Modes, AJogStopsWhenItsClientFallsSilentForOneSecond) {
   ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
   ASSERT_TRUE(m.external_jog(Jog{1, 0}, "rotctld 127.0.0.1:4000", 10.0).ok());

@@ -71,6 +71,10 @@ class ModeController {
   /// STOP. From the console it is latched against PC programs: their targets are refused until
   /// the console chooses a mode again (the user's STOP must not be undone by a polling program).
   void stop(bool from_console = false);
+  /// "Allow PC control" from the console: EXT with no position yet, so nothing moves until a PC
+  /// program sends one, and the console's STOP no longer locks programs out. The hand-over that
+  /// TRACK, MAN or PARK would give only by moving the antenna.
+  void allow_external();
   [[nodiscard]] bool external_locked() const { return external_locked_; }
   /// The position targets set by MAN, PARK and EXT (nullopt in TRACK and STOP, and while jogging).
   [[nodiscard]] std::optional<AzEl> fixed_target() const;
@@ -96,7 +100,8 @@ class ModeController {
   std::string who_ = "start-up";
   AzEl fixed_;  ///< MAN / PARK / EXT position
   int park_slot_ = 0;
-  std::optional<Jog> jog_;  ///< EXT continuous move
+  std::optional<Jog> jog_;         ///< EXT continuous move
+  bool external_waiting_ = false;  ///< EXT allowed from the console, no program's position yet
   double jog_heard_s_ = 0.0;
   bool external_locked_ = false;
 };
