@@ -139,6 +139,10 @@ dump=$(printf '\\dump_state\n' | send_lines "$rport")
 [ "$(sed -n 1p <<<"$dump")" = "1" ] && grep -q '^min_az=-180' <<<"$dump" && ok ||
   bad "dump_state: $dump"
 
+# get_info as rotctl shows it (63 characters): the station's 6-character locator is not cut.
+info=$(rotctl -m 2 -r "127.0.0.1:$rport" _ 2>&1)
+grep -Eq '^azeltrack [^ ]+ at [A-R]{2}[0-9]{2}[a-x]{2}: ' <<<"$info" && ok || bad "get_info: $info"
+
 # Strictness: trailing junk, NaN and out-of-range targets are RPRT -1 and move nothing.
 for line in 'P 10 10 junk' 'P nan 10' 'P 500 10' 'P 10 95'; do
   reply=$(printf '%s\n' "$line" | send_lines "$rport")

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "antenna/axis_devices.hpp"
+#include "azt/astro/maidenhead.hpp"
 #include "azt/linux/atomic_file.hpp"
 #include "azt/linux/clock_probe.hpp"
 #include "azt/linux/libgpiod_lines.hpp"
@@ -24,6 +25,13 @@
 
 namespace azt::app {
 namespace {
+
+/// The station's 6-character locator for rotctld's get_info (the configured grid may have 4 to
+/// 10 characters, or come from lat/lon): the square programs and operators exchange.
+std::string station_locator(const astro::Observer& observer) {
+  auto grid = astro::encode_locator(observer.lat_deg, observer.lon_deg, 6);
+  return grid ? *grid : "(no locator)";
+}
 
 /// A client's bytes may be in a log line: valid UTF-8, no control characters, a bounded length.
 std::string log_safe(const std::string& text) {
@@ -90,8 +98,9 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
           }}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
-          "azeltrack " + std::string(program_version()) + " " + antenna_->describe() + " at " +
-              config_.sky.settings.grid,
+          // The locator first: Hamlib shows 63 characters of it (format_get_info).
+          "azeltrack " + std::string(program_version()) + " at " +
+              station_locator(config_.sky.settings.observer) + ": " + antenna_->describe(),
           [this](const std::string& line) { control_event(line); }),
       // SIGHUP too: a closed terminal must stop the motors, not kill the process mid-move.
       signals_(io_, SIGINT, SIGTERM, SIGHUP),
