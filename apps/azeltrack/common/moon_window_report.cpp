@@ -3,19 +3,11 @@
 #include "azt/astro/time_scales.hpp"
 
 namespace azt::app {
-namespace {
-
-std::string iso(double unix_s) {
-  return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
-}
-
-}  // namespace
-
 nlohmann::json moon_window_json(const eme::MoonWindow& w) {
-  return {{"start", iso(w.start_unix_s)},
-          {"end", iso(w.end_unix_s)},
+  return {{"start", astro::format_iso8601_utc_unix(w.start_unix_s)},
+          {"end", astro::format_iso8601_utc_unix(w.end_unix_s)},
           {"duration_s", w.end_unix_s - w.start_unix_s},
-          {"best", iso(w.best_unix_s)},
+          {"best", astro::format_iso8601_utc_unix(w.best_unix_s)},
           {"dgrd_db", w.dgrd_db},
           {"tsky_k", w.tsky_k},
           {"dpol_deg", w.dpol_deg},

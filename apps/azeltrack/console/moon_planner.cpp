@@ -91,8 +91,7 @@ void MoonPlanner::answer(const std::string& query, ActDone done) {
         done(ActResult{{{"grid", p_.sky.settings.grid},
                         {"dx_grid", plan.dx_grid},
                         {"band", plan.band},
-                        {"from", astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(
-                                     plan.settings.from_unix_s))},
+                        {"from", astro::format_iso8601_utc_unix(plan.settings.from_unix_s)},
                         {"days", plan.settings.days},
                         {"min_el_deg", plan.settings.min_el_deg},
                         {"dx_min_el_deg", plan.settings.dx_min_el_deg},

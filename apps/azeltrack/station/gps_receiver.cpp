@@ -13,10 +13,6 @@ nlohmann::json optional_json(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
-std::string iso_utc(double unix_s) {
-  return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
-}
-
 nlohmann::json site_json(const gnss::Site& s) {
   return {{"lat_deg", s.lat_deg}, {"lon_deg", s.lon_deg}, {"alt_m", s.alt_m}};
 }
@@ -103,20 +99,22 @@ nlohmann::json GpsReceiver::to_json() const {
                     {"snr_dbhz", sat.snr_dbhz},
                     {"used", sat.used}});
   }
-  return {{"state", std::string(gnss::to_string(s.state))},
-          {"lat_deg", optional_json(s.lat_deg)},
-          {"lon_deg", optional_json(s.lon_deg)},
-          {"alt_m", optional_json(s.alt_m)},
-          {"sats_used", s.sats_used},
-          {"sats_visible", s.sats_visible},
-          {"hdop", optional_json(s.hdop)},
-          {"time_utc", s.time_unix_s ? nlohmann::json(iso_utc(*s.time_unix_s)) : nullptr},
-          {"position_in_use", in_use_.has_value()},
-          {"surveyed", in_use_ ? site_json(*in_use_) : nlohmann::json(nullptr)},
-          {"jump_refused", refused_ ? site_json(*refused_) : nlohmann::json(nullptr)},
-          {"fixes_refused", fixes_refused_},
-          {"last_fix_refused", last_fix_refused_},
-          {"satellites", sats}};
+  return {
+      {"state", std::string(gnss::to_string(s.state))},
+      {"lat_deg", optional_json(s.lat_deg)},
+      {"lon_deg", optional_json(s.lon_deg)},
+      {"alt_m", optional_json(s.alt_m)},
+      {"sats_used", s.sats_used},
+      {"sats_visible", s.sats_visible},
+      {"hdop", optional_json(s.hdop)},
+      {"time_utc",
+       s.time_unix_s ? nlohmann::json(astro::format_iso8601_utc_unix(*s.time_unix_s)) : nullptr},
+      {"position_in_use", in_use_.has_value()},
+      {"surveyed", in_use_ ? site_json(*in_use_) : nlohmann::json(nullptr)},
+      {"jump_refused", refused_ ? site_json(*refused_) : nlohmann::json(nullptr)},
+      {"fixes_refused", fixes_refused_},
+      {"last_fix_refused", last_fix_refused_},
+      {"satellites", sats}};
 }
 
 }  // namespace azt::app

@@ -21,10 +21,9 @@ void RecentEvents::add(double unix_s, std::string text, std::string merge_key) {
 nlohmann::json RecentEvents::to_json() const {
   nlohmann::json out = nlohmann::json::array();
   for (auto it = events_.rbegin(); it != events_.rend(); ++it) {
-    out.push_back(
-        {{"utc", astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(it->last_s))},
-         {"text", it->text},
-         {"count", it->count}});
+    out.push_back({{"utc", astro::format_iso8601_utc_unix(it->last_s)},
+                   {"text", it->text},
+                   {"count", it->count}});
   }
   return out;
 }

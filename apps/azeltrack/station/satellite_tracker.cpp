@@ -19,15 +19,12 @@ std::optional<double> modification_time(const std::string& path) {
   return static_cast<double>(st.st_mtim.tv_sec) + static_cast<double>(st.st_mtim.tv_nsec) * 1e-9;
 }
 
-std::string iso(double unix_s) {
-  return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
-}
-
 /// The log's word on a pass the mount cannot fly on the satellite throughout.
 std::string loss_note(const track::PassPlan& plan) {
   if (plan.loss_s <= 0.0) return "";
   return ", " + std::to_string(std::lround(plan.loss_s)) + " s planned beyond " +
-         std::to_string(std::lround(plan.loss_error_deg)) + "° from " + iso(plan.loss_from_s);
+         std::to_string(std::lround(plan.loss_error_deg)) + "° from " +
+         astro::format_iso8601_utc_unix(plan.loss_from_s);
 }
 
 }  // namespace
@@ -152,8 +149,9 @@ void SatelliteTracker::plan_next(double unix_s, double mount_az_deg) {
   }
   next.plan = std::move(plan).value();
   for (double* t : {&next.pass.aos_s, &next.pass.tca_s, &next.pass.los_s}) *t += unix_s;
-  log_("satellites: " + sat->elements.label() + " next pass AOS " + iso(next.pass.aos_s) +
-       ", max el " + std::to_string(static_cast<int>(std::lround(p.max_el_deg))) + "°" +
+  log_("satellites: " + sat->elements.label() + " next pass AOS " +
+       astro::format_iso8601_utc_unix(next.pass.aos_s) + ", max el " +
+       std::to_string(static_cast<int>(std::lround(p.max_el_deg))) + "°" +
        (next.plan.flip ? ", flipped" : "") + loss_note(next.plan));
   problem_.clear();
   planned_ = std::move(next);
@@ -213,9 +211,9 @@ nlohmann::json SatelliteTracker::status(double unix_s) const {
     j["aim_az_deg"] = aim.az_deg;
     j["aim_el_deg"] = aim.el_deg;
     j["phase"] = unix_s < planned_->pass.aos_s ? "waiting for AOS" : "tracking";
-    j["aos"] = iso(planned_->pass.aos_s);
-    j["tca"] = iso(planned_->pass.tca_s);
-    j["los"] = iso(planned_->pass.los_s);
+    j["aos"] = astro::format_iso8601_utc_unix(planned_->pass.aos_s);
+    j["tca"] = astro::format_iso8601_utc_unix(planned_->pass.tca_s);
+    j["los"] = astro::format_iso8601_utc_unix(planned_->pass.los_s);
     j["max_el_deg"] = planned_->pass.max_el_deg;
     j["flip"] = planned_->plan.flip;
     j["planned_max_error_deg"] = planned_->plan.max_error_deg;
@@ -225,8 +223,11 @@ nlohmann::json SatelliteTracker::status(double unix_s) const {
     j["planned_loss"] = {
         {"seconds", plan.loss_s},
         {"beyond_deg", plan.loss_error_deg},
-        {"from", plan.loss_s > 0.0 ? nlohmann::json(iso(plan.loss_from_s)) : nullptr},
-        {"to", plan.loss_s > 0.0 ? nlohmann::json(iso(plan.loss_to_s)) : nullptr}};
+        {"from", plan.loss_s > 0.0
+                     ? nlohmann::json(astro::format_iso8601_utc_unix(plan.loss_from_s))
+                     : nullptr},
+        {"to", plan.loss_s > 0.0 ? nlohmann::json(astro::format_iso8601_utc_unix(plan.loss_to_s))
+                                 : nullptr}};
   } else {
     j["phase"] = "no pass planned";
   }
@@ -248,9 +249,9 @@ void SatelliteTracker::refresh_passes(double unix_s) {
   auto passes = find_satellite_passes(sat, now, 24.0, s_.mask, s_.dut1_s, s_.site);
   if (!passes) return;
   for (const auto& p : passes.value()) {
-    u.passes.push_back({{"aos", iso(unix_s + p.aos_s)},
-                        {"tca", iso(unix_s + p.tca_s)},
-                        {"los", iso(unix_s + p.los_s)},
+    u.passes.push_back({{"aos", astro::format_iso8601_utc_unix(unix_s + p.aos_s)},
+                        {"tca", astro::format_iso8601_utc_unix(unix_s + p.tca_s)},
+                        {"los", astro::format_iso8601_utc_unix(unix_s + p.los_s)},
                         {"max_el_deg", p.max_el_deg},
                         {"aos_az_deg", p.aos_az_deg},
                         {"los_az_deg", p.los_az_deg}});
@@ -288,12 +289,16 @@ nlohmann::json SatelliteTracker::pass_track() const {
   if (!planned_) return out;
   const auto& sky = planned_->sky;
   for (std::size_t i = 0; i < sky.size(); i += 10) {
-    out.push_back({{"utc", iso(sky[i].t_s)}, {"az_deg", sky[i].az_deg}, {"el_deg", sky[i].el_deg}});
+    out.push_back({{"utc", astro::format_iso8601_utc_unix(sky[i].t_s)},
+                   {"az_deg", sky[i].az_deg},
+                   {"el_deg", sky[i].el_deg}});
   }
   // The end of the pass too, so a short (grazing) pass still draws as a line from AOS to LOS.
   if (sky.size() > 1 && (sky.size() - 1) % 10 != 0) {
     const auto& s = sky.back();
-    out.push_back({{"utc", iso(s.t_s)}, {"az_deg", s.az_deg}, {"el_deg", s.el_deg}});
+    out.push_back({{"utc", astro::format_iso8601_utc_unix(s.t_s)},
+                   {"az_deg", s.az_deg},
+                   {"el_deg", s.el_deg}});
   }
   return out;
 }

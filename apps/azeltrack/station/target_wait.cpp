@@ -10,15 +10,7 @@
 #include "common/sky_report.hpp"
 
 namespace azt::app {
-namespace {
-
 using json = nlohmann::json;
-
-std::string utc_text(double unix_s) {
-  return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
-}
-
-}  // namespace
 
 json TargetWait::waiting(const std::optional<astro::Target>& target, double el_deg,
                          double now_unix_s) {
@@ -36,7 +28,7 @@ json TargetWait::waiting(const std::optional<astro::Target>& target, double el_d
   if (!error_.empty()) {
     w["reason"] = w["reason"].get<std::string>() + "; its rise could not be found: " + error_;
   } else if (until_) {
-    w["until"] = utc_text(*until_);
+    w["until"] = astro::format_iso8601_utc_unix(*until_);
     w["in_s"] = std::fmax(0.0, std::round(*until_ - now_unix_s));
   } else {
     w["reason"] = w["reason"].get<std::string>() + " and does not rise above it within two days";

@@ -117,6 +117,10 @@ Result<UtcInstant> parse_iso8601_utc(std::string_view text) {
   return instant;
 }
 
+std::string format_iso8601_utc_unix(double unix_s) {
+  return format_iso8601_utc(UtcInstant::from_unix_seconds(unix_s));
+}
+
 std::string format_iso8601_utc(const UtcInstant& t) {
   int year = 0, month = 0, day = 0;
   double fraction_of_day = 0.0;

@@ -47,6 +47,9 @@ UtcInstant utc_plus(const UtcInstant& from, double seconds);
 /// next day). A non-finite instant, or one ERFA's calendar cannot hold, formats as
 /// "(invalid UTC instant)", which the parser rejects.
 std::string format_iso8601_utc(const UtcInstant& t);
+/// The same for an instant in Unix seconds (UTC seconds since 1970), as the daemon's clock and
+/// its JSON hold instants.
+std::string format_iso8601_utc_unix(double unix_s);
 
 /// The time scales the sky needs at one instant.
 struct TimeScales {
