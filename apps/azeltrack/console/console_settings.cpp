@@ -3,16 +3,9 @@
 #include "console/daemon_console.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
-#include <map>
-#include <memory>
 
-#include "azt/astro/bands.hpp"
-#include "azt/astro/time_scales.hpp"
-#include "azt/calibration/scan_plan.hpp"
 #include "azt/timekeeping/ntp_servers.hpp"
-#include "common/sky_report.hpp"
 #include "common/usage_error.hpp"
 #include "config/sky_config.hpp"
 #include "console/body_fields.hpp"

@@ -2,19 +2,11 @@
 // (DaemonConsole's read side; its actions are in daemon_console.cpp and console_settings.cpp).
 #include "console/daemon_console.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <map>
-#include <memory>
 
 #include "azt/astro/bands.hpp"
 #include "azt/astro/time_scales.hpp"
-#include "azt/calibration/scan_plan.hpp"
-#include "azt/timekeeping/ntp_servers.hpp"
 #include "common/sky_report.hpp"
-#include "common/usage_error.hpp"
-#include "config/sky_config.hpp"
 
 namespace azt::app {
 namespace {
@@ -35,10 +27,6 @@ std::string kind_name(astro::Target::Kind kind) {
       return "spacecraft";
   }
   return "radec";
-}
-
-std::string utc_text(double unix_s) {
-  return astro::format_iso8601_utc(astro::UtcInstant::from_unix_seconds(unix_s));
 }
 
 /// One target of the console's list, where it is now: a spacecraft outside its table is listed
@@ -140,7 +128,8 @@ json DaemonConsole::control_json() const {
   const ControlHolder c = p_.commands.control();
   return {{"holder", c.holder},
           {"by", c.by},
-          {"since", c.since_unix_s > 0.0 ? json(utc_text(c.since_unix_s)) : json(nullptr)},
+          {"since", c.since_unix_s > 0.0 ? json(astro::format_iso8601_utc_unix(c.since_unix_s))
+                                         : json(nullptr)},
           {"pc_allowed", c.pc_allowed}};
 }
 
@@ -169,7 +158,7 @@ json DaemonConsole::state() {
   const Snapshot& sky = snapshot();
   const auto& c = p_.config.station.corrections;
   const auto& obs = p_.config.sky.settings.observer;
-  return {{"utc", utc_text(p_.unix_s())},
+  return {{"utc", astro::format_iso8601_utc_unix(p_.unix_s())},
           {"mode", std::string(control::to_string(p_.modes.mode()))},
           {"who", p_.commands.commander()},
           {"pc_locked_out", p_.modes.external_locked()},
@@ -278,10 +267,10 @@ json DaemonConsole::sky(double hours) {
     const auto moon = snap ? snap->observe(astro::Target::moon()) : snap.error();
     const auto sun = snap ? snap->observe(astro::Target::sun()) : snap.error();
     if (!moon || !sun) break;  // past the ephemeris or the leap-second table
-    moon_path.push_back({{"utc", utc_text(t)},
+    moon_path.push_back({{"utc", astro::format_iso8601_utc_unix(t)},
                          {"az_deg", moon->observation.place.az_deg},
                          {"el_deg", moon->observation.el_deg}});
-    sun_path.push_back({{"utc", utc_text(t)},
+    sun_path.push_back({{"utc", astro::format_iso8601_utc_unix(t)},
                         {"az_deg", sun->observation.place.az_deg},
                         {"el_deg", sun->observation.el_deg}});
   }
