@@ -172,16 +172,24 @@ function renderMoonEme(m) {
   setText('moon-sunsep', isNum(m.sun_sep_deg) ? `${m.sun_sep_deg.toFixed(1)}°` : '—');
   setText('moon-illum', isNum(m.illumination) ? `${Math.round(100 * m.illumination)} %` : '—');
   setText('moon-par', isNum(m.parallactic_deg) ? `${m.parallactic_deg.toFixed(1)}°` : '—');
-  const dx = isNum(m.dx_dpol_deg);
+  const dx = isNum(m.dpol_deg);
   $('moon-dpol-row').hidden = !dx;
-  if (dx) setText('moon-dpol', `${m.dx_dpol_deg > 0 ? '+' : ''}${m.dx_dpol_deg.toFixed(1)}° / ${m.mnr_db.toFixed(1)} dB`);
+  if (dx) setText('moon-dpol', `${m.dpol_deg > 0 ? '+' : ''}${m.dpol_deg.toFixed(1)}° / ${m.mnr_db.toFixed(1)} dB`);
+  setText('moon-dec', isNum(m.dec_deg) ? `${m.dec_deg.toFixed(1)}°` : '—');
+  const rate = (hz) => `${hz > 0 ? '+' : ''}${hz.toFixed(1)} Hz/min`;
+  const dfdt = isNum(m.echo_doppler_rate_hz_min) ? rate(m.echo_doppler_rate_hz_min) : '—';
+  setText('moon-dfdt', isNum(m.dx_echo_doppler_rate_hz_min) ? `${dfdt} · DX ${rate(m.dx_echo_doppler_rate_hz_min)}` : dfdt);
+  const there = m.dx && isNum(m.dx.az_deg) ? m.dx : null;
+  $('moon-dx-row').hidden = !there;
+  if (there) setText('moon-dx', `${deg(there.az_deg)} / ${deg(there.el_deg)} / ${there.dec_deg.toFixed(1)}°`);
 }
 
 function renderMoon(m) {
   if (!m) {
     setText('moon-azel', 'not available'); setText('moon-dist', '—'); setText('moon-delay', '—');
-    for (const id of ['moon-tsky', 'moon-width', 'moon-sunsep', 'moon-illum', 'moon-par']) setText(id, '—');
+    for (const id of ['moon-tsky', 'moon-width', 'moon-sunsep', 'moon-illum', 'moon-par', 'moon-dec', 'moon-dfdt']) setText(id, '—');
     $('moon-dpol-row').hidden = true;
+    $('moon-dx-row').hidden = true;
     if (S.dopKey) { $('moon-doppler').replaceChildren(); S.dopKey = ''; }
     return;
   }

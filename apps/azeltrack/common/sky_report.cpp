@@ -39,12 +39,32 @@ nlohmann::json moon_echo_json(const astro::TargetReport& r, const SkySettings& s
   return out;
 }
 
-/// Dpol, MNR, Tsky, Dgrd, the Sun's separation and the lit fraction (issue 16 §1; WSJT-X's
-/// definitions, docs/eme.md). Tsky and Dgrd at the station's frequency, and per band.
-nlohmann::json moon_eme_json(const astro::TargetReport& r, const astro::SkySnapshot& snapshot,
-                             const SkySettings& settings, nlohmann::json& bands) {
+/// The echo Doppler's change over the next minute, Hz per minute (WSJT-X's Df/dt in the Astro
+/// window and azel.dat, lib/astro0.f90): self, and DX when there is one.
+void doppler_rates_json(const astro::TargetReport& r, const astro::SkySnapshot& snapshot,
+                        double freq_mhz, nlohmann::json& out) {
+  const auto later = snapshot.later(60.0);
+  if (!later) return;
+  const auto moon_later = later->observe(astro::Target::moon());
+  if (!moon_later || !moon_later->observation.place.range_rate_km_s) return;
+  const double rate = *r.observation.place.range_rate_km_s;
+  const double rate_later = *moon_later->observation.place.range_rate_km_s;
+  out["echo_doppler_rate_hz_min"] = astro::self_echo_doppler_hz(freq_mhz, rate_later) -
+                                    astro::self_echo_doppler_hz(freq_mhz, rate);
+  if (r.dx_range_rate_km_s && moon_later->dx_range_rate_km_s) {
+    out["dx_echo_doppler_rate_hz_min"] =
+        astro::dx_echo_doppler_hz(freq_mhz, rate_later, *moon_later->dx_range_rate_km_s) -
+        astro::dx_echo_doppler_hz(freq_mhz, rate, *r.dx_range_rate_km_s);
+  }
+}
+
+}  // namespace
+
+std::optional<eme::MoonConditions> moon_conditions_at(const astro::TargetReport& r,
+                                                      const astro::SkySnapshot& snapshot,
+                                                      const SkySettings& settings) {
   const auto sun = snapshot.observe(astro::Target::sun());
-  if (!sun) return nlohmann::json::object();
+  if (!sun) return std::nullopt;
   eme::MoonInputs in;
   in.lat_deg = settings.observer.lat_deg;
   in.moon = r.observation.place;
@@ -59,9 +79,24 @@ nlohmann::json moon_eme_json(const astro::TargetReport& r, const astro::SkySnaps
       in.dx_moon_minute_later = moon_later->dx_place;
     }
   }
-  const eme::MoonConditions c = eme::moon_conditions(in);
+  return eme::moon_conditions(in);
+}
+
+namespace {
+
+/// Dpol, MNR, Tsky, Dgrd, the Sun's separation and the lit fraction (WSJT-X's definitions,
+/// docs/eme.md). Tsky and Dgrd at the station's frequency, and per band. `dpol_deg` is WSJT-X's
+/// Dpol (between the two stations, null without a DX); `dx_dpol_deg` is its former name, kept
+/// for one version.
+nlohmann::json moon_eme_json(const astro::TargetReport& r, const astro::SkySnapshot& snapshot,
+                             const SkySettings& settings, nlohmann::json& bands) {
+  const auto conditions = moon_conditions_at(r, snapshot, settings);
+  if (!conditions) return nlohmann::json::object();
+  const eme::MoonConditions& c = *conditions;
+  const double freq_mhz = settings.freq_mhz.value_or(144.0);
   nlohmann::json out{{"parallactic_deg", c.parallactic_deg},
-                     {"dpol_deg", c.dpol_deg},
+                     {"dpol_deg", optional_json(c.dx_dpol_deg)},
+                     {"self_dpol_deg", c.dpol_deg},
                      {"dx_dpol_deg", optional_json(c.dx_dpol_deg)},
                      {"mnr_db", optional_json(c.mnr_db)},
                      {"ecliptic_lon_deg", c.ecliptic_lon_deg},
@@ -82,7 +117,7 @@ nlohmann::json moon_eme_json(const astro::TargetReport& r, const astro::SkySnaps
     const double tsky = eme::tsky_k(c.ecliptic_lon_deg, b["freq_mhz"].get<double>());
     b["tsky_k"] = tsky;
     b["dgrd_db"] = eme::dgrd_db(tsky, b["freq_mhz"].get<double>(), km);
-    if (c.width_hz) b["width_hz"] = *c.width_hz * b["freq_mhz"].get<double>() / in.freq_mhz;
+    if (c.width_hz) b["width_hz"] = *c.width_hz * b["freq_mhz"].get<double>() / freq_mhz;
   }
   return out;
 }
@@ -142,11 +177,13 @@ nlohmann::json report_json(const astro::TargetReport& r, const astro::SkySnapsho
   if (r.target.kind == astro::Target::Kind::Moon) {
     out.update(moon_echo_json(r, settings));
     out.update(moon_eme_json(r, snapshot, settings, out["bands"]));
+    if (settings.freq_mhz) doppler_rates_json(r, snapshot, *settings.freq_mhz, out);
   }
   if (r.dx_place) {
     out["dx"] = {{"grid", settings.dx_grid},
                  {"az_deg", r.dx_place->az_deg},
                  {"el_geometric_deg", r.dx_place->el_geometric_deg},
+                 {"dec_deg", r.dx_place->dec_deg},
                  {"range_rate_km_s", optional_json(r.dx_range_rate_km_s)}};
   }
   return out;

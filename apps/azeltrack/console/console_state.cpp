@@ -59,25 +59,37 @@ json DaemonConsole::moon_json(const astro::TargetReport& r, const astro::SkySnap
   const json full = report_json(r, sky, station.settings, p_.ephemeris.name());
   json doppler = json::object();
   for (const auto& b : full["bands"]) doppler[b["band"].get<std::string>()] = b["echo_doppler_hz"];
+  const auto field = [&full](const char* name) { return full.value(name, json(nullptr)); };
+  json dx = nullptr;  // the Moon seen from the DX station, as WSJT-X's Astro window shows it
+  if (full.contains("dx")) {
+    dx = {{"az_deg", full["dx"]["az_deg"]},
+          {"el_deg", full["dx"]["el_geometric_deg"]},
+          {"dec_deg", full["dx"]["dec_deg"]}};
+  }
   return {{"az_deg", r.observation.place.az_deg},
           {"el_deg", r.observation.el_deg},
+          {"dec_deg", r.observation.place.dec_deg},
           {"distance_km", full["distance_km"]},
-          {"echo_delay_s", full.value("echo_delay_s", json(nullptr))},
+          {"echo_delay_s", field("echo_delay_s")},
           {"band", station.band_name},
-          {"echo_doppler_hz", full.value("echo_doppler_hz", json(nullptr))},
-          {"dx_echo_doppler_hz", full.value("dx_echo_doppler_hz", json(nullptr))},
+          {"echo_doppler_hz", field("echo_doppler_hz")},
+          {"echo_doppler_rate_hz_min", field("echo_doppler_rate_hz_min")},
+          {"dx_echo_doppler_hz", field("dx_echo_doppler_hz")},
+          {"dx_echo_doppler_rate_hz_min", field("dx_echo_doppler_rate_hz_min")},
+          {"dx", dx},
           {"doppler_hz", doppler},
-          // Issue 16 §1: WSJT-X's Astronomical Data, at the band (docs/eme.md).
-          {"parallactic_deg", full.value("parallactic_deg", json(nullptr))},
-          {"dpol_deg", full.value("dpol_deg", json(nullptr))},
-          {"dx_dpol_deg", full.value("dx_dpol_deg", json(nullptr))},
-          {"mnr_db", full.value("mnr_db", json(nullptr))},
-          {"tsky_k", full.value("tsky_k", json(nullptr))},
-          {"dgrd_db", full.value("dgrd_db", json(nullptr))},
-          {"sun_sep_deg", full.value("sun_sep_deg", json(nullptr))},
-          {"illumination", full.value("illumination", json(nullptr))},
-          {"width_hz", full.value("width_hz", json(nullptr))},
-          {"dx_width_hz", full.value("dx_width_hz", json(nullptr))}};
+          // WSJT-X's Astronomical Data, at the band (docs/eme.md).
+          {"parallactic_deg", field("parallactic_deg")},
+          {"dpol_deg", field("dpol_deg")},
+          {"self_dpol_deg", field("self_dpol_deg")},
+          {"dx_dpol_deg", field("dx_dpol_deg")},
+          {"mnr_db", field("mnr_db")},
+          {"tsky_k", field("tsky_k")},
+          {"dgrd_db", field("dgrd_db")},
+          {"sun_sep_deg", field("sun_sep_deg")},
+          {"illumination", field("illumination")},
+          {"width_hz", field("width_hz")},
+          {"dx_width_hz", field("dx_width_hz")}};
 }
 
 const DaemonConsole::Snapshot& DaemonConsole::snapshot() {

@@ -31,6 +31,15 @@ void AzelDatExport::arm() {
   });
 }
 
+eme::AzelDat::PolLine AzelDatExport::pol_line(const astro::TargetReport& moon,
+                                              const astro::SkySnapshot& sky) const {
+  const auto c = moon_conditions_at(moon, sky, p_.sky.settings);
+  if (!c) return {};
+  // WSJT-X writes 0 for what needs a DX grid when there is none (lib/astrosub.f90).
+  return {c->dx_dpol_deg.value_or(0.0), c->mnr_db.value_or(0.0), c->dgrd_db,
+          c->width_hz.value_or(0.0), c->dx_width_hz.value_or(0.0)};
+}
+
 std::optional<std::string> AzelDatExport::text_at(double unix_s) {
   const auto sky =
       sky_snapshot(p_.ephemeris, p_.sky.settings, astro::UtcInstant::from_unix_seconds(unix_s));
@@ -65,6 +74,7 @@ std::optional<std::string> AzelDatExport::text_at(double unix_s) {
   last_self_hz_ = d.self_doppler_hz;
   last_dx_hz_ = d.dx_doppler_hz;
   d.transmitting = p_.transmitting && p_.transmitting();
+  if (p_.pol_line) d.pol = pol_line(*moon, *sky);
   return eme::azel_dat_text(d);
 }
 

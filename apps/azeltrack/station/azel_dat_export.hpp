@@ -10,7 +10,9 @@
 #include <string>
 
 #include "azt/astro/ephemeris.hpp"
+#include "azt/astro/sky_snapshot.hpp"
 #include "azt/astro/target.hpp"
+#include "azt/eme/azel_dat.hpp"
 #include "azt/linux/asio.hpp"
 #include "common/off_loop.hpp"
 #include "config/sky_config.hpp"
@@ -29,6 +31,8 @@ struct AzelDatParts {
   /// Writes the text to `path` (linux_os::publish_file in the daemon), on the worker.
   std::function<Result<bool>(const std::string& path, const std::string& text)> write;
   std::function<void(const std::string&)> log;
+  /// WSJT-X's optional fifth line (Dpol, MNR, Dgrd, the echo widths), as its AzElExtraLines.
+  bool pol_line = false;
 };
 
 class AzelDatExport {
@@ -44,6 +48,8 @@ class AzelDatExport {
 
  private:
   void arm();
+  eme::AzelDat::PolLine pol_line(const astro::TargetReport& moon,
+                                 const astro::SkySnapshot& sky) const;
 
   AzelDatParts p_;
   boost::asio::steady_timer timer_;

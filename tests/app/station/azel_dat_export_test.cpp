@@ -1,6 +1,6 @@
 // azel.dat every second (issue 16 §1): the Moon and Sun as the sky engine sees them, the echo
-// Doppler at the band and its rate from one second to the next, the tracked source, R/T; and a
-// failed write said once, not every second.
+// Doppler at the band and its rate from one second to the next, the tracked source, R/T, the
+// optional fifth line; and a failed write said once, not every second.
 #include "station/azel_dat_export.hpp"
 
 #include <gtest/gtest.h>
@@ -44,7 +44,7 @@ class AzelDatTest : public ::testing::Test {
                             if (!write_ok_) return fail("Permission denied");
                             return true;
                           },
-                          [this](const std::string& l) { log_.push_back(l); }});
+                          [this](const std::string& l) { log_.push_back(l); }, pol_line_});
     return *exporter_;
   }
 
@@ -56,6 +56,7 @@ class AzelDatTest : public ::testing::Test {
   std::optional<astro::Target> source_;
   bool tx_ = false;
   bool write_ok_ = true;
+  bool pol_line_ = false;
   std::vector<std::string> writes_;
   std::vector<std::string> log_;
   std::optional<AzelDatExport> exporter_;
@@ -100,6 +101,25 @@ TEST_F(AzelDatTest, TheTrackedSourceAndTransmit) {
   const auto l = lines(*exporter().text_at(kAt));
   EXPECT_NE(l[2], "00:00:00,  0.0,  0.0,Source");
   EXPECT_EQ(fields(l[3]).back(), " T");
+}
+
+TEST_F(AzelDatTest, TheFifthLineHasTheMoonConditionsOfTheSameInstant) {
+  pol_line_ = true;
+  const auto l = lines(*exporter().text_at(kAt));
+  ASSERT_EQ(l.size(), 5U);
+  const auto p = fields(l[4]);
+  ASSERT_EQ(p.size(), 6U);
+  EXPECT_EQ(p[5], "Pol");
+  const auto sky = sky_snapshot(ephemeris_, sky_.settings, astro::UtcInstant::from_unix_seconds(kAt));
+  const auto moon = sky->observe(astro::Target::moon());
+  const auto c = moon_conditions_at(*moon, *sky, sky_.settings);
+  ASSERT_TRUE(c && c->dx_dpol_deg && c->mnr_db && c->width_hz && c->dx_width_hz);
+  EXPECT_NEAR(std::stod(p[0]), *c->dx_dpol_deg, 0.051) << "Dpol between the stations";
+  EXPECT_NEAR(std::stod(p[1]), *c->mnr_db, 0.051);
+  EXPECT_NEAR(std::stod(p[2]), c->dgrd_db, 0.051);
+  EXPECT_NEAR(std::stod(p[3]), *c->width_hz, 0.051);
+  EXPECT_NEAR(std::stod(p[4]), *c->dx_width_hz, 0.051);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(p[i].size(), 8U) << "f8.1: " << p[i];
 }
 
 TEST_F(AzelDatTest, AFailedWriteIsSaidOnceAndItsRecoveryOnce) {

@@ -1,5 +1,6 @@
 // azel.dat as WSJT-X writes it (lib/astrosub.f90, format 1010), so the programs that read it
-// by fixed columns read ours: the four lines, field widths, rounding, R/T.
+// by fixed columns read ours: the four lines, field widths, rounding, R/T, and the optional fifth
+// (format 1020).
 #include "azt/eme/azel_dat.hpp"
 
 #include <gtest/gtest.h>
@@ -38,8 +39,30 @@ TEST(AzelDat, TransmittingASourceAndTheTopOfTheBands) {
   EXPECT_NE(text.find("00:00:59,360.0, 45.0,Source\n"), std::string::npos) << text;
   EXPECT_NE(text.find("10368,     0.0,    0.00,-25000.0,    0.00,Doppler, T\n"), std::string::npos)
       << text;
-  d.self_doppler_hz = 160000.0;  // 76 GHz: wider than f8.1, widened rather than starred
+  d.self_doppler_hz = 160000.0;  // 76 GHz receding: fits f8.1
   EXPECT_NE(azel_dat_text(d).find(",160000.0,"), std::string::npos);
+}
+
+TEST(AzelDat, EveryFieldKeepsItsColumnsWhereFortranWouldPrintStars) {
+  AzelDat d;
+  d.freq_mhz = 76032.1;
+  d.self_doppler_hz = -160000.0;  // 76 GHz approaching: "-160000.0" is nine characters
+  d.dx_doppler_hz = 2.0e6;
+  d.self_dfdt_hz_min = -12345.678;
+  d.dx_dfdt_hz_min = 123456.0;
+  const std::string text = azel_dat_text(d);
+  EXPECT_NE(text.find("76032,999999.9,99999.99,-99999.9,-9999.99,Doppler, R\n"), std::string::npos)
+      << text;
+}
+
+TEST(AzelDat, TheFifthLineOnlyWhenAsked) {
+  AzelDat d;
+  EXPECT_EQ(azel_dat_text(d).find("Pol"), std::string::npos);
+  d.pol = AzelDat::PolLine{-37.46, 4.02, -1.26, 12.31, 0.0};
+  const std::string text = azel_dat_text(d);
+  const std::string fifth = "   -37.5,     4.0,    -1.3,    12.3,     0.0,Pol\n";
+  ASSERT_GE(text.size(), fifth.size());
+  EXPECT_EQ(text.substr(text.size() - fifth.size()), fifth) << text;
 }
 
 }  // namespace

@@ -8,9 +8,13 @@
 //   FFFFF,DDDDDD.D,RRRRR.RR,SSSSSS.S,TTTTT.TT,Doppler, R
 // Az/El to 0.1° (WSJT-X's f5.1: readers parse fixed widths), the frequency in whole MHz, the DX
 // and self echo Doppler rounded to whole Hz and their rates in Hz per minute, R or T for receive
-// or transmit. Where WSJT-X's Fortran would print asterisks (a Doppler of 100 kHz or more at
-// 47 GHz and up), the field is widened instead.
+// or transmit. WSJT-X's optional fifth line (written when its AzElExtraLines setting is on):
+//   DDDDDD.D,MMMMMM.M,GGGGGG.G,WWWWWW.W,XXXXXX.X,Pol
+// Dpol (between the two stations), MNR and Dgrd (dB), the self and DX echo widths (Hz), each f8.1.
+// Every field keeps its fixed width: where WSJT-X's Fortran would print asterisks (an echo
+// Doppler below −100 kHz, at 47 GHz and up), the value is held at the largest the column shows.
 
+#include <optional>
 #include <string>
 
 namespace azt::eme {
@@ -29,6 +33,15 @@ struct AzelDat {
   double self_doppler_hz = 0.0;
   double self_dfdt_hz_min = 0.0;
   bool transmitting = false;
+  /// WSJT-X's fifth line, when wanted.
+  struct PolLine {
+    double dpol_deg = 0.0;  ///< 0 without a DX (as WSJT-X)
+    double mnr_db = 0.0;
+    double dgrd_db = 0.0;
+    double width_hz = 0.0;
+    double dx_width_hz = 0.0;  ///< 0 without a DX
+  };
+  std::optional<PolLine> pol;
 };
 
 std::string azel_dat_text(const AzelDat& d);
