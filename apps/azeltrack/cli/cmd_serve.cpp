@@ -10,8 +10,13 @@
 #include "azt/astro/time_scales.hpp"
 #include "azt/linux/atomic_file.hpp"
 #include "cli/commands.hpp"
+#include "common/first_target.hpp"
+#include "common/sky_report.hpp"
+#include "common/sky_setup.hpp"
 #include "common/usage_error.hpp"
+#include "config/config_file.hpp"
 #include "config/config_store.hpp"
+#include "config/config_text_edit.hpp"
 #include "daemon/daemon.hpp"
 
 namespace azt::app {
@@ -28,15 +33,34 @@ std::string default_config_path() {
   return std::string(home != nullptr ? home : ".") + "/.config/azeltrack/azeltrack.toml";
 }
 
+/// The default configuration's text with `[target] name` set to something that is up at
+/// `unix_s` (common/first_target.hpp), its comments kept; the reason is logged.
+std::string default_config_for(double unix_s) {
+  const std::string text = default_config_text();
+  const ConfigFile file = ConfigFile::parse(text, "the default configuration");
+  const DaemonConfig config = daemon_config_from(file);
+  const auto ephemeris = open_ephemeris(config.sky.settings.ephemeris);
+  const auto sky =
+      sky_snapshot(*ephemeris, config.sky.settings, astro::UtcInstant::from_unix_seconds(unix_s));
+  if (!sky) return text;
+  const FirstTarget first =
+      choose_first_target(*sky, config.sky.targets, config.station.el_range.min_deg);
+  spdlog::warn("first start: tracking {}: {}", first.name, first.why);
+  if (first.name == config.start_target) return text;
+  toml::table after = file.root();
+  after["target"].as_table()->insert_or_assign("name", first.name);
+  return edit_toml_text(text, file.root(), after).value_or(text);
+}
+
 /// A first run writes the commented default (the simulated antenna) and uses it. A missing file
 /// with a backup beside it is not a first run: ConfigStore recovers the backup.
-void write_default_if_missing(const std::string& path) {
+void write_default_if_missing(const std::string& path, double unix_s) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec) || std::filesystem::exists(path + ".bak", ec)) return;
   const std::filesystem::path p(path);
   if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
   // 0640: it will hold the console's password hash and API token.
-  auto written = linux_os::write_file_atomically(path, default_config_text(), 0640);
+  auto written = linux_os::write_file_atomically(path, default_config_for(unix_s), 0640);
   if (!written)
     throw UsageError("cannot write the default configuration: " + written.error().message);
   spdlog::warn("no configuration at {}: wrote the default (simulated antenna); edit it and restart",
@@ -78,7 +102,8 @@ Runner add_serve_command(CLI::App& app) {
       opts->utc_start_unix_s = parsed->unix_seconds();
     }
     if (opts->config_path.empty()) opts->config_path = default_config_path();
-    write_default_if_missing(opts->config_path);
+    write_default_if_missing(opts->config_path,
+                             opts->utc_start_unix_s.value_or(utc_now().unix_seconds()));
     ConfigStore store = ConfigStore::open(opts->config_path);
     // Loudly: a fallback to the backup means the primary file was corrupt.
     for (const auto& notice : store.notices()) spdlog::warn("{}", notice);
