@@ -201,7 +201,23 @@ async function main() {
       await until('the command in the list', async () =>
         (await text(page, '#command-list')).includes('console 127.0.0.1: track Moon'), 3000);
       await until('the echo line', () => page.isVisible('#echo-row'), 3000);
-      // WSJT-X's Astronomical Data in the Moon panel, as the daemon computed them.
+      // WSJT-X's Astronomical Data in the Moon panel, as the daemon computed them, with a DX
+      // station (its Moon, Dpol) and without.
+      const setDx = async (grid) => {
+        await page.click('#nav-setup');
+        await page.fill('#dx-input', grid);
+        await page.click('#dx-save');
+        await until(`DX ${grid || 'none'} saved`, async () => (await apiGet('/api/config')).json.dx_grid === grid, 3000);
+        await page.click('#nav-main');
+      };
+      await setDx('JO62QM');
+      await until('the DX Moon', () => page.isVisible('#moon-dx-row'), 3000);
+      const withDx = (await state()).moon;
+      if (withDx.dpol_deg === null || withDx.dpol_deg !== withDx.dx_dpol_deg) throw new Error(`Dpol ${withDx.dpol_deg} / alias ${withDx.dx_dpol_deg}`);
+      const dxText = await text(page, '#moon-dx');
+      if (Math.abs(parseFloat(dxText) - withDx.dx.az_deg) > 0.2) throw new Error(`DX Moon ${dxText} vs ${withDx.dx.az_deg}`);
+      await setDx('');
+      await until('no DX Moon', async () => !(await page.isVisible('#moon-dx-row')), 3000);
       const m = (await state()).moon;
       await until('Tsky and Dgrd', async () => (await text(page, '#moon-tsky')).includes(' K / '), 3000);
       await until('the echo width', async () => / Hz/.test(await text(page, '#moon-width')), 3000);
@@ -209,7 +225,11 @@ async function main() {
       if (Math.abs(parseFloat(sep) - m.sun_sep_deg) > 0.2) throw new Error(`Sun separation ${sep} vs ${m.sun_sep_deg}`);
       const illum = await text(page, '#moon-illum');
       if (Math.abs(parseFloat(illum) - 100 * m.illumination) > 1.5) throw new Error(`illuminated ${illum} vs ${m.illumination}`);
-      if (await page.isVisible('#moon-dpol-row') !== (m.dx_dpol_deg !== null)) throw new Error('Dpol to DX shown without a DX');
+      if (await page.isVisible('#moon-dpol-row') !== (m.dpol_deg !== null)) throw new Error('Dpol to DX shown without a DX');
+      if (await page.isVisible('#moon-dx-row') !== (m.dx !== null)) throw new Error('the DX Moon shown without a DX');
+      const dec = await text(page, '#moon-dec');
+      if (Math.abs(parseFloat(dec) - m.dec_deg) > 0.2) throw new Error(`Dec ${dec} vs ${m.dec_deg}`);
+      if (!/Hz\/min/.test(await text(page, '#moon-dfdt'))) throw new Error(`Df/dt: ${await text(page, '#moon-dfdt')}`);
     });
 
     await scenario('the station I/O panel shows the T/R chain and what is wired', page, async () => {
@@ -329,6 +349,12 @@ async function main() {
       const t = (await state()).time;
       if (t.synced !== false || !t.chrony_error) throw new Error(`daemon time: ${JSON.stringify(t)}`);
       if (!banner.includes(t.reason.replace(/\.+$/, ''))) throw new Error(`the banner does not give the reason “${t.reason}”`);
+      // Dismissed, it stays hidden through the next updates while the reason is the same.
+      await page.click('#clock-dismiss');
+      await until('the banner hidden', async () => !(await page.isVisible('#clock-banner')), 2000);
+      const tick = await text(page, '#utc');
+      await until('two more updates', async () => (await text(page, '#utc')) !== tick, 3000);
+      if (await page.isVisible('#clock-banner')) throw new Error('the dismissed clock banner came back with the same reason');
       await page.click('#nav-setup');
       await page.click('#go-time');
       await until('the Time page', () => page.isVisible('#screen-time'), 3000);

@@ -182,6 +182,11 @@ async function launch(pages, options) {
   const page = ctx.pages()[0] || await ctx.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
+  // Console errors too, Content-Security-Policy violations among them ("Refused to apply inline
+  // style…"); a request the daemon answered with an error status is the test's own doing.
+  page.on('console', (m) => {
+    if (m.type() === 'error' && !/^Failed to load resource/.test(m.text())) errors.push(`console: ${m.text()}`);
+  });
   return { ctx, page, errors, userDataDir };
 }
 

@@ -14,8 +14,6 @@ function drawSkyStatic() {
   svg.append(skyEls.paths, skyEls.srcs, skyEls.bodies, skyEls.marks);
   skyEls.sun = sv('g', { class: 'sunm', id: 'sky-sun' }); skyEls.sun.append(sv('circle', { r: 5.5 }), sv('text', { class: 'bodyl', x: 11, y: 3 }, 'Sun'));
   skyEls.moon = sv('g', { class: 'moonm', id: 'sky-moon' }); skyEls.moon.append(sv('circle', { r: 5 }), sv('text', { class: 'bodyl', x: 11, y: 3 }, 'Moon'));
-  skyEls.sun.lastChild.setAttribute('style', 'fill: var(--sun)');
-  skyEls.moon.lastChild.setAttribute('style', 'fill: var(--moon)');
   skyEls.bodies.append(skyEls.sun, skyEls.moon);
   skyEls.tgt = sv('g', { class: 'tgtm', id: 'sky-target' });
   skyEls.tgt.append(sv('circle', { r: 8 }), sv('title', {}, 'target'));

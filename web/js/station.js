@@ -29,10 +29,18 @@ function renderIcons(st) {
   if ($('ico-wifi').dataset.bars !== bars) $('ico-wifi').dataset.bars = bars;
 }
 
+/// The clock banner can be hidden until its reason changes: a station that runs without NTP on
+/// purpose should not carry a warning over its screen all night.
+function dismissClockBanner() {
+  sessionStorage.setItem('azt-clock-dismissed', $('clock-reason').textContent);
+  $('clock-banner').hidden = true;
+}
+
 function renderClock(t) {
   const bad = !!t && t.synced === false;
-  $('clock-banner').hidden = !bad;
-  if (bad) setText('clock-reason', String(t.reason || 'no reason given').replace(/\.+$/, ''));
+  const reason = bad ? String(t.reason || 'no reason given').replace(/\.+$/, '') : '';
+  $('clock-banner').hidden = !bad || sessionStorage.getItem('azt-clock-dismissed') === reason;
+  if (bad) setText('clock-reason', reason);
   const [word, detail] = timeLine(t);
   setText('clock-source', word);
   const cs = $('clock-source');
@@ -61,5 +69,6 @@ export function renderStationPage(name, force) {
 
 export function wireStation(go) {
   document.querySelectorAll('.sico').forEach((b) => b.addEventListener('click', () => go(b.dataset.go)));
+  $('clock-dismiss').addEventListener('click', dismissClockBanner);
   wireTime();
 }
