@@ -9,6 +9,7 @@
 
 #include "azt/astro/time_scales.hpp"
 #include "azt/linux/atomic_file.hpp"
+#include "azt/linux/self_restart.hpp"
 #include "cli/commands.hpp"
 #include "common/first_target.hpp"
 #include "common/sky_report.hpp"
@@ -109,7 +110,14 @@ Runner add_serve_command(CLI::App& app) {
     for (const auto& notice : store.notices()) spdlog::warn("{}", notice);
     if (auto removed = store.remove_stale_temps()) spdlog::warn("{}", *removed);
     set_log_level(store.config().log_level);
-    return run_daemon(store, *opts);
+    const int status = run_daemon(store, *opts);
+    if (status != linux_os::kExitRestart || linux_os::started_by_systemd()) return status;
+    // Not a service: nobody else would start it again. The daemon has stopped the motors,
+    // closed its servers and released its devices; the same command starts afresh.
+    spdlog::info("restarting: running the same command again");
+    spdlog::default_logger()->flush();
+    const auto failed = linux_os::reexec_self();
+    throw UsageError("cannot restart: " + failed.error().message);
   };
 }
 

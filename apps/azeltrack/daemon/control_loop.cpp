@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "azt/linux/crash_safe_outputs.hpp"
+#include "azt/linux/self_restart.hpp"
 #include "common/usage_error.hpp"
 #include "daemon/station_daemon.hpp"
 
@@ -54,7 +55,13 @@ int StationDaemon::run() {
     return kExitFailure;
   }
   spdlog::info("stopped; tick {}", stats_.summary());
-  return 0;
+  return restart_requested_ ? linux_os::kExitRestart : 0;
+}
+
+void StationDaemon::restart(const std::string& who) {
+  // The same way out as a signal: motors stopped and outputs released before anything closes.
+  restart_requested_ = true;
+  shutdown("restart asked by " + who);
 }
 
 void StationDaemon::arm_tick() {

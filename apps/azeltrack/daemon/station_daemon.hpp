@@ -102,6 +102,8 @@ class StationDaemon {
   /// the process exits (systemd restarts it, motionless until a client asks).
   void fail_safe(const std::string& why);
   void shutdown(const std::string& why);
+  /// Stops as a signal would, then run() returns linux_os::kExitRestart (the console's Restart).
+  void restart(const std::string& who);
 
   DaemonConfig config_;  ///< the running configuration; the console changes parts of it
   ConfigStore& store_;
@@ -151,6 +153,7 @@ class StationDaemon {
   std::vector<std::string> last_faults_;
   std::string last_summary_;  ///< mode, owner and fault count at the last tick
   bool stopping_ = false;
+  bool restart_requested_ = false;
 };
 
 }  // namespace azt::app
