@@ -37,6 +37,14 @@ std::string_view name_of(const ConfigChoices<Enum, N>& choices, Enum value) {
   return "?";
 }
 
+/// The names alone, in order: the configuration schema's list of what a key may be.
+template <typename Enum, std::size_t N>
+constexpr std::array<std::string_view, N> choice_names(const ConfigChoices<Enum, N>& choices) {
+  std::array<std::string_view, N> names{};
+  for (std::size_t i = 0; i < N; ++i) names[i] = choices[i].name;
+  return names;
+}
+
 /// "\"a\", \"b\" or \"c\"", for the error that lists what is allowed.
 template <typename Enum, std::size_t N>
 std::string choice_list(const ConfigChoices<Enum, N>& choices) {

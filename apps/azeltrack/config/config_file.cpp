@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "azt/linux/atomic_file.hpp"
 #include "common/usage_error.hpp"
@@ -9,25 +10,58 @@
 namespace azt::app {
 namespace {
 
-bool allowed_key(std::string_view key, std::initializer_list<std::string_view> allowed) {
-  return std::find(allowed.begin(), allowed.end(), key) != allowed.end();
+/// "line N: " for a node the parser placed, "" otherwise.
+std::string line_of(const toml::node& node) {
+  const auto line = node.source().begin.line;
+  return line > 0 ? "line " + std::to_string(line) + ": " : std::string();
 }
 
-const toml::table* checked_table(const ConfigFile& file, const toml::node* node,
-                                 const std::string& name,
-                                 std::initializer_list<std::string_view> allowed) {
-  if (node == nullptr) return nullptr;
-  const toml::table* t = node->as_table();
-  if (t == nullptr) file.fail("[" + name + "] must be a table");
-  for (const auto& [key, value] : *t) {
-    if (!allowed_key(key.str(), allowed)) {
-      file.fail("unknown key [" + name + "]." + std::string(key.str()));
-    }
+const SectionSpec& schema_section(std::string_view name) {
+  const SectionSpec* spec = find_section(name);
+  if (spec == nullptr) {
+    throw std::logic_error("the configuration schema has no [" + std::string(name) + "]");
   }
-  return t;
+  return *spec;
 }
 
 }  // namespace
+
+ConfigSection ConfigSection::checked(const ConfigFile& file, const toml::node* node,
+                                     std::string name, const SectionSpec& spec) {
+  const toml::table* table = nullptr;
+  if (node != nullptr) {
+    table = node->as_table();
+    if (table == nullptr) file.fail(line_of(*node) + "[" + name + "] must be a table");
+  }
+  ConfigSection section(file, table, std::move(name), spec);
+  section.check_keys();
+  return section;
+}
+
+void ConfigSection::check_keys() const {
+  if (table_ == nullptr) return;
+  for (const auto& [key, value] : *table_) {
+    const std::string_view k = key.str();
+    if (const KeySpec* spec = find_key(*spec_, k)) {
+      if (auto why = key_violation(*spec, value)) fail(k, *why);
+    } else if (find_child(*spec_, k) == nullptr) {
+      file_.fail(line_of(value) + "unknown key [" + name_ + "]." + std::string(k));
+    } else if (!value.is_table()) {
+      file_.fail(line_of(value) + "[" + name_ + "." + std::string(k) + "] must be a table");
+    }
+  }
+}
+
+const KeySpec& ConfigSection::key_spec(std::string_view key,
+                                       std::initializer_list<KeyType> types) const {
+  const KeySpec* spec = find_key(*spec_, key);
+  if (spec == nullptr || std::find(types.begin(), types.end(), spec->type) == types.end()) {
+    throw std::logic_error("the configuration schema does not describe [" +
+                           std::string(spec_->name) + "]." + std::string(key) +
+                           " as this reader reads it");
+  }
+  return *spec;
+}
 
 const toml::node* ConfigSection::node(std::string_view key) const {
   return table_ == nullptr ? nullptr : table_->get(key);
@@ -49,6 +83,7 @@ void ConfigSection::fail(std::string_view key, const std::string& what) const {
 }
 
 std::optional<double> ConfigSection::number(std::string_view key) const {
+  (void)key_spec(key, {KeyType::Number});
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;
   auto v = n->value<double>();  // integers too
@@ -57,6 +92,7 @@ std::optional<double> ConfigSection::number(std::string_view key) const {
 }
 
 std::optional<std::int64_t> ConfigSection::integer(std::string_view key) const {
+  (void)key_spec(key, {KeyType::Integer, KeyType::GpioLine});
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;
   if (!n->is_integer()) fail(key, "must be an integer");
@@ -64,6 +100,7 @@ std::optional<std::int64_t> ConfigSection::integer(std::string_view key) const {
 }
 
 std::optional<std::string> ConfigSection::text(std::string_view key) const {
+  (void)key_spec(key, {KeyType::Text, KeyType::Choice, KeyType::GpioLine});
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;
   auto v = n->value<std::string>();
@@ -72,6 +109,7 @@ std::optional<std::string> ConfigSection::text(std::string_view key) const {
 }
 
 std::optional<bool> ConfigSection::boolean(std::string_view key) const {
+  (void)key_spec(key, {KeyType::Boolean});
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;
   if (!n->is_boolean()) fail(key, "must be true or false");
@@ -79,16 +117,20 @@ std::optional<bool> ConfigSection::boolean(std::string_view key) const {
 }
 
 const toml::array* ConfigSection::array(std::string_view key) const {
+  (void)key_spec(key, {KeyType::TextList, KeyType::NumberList, KeyType::IntegerList});
   const toml::node* n = node(key);
   if (n == nullptr) return nullptr;
   if (!n->is_array()) fail(key, "must be an array");
   return n->as_array();
 }
 
-ConfigSection ConfigSection::child(std::string_view key,
-                                   std::initializer_list<std::string_view> allowed) const {
-  const std::string name = name_ + "." + std::string(key);
-  return ConfigSection(file_, checked_table(file_, node(key), name, allowed), name);
+ConfigSection ConfigSection::child(std::string_view key) const {
+  const SectionSpec* spec = find_child(*spec_, key);
+  if (spec == nullptr) {
+    throw std::logic_error("the configuration schema has no [" + name_ + "." + std::string(key) +
+                           "]");
+  }
+  return checked(file_, node(key), name_ + "." + std::string(key), *spec);
 }
 
 ConfigFile ConfigFile::load(const std::string& path) {
@@ -112,51 +154,22 @@ ConfigFile ConfigFile::parse(std::string_view text, const std::string& path) {
   } catch (const UsageError& e) {
     file.fail(e.what());
   }
+  // Every top-level name is a table of the schema, or the file's own schema_version.
+  const SectionSpec& top = schema_section("");
   for (const auto& [key, value] : file.root_) {
-    if (!allowed_key(key.str(), {"schema_version",
-                                 "station",
-                                 "sky",
-                                 "atmosphere",
-                                 "control",
-                                 "geometry",
-                                 "corrections",
-                                 "park",
-                                 "mount",
-                                 "sim",
-                                 "target",
-                                 "antenna",
-                                 "hamlib",
-                                 "hub",
-                                 "pwm",
-                                 "rotctld",
-                                 "serial",
-                                 "pstrotator",
-                                 "web",
-                                 "sequencer",
-                                 "gpio",
-                                 "hardware",
-                                 "satellites",
-                                 "spacecraft",
-                                 "log",
-                                 "gps",
-                                 "time",
-                                 "export",
-                                 "pointing",
-                                 "receiver"})) {
-      file.fail("unknown table or key '" + std::string(key.str()) + "'");
+    if (find_key(top, key.str()) == nullptr && find_child(top, key.str()) == nullptr) {
+      file.fail(line_of(value) + "unknown table or key '" + std::string(key.str()) + "'");
     }
   }
   return file;
 }
 
-ConfigSection ConfigFile::section(std::string_view name,
-                                  std::initializer_list<std::string_view> allowed) const {
-  const std::string n(name);
-  return ConfigSection(*this, checked_table(*this, root_.get(name), n, allowed), n);
+ConfigSection ConfigFile::section(std::string_view name) const {
+  return ConfigSection::checked(*this, root_.get(name), std::string(name), schema_section(name));
 }
 
-std::vector<ConfigSection> ConfigFile::section_array(
-    std::string_view name, std::initializer_list<std::string_view> allowed) const {
+std::vector<ConfigSection> ConfigFile::section_array(std::string_view name) const {
+  const SectionSpec& spec = schema_section(name);
   std::vector<ConfigSection> out;
   const toml::node* n = root_.get(name);
   if (n == nullptr) return out;
@@ -164,7 +177,7 @@ std::vector<ConfigSection> ConfigFile::section_array(
   if (a == nullptr) fail("[[" + std::string(name) + "]] must be an array of tables");
   for (std::size_t i = 0; i < a->size(); ++i) {
     const std::string item = std::string(name) + "#" + std::to_string(i + 1);
-    out.emplace_back(*this, checked_table(*this, a->get(i), item, allowed), item);
+    out.push_back(ConfigSection::checked(*this, a->get(i), item, spec));
   }
   return out;
 }

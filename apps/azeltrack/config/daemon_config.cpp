@@ -15,10 +15,8 @@ namespace azt::app {
 namespace {
 
 unsigned short read_port(const ConfigSection& s, std::string_view key, unsigned short fallback) {
-  const auto port = s.integer(key);
-  if (!port) return fallback;
-  if (*port < 0 || *port > 65535) s.fail(key, "must be 0 to 65535 (0 disables)");
-  return static_cast<unsigned short>(*port);
+  const auto port = s.integer(key);  // 0 to 65535 (the schema)
+  return port ? static_cast<unsigned short>(*port) : fallback;
 }
 
 NetServerConfig read_net(const ConfigSection& s, NetServerConfig fallback) {
@@ -29,17 +27,13 @@ NetServerConfig read_net(const ConfigSection& s, NetServerConfig fallback) {
 
 std::vector<SerialServerConfig> read_serial(const ConfigFile& file) {
   std::vector<SerialServerConfig> out;
-  for (const ConfigSection& s : file.section_array("serial", {"protocol", "device", "baud"})) {
+  for (const ConfigSection& s : file.section_array("serial")) {
     SerialServerConfig c;
-    const auto protocol = choose(kSerialProtocols, s.text("protocol").value_or(""));
-    if (!protocol)
-      s.fail("protocol", "must be gs232a, gs232b, easycomm1, easycomm2, spid or rot1prog");
-    c.protocol = *protocol;
+    if (!s.has("protocol")) s.fail("protocol", "is required: " + choice_list(kSerialProtocols));
+    c.protocol = s.choice("protocol", kSerialProtocols, c.protocol);
     c.device = s.text("device").value_or("");
     if (c.device.empty()) s.fail("device", "is required: \"pty:/path\" or a serial device path");
-    const auto baud = s.integer("baud").value_or(9600);
-    if (baud < 600 || baud > 115200) s.fail("baud", "must be 600 to 115200");
-    c.baud = static_cast<unsigned>(baud);
+    c.baud = static_cast<unsigned>(s.integer("baud").value_or(9600));
     for (const auto& other : out) {
       if (other.device == c.device) s.fail("device", "is used by two [[serial]] servers");
     }
@@ -49,18 +43,13 @@ std::vector<SerialServerConfig> read_serial(const ConfigFile& file) {
 }
 
 linux_os::HamlibConfig read_hamlib(const ConfigSection& s) {
+  // The ranges are the schema's (config/schema_antenna_keys.cpp).
   linux_os::HamlibConfig h;
-  const auto model = s.integer("model").value_or(h.model);
-  if (model < 1 || model > 100000) s.fail("model", "must be a Hamlib rotator model (rotctl -l)");
-  h.model = static_cast<int>(model);
+  h.model = static_cast<int>(s.integer("model").value_or(h.model));
   h.device = s.text("device").value_or("");
-  const auto baud = s.integer("baud").value_or(0);
-  if (baud < 0 || baud > 1000000) s.fail("baud", "must be 0 (backend default) or a serial speed");
-  h.baud = static_cast<int>(baud);
+  h.baud = static_cast<int>(s.integer("baud").value_or(0));
   h.poll_s = s.number("poll_s").value_or(h.poll_s);
-  if (h.poll_s < 0.05 || h.poll_s > 5.0) s.fail("poll_s", "must be 0.05 to 5 seconds");
   h.min_move_deg = s.number("min_move_deg").value_or(h.min_move_deg);
-  if (h.min_move_deg < 0.0 || h.min_move_deg > 10.0) s.fail("min_move_deg", "must be 0 to 10");
   return h;
 }
 
@@ -129,17 +118,9 @@ linux_os::HubSerialConfig read_hub(const ConfigSection& s) {
   linux_os::HubSerialConfig h;
   h.device = s.text("device").value_or("");
   // 38400: what azeltrack's own hub firmware sends with no baud jumper (docs/encoder-hub.md).
-  const auto baud = s.integer("baud").value_or(38400);
-  if (baud < 600 || baud > 115200) s.fail("baud", "must be 600 to 115200");
-  h.baud = static_cast<unsigned>(baud);
-  const std::string accept = s.text("accept").value_or("crc8");
-  if (accept == "crc8") {
-    h.accept = proto::HubAccept::Crc8Only;
-  } else if (accept == "seed") {
-    h.accept = proto::HubAccept::SeedOnly;
-  } else {
-    s.fail("accept", "must be \"crc8\" (azeltrack's hub) or \"seed\" (AnTrack-Pro frames)");
-  }
+  h.baud = static_cast<unsigned>(s.integer("baud").value_or(38400));
+  h.accept = s.text("accept").value_or("crc8") == "seed" ? proto::HubAccept::SeedOnly
+                                                         : proto::HubAccept::Crc8Only;
   return h;
 }
 
@@ -169,9 +150,7 @@ GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
     for (std::size_t i = 0; i < a->size(); ++i) {
       linux_os::GpioLineSpec spec{g.chip, 0, outputs_low,
                                   "[gpio] sequencer[" + std::to_string(i) + "]"};
-      const auto n = (*a)[i].value<std::int64_t>();
-      if (!n || *n < 0 || *n > 1023) s.fail("sequencer", "must hold line numbers 0 to 1023");
-      spec.offset = static_cast<unsigned>(*n);
+      spec.offset = static_cast<unsigned>((*a)[i].value_or(std::int64_t{0}));  // 0 to 1023
       g.sequencer.push_back(spec);
     }
     if (g.sequencer.size() != sequencer_outputs) {
@@ -199,19 +178,14 @@ PwmConfig read_pwm(const ConfigSection& s) {
                           &p.el.lpwm_channel};
   const char* keys[] = {"az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm"};
   for (std::size_t i = 0; i < 4; ++i) {
-    const auto v = s.integer(keys[i]).value_or(*channels[i]);
-    if (v < 0 || v > 63) s.fail(keys[i], "must be a PWM channel number 0 to 63");
-    *channels[i] = static_cast<unsigned>(v);
+    *channels[i] = static_cast<unsigned>(s.integer(keys[i]).value_or(*channels[i]));
     for (std::size_t j = 0; j < i; ++j) {
       if (*channels[j] == *channels[i])
         s.fail(keys[i], std::string("is the same channel as ") + keys[j]);
     }
   }
   const double frequency_hz = s.number("frequency_hz").value_or(p.az.frequency_hz);
-  if (frequency_hz < 10.0 || frequency_hz > 100000.0)
-    s.fail("frequency_hz", "must be 10 to 100000");
   const double dead_time_s = s.number("dead_time_s").value_or(p.az.dead_time_s);
-  if (dead_time_s < 0.01 || dead_time_s > 3.0) s.fail("dead_time_s", "must be 0.01 to 3 s");
   for (linux_os::PwmHBridgeConfig* bridge : {&p.az, &p.el}) {
     bridge->chip_dir = s.text("chip").value_or(bridge->chip_dir);
     bridge->frequency_hz = frequency_hz;
@@ -232,16 +206,13 @@ std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
       {"north", {0.0, el_low}},
       {"service", {90.0, el_low}},
   }};
-  const auto entries = file.section_array("park", {"name", "az_deg", "el_deg"});
+  const auto entries = file.section_array("park");
   if (entries.size() > slots.size()) file.fail("at most 4 [[park]] slots");
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const ConfigSection& s = entries[i];
     control::ParkSlot slot{
         s.text("name").value_or("park " + std::to_string(i + 1)),
         {s.number("az_deg").value_or(180.0), s.number("el_deg").value_or(el_low)}};
-    if (slot.position.az_deg < 0.0 || slot.position.az_deg >= 360.0) {
-      s.fail("az_deg", "must be 0 to 360");
-    }
     if (!control::plan_elevation(slot.position.el_deg, station.el_range)) {
       s.fail("el_deg", "must be inside [geometry] el_min_deg..el_max_deg");
     }
@@ -283,7 +254,7 @@ namespace {
 
 /// [target] name: what to track at start.
 void read_start_target(const ConfigFile& file, DaemonConfig& c) {
-  const ConfigSection target = file.section("target", {"name"});
+  const ConfigSection target = file.section("target");
   c.start_target = target.text("name").value_or("moon");
   // "sat:NAME" is looked up in the satellite catalogue when the daemon starts.
   if (c.start_target != "stop" &&
@@ -297,19 +268,14 @@ void read_start_target(const ConfigFile& file, DaemonConfig& c) {
 
 /// [antenna] backend and what it needs: [hub], [pwm], [hamlib], [hardware.*] (after [gpio]).
 void read_antenna(const ConfigFile& file, DaemonConfig& c) {
-  const ConfigSection antenna = file.section("antenna", {"backend"});
-  const auto backend = choose(kBackendKinds, antenna.text("backend").value_or("sim"));
-  if (!backend) antenna.fail("backend", "must be " + choice_list(kBackendKinds));
-  c.backend = *backend;
-  const ConfigSection hub = file.section("hub", {"device", "baud", "accept"});
-  c.hub = read_hub(hub);
-  c.pwm = read_pwm(file.section(
-      "pwm", {"chip", "az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm", "frequency_hz", "dead_time_s"}));
+  const ConfigSection antenna = file.section("antenna");
+  c.backend = antenna.choice("backend", kBackendKinds, BackendKind::Sim);
+  c.hub = read_hub(file.section("hub"));
+  c.pwm = read_pwm(file.section("pwm"));
   if (c.backend == BackendKind::Pwm && c.hub.device.empty()) {
     antenna.fail("backend", "is \"pwm\" but [hub] device is not set");
   }
-  const ConfigSection hamlib =
-      file.section("hamlib", {"model", "device", "baud", "poll_s", "min_move_deg"});
+  const ConfigSection hamlib = file.section("hamlib");
   c.hamlib = read_hamlib(hamlib);
   if (c.backend == BackendKind::Hamlib && !hamlib.present()) {
     antenna.fail("backend", "is \"hamlib\" but there is no [hamlib] table");
@@ -325,16 +291,16 @@ void read_antenna(const ConfigFile& file, DaemonConfig& c) {
 
 /// The PC programs' servers: [rotctld], [pstrotator], [[serial]].
 void read_servers(const ConfigFile& file, DaemonConfig& c) {
-  const ConfigSection rotctld = file.section("rotctld", {"bind", "port", "idle_timeout_s"});
+  const ConfigSection rotctld = file.section("rotctld");
   c.rotctld = read_net(rotctld, c.rotctld);
   if (const auto idle = rotctld.number("idle_timeout_s")) {
     // 0 turns it off; below 10 s a client polling every few seconds would be cut.
-    if (*idle != 0.0 && !(*idle >= 10.0 && *idle <= 86400.0)) {
+    if (*idle != 0.0 && *idle < 10.0) {
       rotctld.fail("idle_timeout_s", "must be 0 (never) or 10 to 86400 seconds");
     }
     c.rotctld_idle_timeout_s = *idle;
   }
-  const ConfigSection pst = file.section("pstrotator", {"bind", "port", "reply_port"});
+  const ConfigSection pst = file.section("pstrotator");
   c.pstrotator = read_net(pst, c.pstrotator);
   c.pstrotator_reply_port =
       read_port(pst, "reply_port", c.pstrotator.port == 0 ? 0 : c.pstrotator.port + 1);
@@ -353,22 +319,15 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.sim_hub = sim.hub;
   c.sim_receiver = sim.receiver;
   read_start_target(file, c);
-  c.sequencer =
-      read_sequencer(file.section("sequencer", {"outputs", "delay_ms", "delays_ms", "debounce_ms",
-                                                "tx_timeout_s", "hold_motion"}));
-  c.gpio =
-      read_gpio(file.section("gpio", {"chip", "estop", "estop_active_low", "az_ccw_limit",
-                                      "az_cw_limit", "el_down_limit", "el_up_limit",
-                                      "limits_active_low", "ptt", "ptt_active_low", "sequencer",
-                                      "sequencer_active_low", "estop_latch_file"}),
-                c.sequencer.outputs.size());
+  c.sequencer = read_sequencer(file.section("sequencer"));
+  c.gpio = read_gpio(file.section("gpio"), c.sequencer.outputs.size());
   read_antenna(file, c);
   read_servers(file, c);
-  const ConfigSection sats = file.section("satellites", {"file", "mask", "beamwidth_deg"});
+  const ConfigSection sats = file.section("satellites");
   c.gps = gps_config_from(file);
   c.receiver = receiver_config_from(file);
   if (c.receiver.source == ReceiverConfig::Source::Sim && c.backend != BackendKind::Sim) {
-    file.section("receiver", {"source", "path", "bind", "port", "stale_s"})
+    file.section("receiver")
         .fail("source", "\"sim\" hears the simulated antenna: [antenna] backend must be \"sim\"");
   }
   c.time = time_config_from(file);
@@ -381,18 +340,10 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
     sats.fail("mask", std::string(e.what()).substr(6));
   }
   c.satellites.beamwidth_deg = sats.number("beamwidth_deg").value_or(20.0);
-  if (!(c.satellites.beamwidth_deg > 0.0 && c.satellites.beamwidth_deg <= 180.0)) {
-    sats.fail("beamwidth_deg", "must be above 0 and at most 180");
-  }
-  c.web = read_web(
-      file.section("web", {"bind", "port", "password_hash", "api_token_sha256", "allowed_hosts"}));
+  c.web = read_web(file.section("web"));
   c.park = read_park(file, c.station);
   if (c.station.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
-  const ConfigSection log = file.section("log", {"level"});
-  c.log_level = log.text("level").value_or("info");
-  if (c.log_level != "debug" && c.log_level != "info" && c.log_level != "warn") {
-    log.fail("level", "must be debug, info or warn");
-  }
+  c.log_level = file.section("log").text("level").value_or("info");
   return c;
 }
 

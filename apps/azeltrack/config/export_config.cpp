@@ -5,7 +5,7 @@
 namespace azt::app {
 
 ExportConfig export_config_from(const ConfigFile& file) {
-  const ConfigSection s = file.section("export", {"azel_dat"});
+  const ConfigSection s = file.section("export");
   ExportConfig c;
   c.azel_dat = s.text("azel_dat").value_or("");
   if (!c.azel_dat.empty() && (c.azel_dat.front() != '/' || c.azel_dat.back() == '/')) {

@@ -9,17 +9,12 @@ namespace azt::app {
 
 namespace {
 
-/// [a, deg_a, b, deg_b]: two measured points.
+/// [a, deg_a, b, deg_b]: two measured points (four numbers: the schema).
 std::optional<std::array<double, 4>> two_points(const ConfigSection& s, const std::string& key) {
   const toml::array* a = s.array(key);
   if (a == nullptr) return std::nullopt;
   std::array<double, 4> v{};
-  if (a->size() != 4) s.fail(key, "must be [code_a, deg_a, code_b, deg_b]");
-  for (std::size_t i = 0; i < 4; ++i) {
-    const auto x = (*a)[i].value<double>();
-    if (!x) s.fail(key, "must hold four numbers");
-    v.at(i) = *x;
-  }
+  for (std::size_t i = 0; i < v.size() && i < a->size(); ++i) v.at(i) = (*a)[i].value_or(0.0);
   return v;
 }
 
@@ -55,9 +50,7 @@ void read_relay(const ConfigSection& s, HardwareAxisConfig& a, const std::string
 void read_pot_drive(const ConfigSection& s, HardwareAxisConfig& a) {
   a.spi_device = s.text("spi_device").value_or("");
   if (a.spi_device.empty()) s.fail("spi_device", "is needed for drive = \"pot\" (/dev/spidevB.C)");
-  const auto hz = s.integer("spi_hz").value_or(a.spi_hz);
-  if (hz < 10'000 || hz > 10'000'000) s.fail("spi_hz", "must be 10000 to 10000000");
-  a.spi_hz = static_cast<std::uint32_t>(hz);
+  a.spi_hz = static_cast<std::uint32_t>(s.integer("spi_hz").value_or(a.spi_hz));
   const auto w = two_points(s, "wiper_calibration");
   if (!w)
     s.fail("wiper_calibration", "is needed for drive = \"pot\": [wiper_a, deg_a, wiper_b, deg_b]");
@@ -65,8 +58,6 @@ void read_pot_drive(const ConfigSection& s, HardwareAxisConfig& a) {
   if (!cal) s.fail("wiper_calibration", cal.error().message);
   a.wiper = *cal;
   a.setpoint_band_deg = s.number("setpoint_band_deg").value_or(a.setpoint_band_deg);
-  if (a.setpoint_band_deg <= 0.0 || a.setpoint_band_deg > 20.0)
-    s.fail("setpoint_band_deg", "must be above 0 and at most 20");
 }
 
 void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
@@ -77,13 +68,10 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
                              : "is needed for sensor = \"ads1115\" (/dev/i2c-N)");
   }
   const unsigned channels = a.sensor == AxisSensorKind::Mcp3008 ? 8 : 4;
-  const auto ch = s.integer("adc_channel").value_or(0);
-  if (ch < 0 || ch >= channels)
-    s.fail("adc_channel", "must be 0 to " + std::to_string(channels - 1));
+  const auto ch = s.integer("adc_channel").value_or(0);  // 0 to 7 (the schema)
+  if (ch >= channels) s.fail("adc_channel", "must be 0 to " + std::to_string(channels - 1));
   a.adc_channel = static_cast<unsigned>(ch);
-  const auto addr = s.integer("adc_address").value_or(0x48);
-  if (addr < 0x48 || addr > 0x4B) s.fail("adc_address", "must be 72 to 75 (0x48–0x4B)");
-  a.adc_address = static_cast<std::uint8_t>(addr);
+  a.adc_address = static_cast<std::uint8_t>(s.integer("adc_address").value_or(0x48));
   // The ADS1115 at ±4.096 V reads a 3.3 V pot in 15 bits; the MCP3008 is 10 bits of its VREF.
   a.pot.adc =
       a.sensor == AxisSensorKind::Mcp3008 ? control::AdcSpec{10, 3.3} : control::AdcSpec{15, 4.096};
@@ -105,11 +93,7 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
     if (*hi < 0 || *hi > max_counts) s.fail("open_above_counts", "must be 0 to the ADC's range");
     a.pot.open_above_counts = static_cast<std::int32_t>(*hi);
   }
-  const auto samples = s.integer("average_samples").value_or(4);
-  if (samples < 1 || samples > static_cast<std::int64_t>(control::MovingAverage::kCapacity)) {
-    s.fail("average_samples", "must be 1 to " + std::to_string(control::MovingAverage::kCapacity));
-  }
-  a.pot.average_samples = static_cast<std::size_t>(samples);
+  a.pot.average_samples = static_cast<std::size_t>(s.integer("average_samples").value_or(4));
   if (auto ok = control::PotInputConfig::make(a.pot); !ok)
     s.fail("pot_calibration", ok.error().message);
 }
@@ -118,14 +102,8 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
                              const std::string& chip) {
   HardwareAxisConfig a;
   a.name = name;
-  const auto drive = choose(kAxisDriveKinds, s.text("drive").value_or("pwm"));
-  if (!drive)
-    s.fail("drive", "must be \"pwm\" (IBT-2 on [pwm]), \"relay\" (GPIO) or \"pot\" (MCP41010)");
-  a.drive = *drive;
-  const auto sensor = choose(kAxisSensorKinds, s.text("sensor").value_or("hub"));
-  if (!sensor)
-    s.fail("sensor", "must be \"hub\" (EncoderHub on [hub]), \"mcp3008\" or \"ads1115\"");
-  a.sensor = *sensor;
+  a.drive = s.choice("drive", kAxisDriveKinds, AxisDriveKind::Pwm);
+  a.sensor = s.choice("sensor", kAxisSensorKinds, AxisSensorKind::Hub);
   a.enable = read_gpio_line(s, "enable", chip, false);
   if (a.enable && a.drive != AxisDriveKind::Pwm)
     s.fail("enable", "is for drive = \"pwm\" (the IBT-2's enables)");
@@ -142,25 +120,15 @@ std::optional<linux_os::GpioLineSpec> read_gpio_line(const ConfigSection& s, con
                                                      const std::string& chip, bool active_low) {
   if (!s.has(key)) return std::nullopt;
   linux_os::GpioLineSpec spec{chip, 0, active_low, "[" + s.name() + "] " + key};
-  std::int64_t offset = -1;
+  // The schema has checked the form: 0 to 1023, or "CHIP:N" with N in that range.
   if (s.is_text(key)) {
-    const auto text = s.text(key);
-    const auto colon = text->rfind(':');
-    if (colon == std::string::npos || colon == 0)
-      s.fail(key, "must be a line number or \"CHIP:N\"");
-    spec.chip = text->substr(0, colon);
-    try {
-      std::size_t used = 0;
-      offset = std::stoll(text->substr(colon + 1), &used);
-      if (used != text->size() - colon - 1) offset = -1;
-    } catch (const std::exception&) {
-      offset = -1;
-    }
+    const std::string text = *s.text(key);
+    const auto colon = text.rfind(':');
+    spec.chip = text.substr(0, colon);
+    spec.offset = static_cast<unsigned>(std::stoul(text.substr(colon + 1)));
   } else {
-    offset = s.integer(key).value_or(-1);
+    spec.offset = static_cast<unsigned>(s.integer(key).value_or(0));
   }
-  if (offset < 0 || offset > 1023) s.fail(key, "must be a line number 0 to 1023, or \"CHIP:N\"");
-  spec.offset = static_cast<unsigned>(offset);
   return spec;
 }
 
@@ -171,34 +139,10 @@ HardwareAxisConfig default_axis(const std::string& name) {
 }
 
 HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chip) {
-  const ConfigSection hw = file.section("hardware", {"az", "el"});
-  const std::initializer_list<std::string_view> keys = {"drive",
-                                                        "sensor",
-                                                        "relay_forward",
-                                                        "relay_reverse",
-                                                        "relay_power",
-                                                        "relay_polarity",
-                                                        "relay_active_low",
-                                                        "window_deg",
-                                                        "lsb_deg",
-                                                        "coast_deg",
-                                                        "min_on_s",
-                                                        "reversal_dead_s",
-                                                        "polarity_settle_s",
-                                                        "spi_device",
-                                                        "spi_hz",
-                                                        "wiper_calibration",
-                                                        "setpoint_band_deg",
-                                                        "adc_device",
-                                                        "adc_channel",
-                                                        "adc_address",
-                                                        "pot_calibration",
-                                                        "open_below_counts",
-                                                        "open_above_counts",
-                                                        "average_samples"};
+  const ConfigSection hw = file.section("hardware");
   HardwareConfig h;
-  h.az = read_axis(hw.child("az", keys), "az", gpio_chip);
-  h.el = read_axis(hw.child("el", keys), "el", gpio_chip);
+  h.az = read_axis(hw.child("az"), "az", gpio_chip);
+  h.el = read_axis(hw.child("el"), "el", gpio_chip);
   return h;
 }
 

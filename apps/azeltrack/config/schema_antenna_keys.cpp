@@ -1,0 +1,253 @@
+// The schema's antenna keys: the backend and what it drives, a Hamlib box, the EncoderHub, the
+// PWM bridges and the per-axis hardware (daemon_config.cpp and hardware_config.cpp read them).
+#include <array>
+
+#include "config/daemon_config.hpp"
+#include "config/hardware_config.hpp"
+#include "config/schema_keys.hpp"
+
+namespace azt::app {
+namespace {
+
+constexpr auto kBackendNames = choice_names(kBackendKinds);
+
+constexpr std::array<KeySpec, 1> kAntenna{{
+    {.key = "backend",
+     .type = KeyType::Choice,
+     .choices = kBackendNames,
+     .default_toml = "\"sim\"",
+     .help = "`sim`: the simulated antenna; `hamlib`: an existing controller through Hamlib "
+             "(needs a `[hamlib]` table; [daemon.md](daemon.md#the-hamlib-backend)); `pwm`: "
+             "EncoderHub and IBT-2 bridges on both axes (needs `[hub] device`); `hardware`: drive "
+             "and sensor chosen per axis in `[hardware.az]` / `[hardware.el]` "
+             "([hardware.md](hardware.md))"},
+}};
+
+constexpr std::array<KeySpec, 5> kHamlib{{
+    {.key = "model",
+     .type = KeyType::Integer,
+     .range = closed(1.0, 100000.0),
+     .default_toml = "1",
+     .help = "Hamlib rotator model (`rotctl -l`): 601 GS-232A, 603 GS-232B, 202 EasyComm II, 901 "
+             "SPID Rot2Prog, 2 another rotctld, 1 dummy"},
+    {.key = "device",
+     .type = KeyType::Text,
+     .default_note = "Hamlib's",
+     .help = "serial device, or `host:port` for model 2"},
+    {.key = "baud",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 1000000.0),
+     .default_toml = "0",
+     .help = "serial speed; 0 keeps the model's default (and must be 0 for network models)"},
+    {.key = "poll_s",
+     .type = KeyType::Number,
+     .unit = "s",
+     .range = closed(0.05, 5.0),
+     .default_toml = "0.2",
+     .help = "position read-back period"},
+    {.key = "min_move_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .range = closed(0.0, 10.0),
+     .default_toml = "0.1",
+     .help = "a setpoint within this of the last one sent on both axes is not resent"},
+}};
+
+constexpr std::array<std::string_view, 2> kHubAccept{"crc8", "seed"};
+
+constexpr std::array<KeySpec, 3> kHub{{
+    {.key = "device",
+     .type = KeyType::Text,
+     .help = "the EncoderHub's serial device (needed by the `pwm` backend, and by `hardware` with "
+             "a `hub` sensor)"},
+    {.key = "baud",
+     .type = KeyType::Integer,
+     .range = closed(600.0, 115200.0),
+     .default_toml = "38400",
+     .help = "38400 is azeltrack's hub firmware without a baud jumper "
+             "([encoder-hub.md](encoder-hub.md))"},
+    {.key = "accept",
+     .type = KeyType::Choice,
+     .choices = kHubAccept,
+     .default_toml = "\"crc8\"",
+     .help = "the frames accepted: `crc8` (azeltrack's hub) or `seed` (AnTrack-Pro frames)"},
+}};
+
+constexpr KeySpec pwm_channel(std::string_view key, std::string_view default_toml,
+                              std::string_view help) {
+  return {.key = key,
+          .type = KeyType::Integer,
+          .range = closed(0.0, 63.0),
+          .default_toml = default_toml,
+          .help = help};
+}
+
+constexpr std::array<KeySpec, 7> kPwm{{
+    {.key = "chip",
+     .type = KeyType::Text,
+     .default_toml = "\"/sys/class/pwm/pwmchip0\"",
+     .help = "the sysfs PWM chip of both bridges"},
+    pwm_channel("az_rpwm", "0", "the azimuth bridge's RPWM channel; the four channels differ"),
+    pwm_channel("az_lpwm", "1", "the azimuth bridge's LPWM channel"),
+    pwm_channel("el_rpwm", "2", "the elevation bridge's RPWM channel"),
+    pwm_channel("el_lpwm", "3", "the elevation bridge's LPWM channel"),
+    {.key = "frequency_hz",
+     .type = KeyType::Number,
+     .unit = "Hz",
+     .range = closed(10.0, 100000.0),
+     .default_toml = "1000.0",
+     .help = "PWM frequency"},
+    {.key = "dead_time_s",
+     .type = KeyType::Number,
+     .unit = "s",
+     .range = closed(0.01, 3.0),
+     .default_toml = "0.1",
+     .help = "both PWMs at zero this long before a reversal"},
+}};
+
+constexpr auto kDriveNames = choice_names(kAxisDriveKinds);
+constexpr auto kSensorNames = choice_names(kAxisSensorKinds);
+
+/// A relay-drive line: a GPIO line on [gpio] chip, or "CHIP:N".
+constexpr KeySpec relay_line(std::string_view key, std::string_view help) {
+  return {.key = key, .type = KeyType::GpioLine, .default_note = "none", .help = help};
+}
+
+constexpr KeySpec relay_number(std::string_view key, std::string_view unit, Range range,
+                               std::string_view default_toml, std::string_view help) {
+  return {.key = key,
+          .type = KeyType::Number,
+          .unit = unit,
+          .range = range,
+          .default_toml = default_toml,
+          .help = help};
+}
+
+constexpr std::array<KeySpec, 25> kHardwareAxis{{
+    {.key = "drive",
+     .type = KeyType::Choice,
+     .choices = kDriveNames,
+     .default_toml = "\"pwm\"",
+     .help = "`pwm`: an IBT-2 on the `[pwm]` channels; `relay`: GPIO relays (the `relay_*` keys); "
+             "`pot`: an MCP41010 in the rotator box (`spi_device`, `wiper_calibration`)"},
+    {.key = "sensor",
+     .type = KeyType::Choice,
+     .choices = kSensorNames,
+     .default_toml = "\"hub\"",
+     .help = "`hub`: this axis of the EncoderHub on `[hub]`; `mcp3008` (spidev, 10 bits of 3.3 V) "
+             "or `ads1115` (i2c-dev, ±4.096 V, 15 bits): a pot read by an ADC (the `adc_*` keys "
+             "and `pot_calibration`)"},
+    {.key = "enable",
+     .type = KeyType::GpioLine,
+     .default_note = "tied high",
+     .help = "`drive = \"pwm\"`: the IBT-2's R_EN/L_EN on a GPIO line"},
+    relay_line("relay_forward",
+               "`drive = \"relay\"`: the clockwise / up relay, with relay_reverse"),
+    relay_line("relay_reverse", "the counter-clockwise / down relay, with relay_forward"),
+    relay_line("relay_power", "or: the motor's power relay, with relay_polarity"),
+    relay_line("relay_polarity", "the polarity relay that chooses the direction, with relay_power"),
+    {.key = "relay_active_low",
+     .type = KeyType::Boolean,
+     .default_toml = "false",
+     .help = "the relay lines energise their relays low"},
+    relay_number("window_deg", "°", closed(0.0, 10.0), "1.0", "the relay drive's movement window"),
+    relay_number("lsb_deg", "°", above_up_to(0.0, 1.0), "0.3515625",
+                 "one step of the position reading (360/1024)"),
+    relay_number("coast_deg", "°", closed(0.0, 10.0), "0.0",
+                 "how far the axis runs on after its relay opens at full speed"),
+    relay_number("min_on_s", "s", closed(0.0, 10.0), "0.1",
+                 "an energised relay stays on at least this long"),
+    relay_number("reversal_dead_s", "s", above_up_to(0.0, 60.0), "0.5",
+                 "after a release, both directions stay off this long before a reversal"),
+    relay_number("polarity_settle_s", "s", closed(0.0, 1.0), "0.05",
+                 "the polarity relay settles this long before the power relay closes"),
+    {.key = "spi_device",
+     .type = KeyType::Text,
+     .help = "`drive = \"pot\"`, required: the MCP41010's spidev (`/dev/spidevB.C`)"},
+    {.key = "spi_hz",
+     .type = KeyType::Integer,
+     .unit = "Hz",
+     .range = closed(10000.0, 10000000.0),
+     .default_toml = "1000000",
+     .help = "the MCP41010's SPI clock"},
+    {.key = "wiper_calibration",
+     .type = KeyType::NumberList,
+     .items = {4, 4},
+     .help = "`drive = \"pot\"`, required: `[wiper_a, deg_a, wiper_b, deg_b]`, two wiper codes "
+             "(0 to 255) and the angles they set"},
+    relay_number("setpoint_band_deg", "°", above_up_to(0.0, 20.0), "2.0",
+                 "the rotator box's own dead band around a setpoint"),
+    {.key = "adc_device",
+     .type = KeyType::Text,
+     .help = "an ADC sensor, required: `/dev/spidevB.C` (MCP3008) or `/dev/i2c-N` (ADS1115)"},
+    {.key = "adc_channel",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 7.0),
+     .default_toml = "0",
+     .help = "the ADC's input: 0 to 7 on the MCP3008, 0 to 3 on the ADS1115"},
+    {.key = "adc_address",
+     .type = KeyType::Integer,
+     .range = closed(72.0, 75.0),
+     .default_toml = "72",
+     .help = "the ADS1115's I²C address (0x48 to 0x4B)"},
+    {.key = "pot_calibration",
+     .type = KeyType::NumberList,
+     .items = {4, 4},
+     .help = "an ADC sensor, required: `[counts_a, deg_a, counts_b, deg_b]` read at two angles"},
+    {.key = "open_below_counts",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 32768.0),
+     .default_note = "none",
+     .help = "a broken-wire guard: a reading below this is a fault (within the ADC's range)"},
+    {.key = "open_above_counts",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 32768.0),
+     .default_note = "none",
+     .help = "a broken-wire guard: a reading above this is a fault (within the ADC's range)"},
+    {.key = "average_samples",
+     .type = KeyType::Integer,
+     .range = closed(1.0, 64.0),
+     .default_toml = "4",
+     .help = "readings averaged"},
+}};
+
+static_assert(control::MovingAverage::kCapacity == 64, "[hardware.*] average_samples' range");
+
+constexpr std::array<SectionSpec, 7> kSections{{
+    {.name = "antenna",
+     .chapter = Chapter::Antenna,
+     .keys = kAntenna,
+     .title = "The antenna behind the station"},
+    {.name = "hamlib",
+     .chapter = Chapter::Antenna,
+     .keys = kHamlib,
+     .title = "A rotator controller through Hamlib",
+     .help = "For `[antenna] backend = \"hamlib\"`."},
+    {.name = "hub",
+     .chapter = Chapter::Antenna,
+     .keys = kHub,
+     .title = "The EncoderHub",
+     .help = "The encoders' serial link ([encoder-hub.md](encoder-hub.md))."},
+    {.name = "pwm",
+     .chapter = Chapter::Antenna,
+     .keys = kPwm,
+     .title = "Two IBT-2 bridges",
+     .help = "The bridges of the `pwm` backend, and of a `hardware` axis with `drive = \"pwm\"`."},
+    {.name = "hardware", .chapter = Chapter::Antenna, .title = "Per-axis hardware"},
+    {.name = "hardware.az",
+     .chapter = Chapter::Antenna,
+     .keys = kHardwareAxis,
+     .title = "The azimuth axis's drive and sensor",
+     .help = "For `[antenna] backend = \"hardware\"`; wiring in [hardware.md](hardware.md)."},
+    {.name = "hardware.el",
+     .chapter = Chapter::Antenna,
+     .keys = kHardwareAxis,
+     .title = "The elevation axis's drive and sensor",
+     .help = "As `[hardware.az]`, for the elevation axis."},
+}};
+
+}  // namespace
+
+std::span<const SectionSpec> antenna_sections() { return kSections; }
+
+}  // namespace azt::app

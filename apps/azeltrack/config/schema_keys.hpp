@@ -1,0 +1,20 @@
+#pragma once
+// The schema's key tables, one function per concern (config_schema.hpp). Each returns its
+// sections in the reference's order; config_schema.cpp puts them together.
+
+#include <span>
+
+#include "config/config_schema.hpp"
+
+namespace azt::app {
+
+std::span<const SectionSpec> sky_sections();         ///< [station], [sky], [atmosphere]
+std::span<const SectionSpec> control_sections();     ///< [control], [geometry], [corrections], …
+std::span<const SectionSpec> target_sections();      ///< [target], [satellites], [[spacecraft]]
+std::span<const SectionSpec> antenna_sections();     ///< [antenna], [hamlib], [hub], [pwm], …
+std::span<const SectionSpec> station_io_sections();  ///< [gpio], [sequencer]
+std::span<const SectionSpec> server_sections();      ///< [rotctld], [[serial]], [web], …
+std::span<const SectionSpec> service_sections();     ///< [gps], [time], [receiver], [export]
+std::span<const SectionSpec> sim_sections();         ///< [sim] and its tables
+
+}  // namespace azt::app

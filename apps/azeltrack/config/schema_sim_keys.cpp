@@ -1,0 +1,195 @@
+// The schema's keys of the simulated antenna: its hub link, its plants, how its beam really points
+// and its receiver (sim_config.cpp and pointing_config.cpp read them).
+#include <array>
+
+#include "config/schema_keys.hpp"
+
+namespace azt::app {
+namespace {
+
+constexpr std::array<std::string_view, 2> kFrameVersions{"seed", "crc8"};
+constexpr std::array<std::string_view, 2> kHubKinds{"model", "firmware"};
+
+constexpr std::array<KeySpec, 6> kSim{{
+    {.key = "frame_version",
+     .type = KeyType::Choice,
+     .choices = kFrameVersions,
+     .default_toml = "\"crc8\"",
+     .help = "the simulated EncoderHub's frames: `seed` (AnTrack-Pro) or `crc8`"},
+    {.key = "frame_loss",
+     .type = KeyType::Number,
+     .range = closed(0.0, 1.0),
+     .default_toml = "0.0",
+     .help = "probability of a lost frame"},
+    {.key = "byte_corruption",
+     .type = KeyType::Number,
+     .range = closed(0.0, 1.0),
+     .default_toml = "0.0",
+     .help = "probability of a corrupted byte"},
+    {.key = "seed",
+     .type = KeyType::Integer,
+     .default_toml = "1",
+     .help = "random seed of the link faults"},
+    {.key = "hub",
+     .type = KeyType::Choice,
+     .choices = kHubKinds,
+     .default_toml = "\"model\"",
+     .help = "`firmware`: the simulated encoders are read by the EncoderHub firmware running on a "
+             "simulated ATmega328P, its frames through the daemon's decoder, in `serve` and in "
+             "`simulate` ([encoder-hub.md](encoder-hub.md))"},
+    {.key = "hub_firmware",
+     .type = KeyType::Text,
+     .default_note = "beside the program",
+     .help = "the firmware's ELF: by default `firmware/encoder-hub.elf` beside the program, "
+             "`build/firmware/encoder-hub.elf` in the build tree, else the package's "
+             "`/usr/share/azeltrack/firmware/encoder-hub.elf`"},
+}};
+
+constexpr std::array<std::string_view, 3> kFaults{"frozen_shaft", "reversed_motor",
+                                                  "encoder_offset"};
+
+constexpr std::array<KeySpec, 9> kPlant{{
+    {.key = "time_constant_s",
+     .type = KeyType::Number,
+     .unit = "s",
+     .range = above(0.0),
+     .default_note = "the mount's",
+     .help = "the simulated motor's speed response (default: what the controller is told)"},
+    {.key = "backlash_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .range = at_least(0.0),
+     .default_note = "the mount's",
+     .help = "the simulated gear play"},
+    {.key = "stiction_duty",
+     .type = KeyType::Number,
+     .range = from_below(0.0, 1.0),
+     .default_note = "the mount's min_duty",
+     .help = "drive at or below which the simulated motor does not turn"},
+    {.key = "start_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .default_note = "0, within the stops",
+     .help = "where the simulated axis starts, within its stops (a real station believes it "
+             "starts at 0°, or the nearest end of its travel, until the first reading)"},
+    {.key = "min_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .default_note = "the travel's",
+     .help = "the simulated axis's lower end stop"},
+    {.key = "max_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .default_note = "the travel's",
+     .help = "the simulated axis's upper end stop"},
+    {.key = "fault",
+     .type = KeyType::Choice,
+     .choices = kFaults,
+     .default_note = "none",
+     .help = "a plant fault to rehearse from `fault_at_s` after the start: `frozen_shaft` (the "
+             "stall supervisor latches), `reversed_motor`, `encoder_offset` (by `fault_counts`)"},
+    {.key = "fault_at_s",
+     .type = KeyType::Number,
+     .unit = "s",
+     .range = at_least(0.0),
+     .default_toml = "0.0",
+     .help = "seconds after the start"},
+    {.key = "fault_counts",
+     .type = KeyType::Integer,
+     .range = closed(-65535.0, 65535.0),
+     .default_toml = "100",
+     .help = "the encoder offset's counts"},
+}};
+
+constexpr KeySpec mount_error(std::string_view key, std::string_view help) {
+  return {.key = key,
+          .type = KeyType::Number,
+          .unit = "°",
+          .range = within(10.0),
+          .default_toml = "0.0",
+          .help = help};
+}
+
+constexpr std::array<KeySpec, 7> kMountErrors{{
+    mount_error("az_offset_deg", "azimuth encoder zero (the model's IA)"),
+    mount_error("el_offset_deg", "elevation encoder zero (IE)"),
+    mount_error("collimation_deg", "collimation (CA)"),
+    mount_error("nonperp_deg", "axes' non-perpendicularity (NPAE)"),
+    mount_error("az_tilt_deg", "azimuth axis tilt, towards `az_tilt_toward_deg`"),
+    {.key = "az_tilt_toward_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .default_toml = "0.0",
+     .help = "the azimuth the axis tilts towards"},
+    mount_error("el_sag_deg", "elevation sag (SAG)"),
+}};
+
+constexpr KeySpec receiver_number(std::string_view key, std::string_view unit, Range range,
+                                  std::string_view default_toml, std::string_view help) {
+  return {.key = key,
+          .type = KeyType::Number,
+          .unit = unit,
+          .range = range,
+          .default_toml = default_toml,
+          .help = help};
+}
+
+constexpr std::array<std::string_view, 3> kFluxBands{"1296", "2304", "10368"};
+
+constexpr std::array<KeySpec, 10> kSimReceiver{{
+    receiver_number("beamwidth_deg", "°", above_up_to(0.0, 30.0), "1.6", "half-power beamwidth"),
+    receiver_number("tsys_k", "K", above_up_to(0.0, 1e5), "50.0", "system noise on cold sky"),
+    receiver_number("noise_db", "dB", closed(0.0, 10.0), "0.1", "rms of one reading"),
+    receiver_number("rate_hz", "Hz", above_up_to(0.0, 100.0), "5.0", "readings per second"),
+    receiver_number("dish_m", "m", above_up_to(0.0, 100.0), "10.0",
+                    "dish diameter, for the radio sources' antenna temperatures"),
+    receiver_number("efficiency", "", above_up_to(0.0, 1.0), "0.6", "aperture efficiency"),
+    receiver_number("sun_k", "K", above_up_to(0.0, 1e8), "170000.0", "the Sun's temperature"),
+    receiver_number("moon_k", "K", above_up_to(0.0, 1e4), "220.0", "the Moon's temperature"),
+    {.key = "flux_mhz",
+     .type = KeyType::Integer,
+     .unit = "MHz",
+     .choices = kFluxBands,
+     .default_toml = "1296",
+     .help = "the frequency of the catalogue's flux densities used"},
+    {.key = "seed",
+     .type = KeyType::Integer,
+     .default_toml = "1",
+     .help = "random seed of the noise"},
+}};
+
+constexpr std::array<SectionSpec, 5> kSections{{
+    {.name = "sim",
+     .chapter = Chapter::Simulation,
+     .keys = kSim,
+     .title = "The simulated EncoderHub link",
+     .help = "Used by the `sim` backend and by `azeltrack simulate` ([control.md](control.md))."},
+    {.name = "sim.az",
+     .chapter = Chapter::Simulation,
+     .keys = kPlant,
+     .title = "The simulated azimuth axis",
+     .help = "The plant turns at the mount's rate and reads the mount's encoders "
+             "(`[mount.az]`); these are its own."},
+    {.name = "sim.el",
+     .chapter = Chapter::Simulation,
+     .keys = kPlant,
+     .title = "The simulated elevation axis",
+     .help = "As `[sim.az]`, for the elevation axis."},
+    {.name = "sim.mount_errors",
+     .chapter = Chapter::Simulation,
+     .keys = kMountErrors,
+     .title = "How the simulated beam really points",
+     .help = "The terms of the pointing model, as the simulated mount has them "
+             "([calibration.md](calibration.md))."},
+    {.name = "sim.receiver",
+     .chapter = Chapter::Simulation,
+     .keys = kSimReceiver,
+     .title = "The simulated receiver of scans",
+     .help = "By default a 10 m dish at 23 cm."},
+}};
+
+}  // namespace
+
+std::span<const SectionSpec> sim_sections() { return kSections; }
+
+}  // namespace azt::app
