@@ -71,14 +71,41 @@ bool is_array_of_tables(const toml::node& n) {
   return a != nullptr && !a->empty() && a->is_array_of_tables();
 }
 
-/// "key = value" lines for a new [name] table holding plain values only.
-std::optional<std::string> new_table_text(const std::string& name, const toml::table& t) {
-  std::string out = "\n[" + name + "]\n";
+std::optional<std::string> new_tables_text(const std::string& name, const toml::node& value);
+
+/// `header` ("[mount.az]", "[[serial]]") and its "key = value" lines, then its own tables under
+/// their full names. A table that holds only tables needs no header of its own ([mount] for
+/// [mount.az]); a table inside an item of an array of tables has no simple place.
+std::optional<std::string> table_text(const std::string& header, const std::string& name,
+                                      const toml::table& t) {
+  std::string plain;
+  std::string nested;
   for (const auto& [key, value] : t) {
-    if (value.is_table() || is_array_of_tables(value)) return std::nullopt;
-    out += std::string(key.str()) + " = " + format_toml_value(value) + "\n";
+    if (value.is_table() || is_array_of_tables(value)) {
+      if (header.rfind("[[", 0) == 0) return std::nullopt;
+      const auto sub = new_tables_text(name + "." + std::string(key.str()), value);
+      if (!sub) return std::nullopt;
+      nested += *sub;
+    } else {
+      plain += std::string(key.str()) + " = " + format_toml_value(value) + "\n";
+    }
   }
-  return out;
+  const bool own_header = !plain.empty() || nested.empty();
+  return (own_header ? "\n" + header + "\n" + plain : std::string()) + nested;
+}
+
+/// A new table or array of tables named `name` (dotted: "mount.az"), as text for the file's end.
+std::optional<std::string> new_tables_text(const std::string& name, const toml::node& value) {
+  if (const toml::array* items = value.as_array()) {
+    std::string out;
+    for (const auto& item : *items) {
+      const auto text = table_text("[[" + name + "]]", name, *item.as_table());
+      if (!text) return std::nullopt;
+      out += *text;
+    }
+    return out;
+  }
+  return table_text("[" + name + "]", name, *value.as_table());
 }
 
 class Differ {
@@ -86,12 +113,20 @@ class Differ {
   Differ(const std::string& text, std::vector<Edit>& edits)
       : text_(text), index_(text), edits_(edits) {}
 
-  bool table(const toml::table& before, const toml::table& after, bool root) {
+  /// `path` is the table's dotted name ("" at the top); tables inside an item of an array of
+  /// tables have none (`in_item`): nothing new can be named there.
+  bool table(const toml::table& before, const toml::table& after, const std::string& path,
+             bool in_item = false) {
     for (const auto& [key, value] : after) {
+      const std::string name =
+          path.empty() ? std::string(key.str()) : path + "." + std::string(key.str());
       const toml::node* old = before.get(key.str());
       if (old == nullptr) {
-        if (!added(before, std::string(key.str()), value, root)) return false;
-      } else if (!changed(*old, value)) {
+        if (!added(before, std::string(key.str()), name, value, path.empty() && !in_item,
+                   in_item)) {
+          return false;
+        }
+      } else if (!changed(*old, value, name, in_item)) {
         return false;
       }
     }
@@ -102,19 +137,13 @@ class Differ {
   }
 
  private:
-  bool changed(const toml::node& old, const toml::node& now) {
+  bool changed(const toml::node& old, const toml::node& now, const std::string& name,
+               bool in_item) {
     if (same(old, now)) return true;
-    if (old.is_table() && now.is_table()) return table(*old.as_table(), *now.as_table(), false);
-    if (is_array_of_tables(old) && is_array_of_tables(now) &&
-        old.as_array()->size() == now.as_array()->size()) {
-      for (std::size_t i = 0; i < old.as_array()->size(); ++i) {
-        if (!table(*old.as_array()->get(i)->as_table(), *now.as_array()->get(i)->as_table(),
-                   false)) {
-          return false;
-        }
-      }
-      return true;
+    if (old.is_table() && now.is_table()) {
+      return table(*old.as_table(), *now.as_table(), name, in_item);
     }
+    if (is_array_of_tables(old) && is_array_of_tables(now)) return items_changed(old, now, name);
     if (now.is_table() || is_array_of_tables(now) || is_array_of_tables(old)) return false;
     const auto begin = index_.offset(old.source().begin);
     const auto end = index_.offset(old.source().end);
@@ -123,17 +152,34 @@ class Differ {
     return true;
   }
 
-  bool added(const toml::table& parent, const std::string& key, const toml::node& value,
-             bool root) {
-    if (root) {
-      // A new top-level table goes at the end; a new top-level plain key has no simple place.
-      if (!value.is_table()) return false;
-      const auto text = new_table_text(key, *value.as_table());
+  /// Items changed in place, and new ones after them: [[name]] tables at the file's end.
+  bool items_changed(const toml::node& old, const toml::node& now, const std::string& name) {
+    const toml::array& a = *old.as_array();
+    const toml::array& b = *now.as_array();
+    if (b.size() < a.size()) return false;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      const toml::table& item = *b.get(i)->as_table();
+      if (i < a.size() && !table(*a.get(i)->as_table(), item, name, true)) return false;
+      if (i < a.size()) continue;
+      const auto text = table_text("[[" + name + "]]", name, item);
+      if (!text) return false;
+      edits_.push_back({text_.size(), text_.size(), *text});
+    }
+    return true;
+  }
+
+  bool added(const toml::table& parent, const std::string& key, const std::string& name,
+             const toml::node& value, bool root, bool in_item) {
+    if (value.is_table() || is_array_of_tables(value)) {
+      // A new table, at any depth, goes at the end of the file under its full name.
+      if (in_item || parent.is_inline()) return false;
+      const auto text = new_tables_text(name, value);
       if (!text) return false;
       edits_.push_back({text_.size(), text_.size(), *text});
       return true;
     }
-    if (value.is_table() || is_array_of_tables(value) || parent.is_inline()) return false;
+    // A new top-level plain key has no simple place.
+    if (root || parent.is_inline()) return false;
     // After the last line of the table's own values (or its [header]).
     toml::source_index last = parent.source().begin.line;
     if (last == 0) return false;
@@ -167,7 +213,7 @@ std::string format_toml_value(const toml::node& value) { return toml_text(value)
 std::optional<std::string> edit_toml_text(const std::string& text, const toml::table& before,
                                           const toml::table& after) {
   std::vector<Edit> edits;
-  if (!Differ(text, edits).table(before, after, true)) return std::nullopt;
+  if (!Differ(text, edits).table(before, after, "")) return std::nullopt;
   // From the end of the text backwards, so earlier offsets stay valid. Insertions at one place
   // are applied last-first, which leaves them in the order they were made.
   std::reverse(edits.begin(), edits.end());

@@ -277,6 +277,31 @@ TEST_F(ConfigStoreTest, NewKeysAndTablesGetLinesOfTheirOwn) {
   EXPECT_EQ(ConfigStore::open(path_).config().web.port, 8090);
 }
 
+TEST_F(ConfigStoreTest, NewSubTablesAndItemsKeepTheComments) {
+  // The console's settings add tables at any depth and items after the others.
+  write(path_, kCommented);
+  ConfigStore store = ConfigStore::open(path_);
+  ASSERT_TRUE(store
+                  .update([](toml::table& root) {
+                    root.insert("mount", toml::table{{"az", toml::table{{"encoder_bits", 14}}}});
+                    root["park"].as_array()->push_back(toml::table{{"name", "stow"}});
+                  })
+                  .ok());
+  ASSERT_TRUE(store.set("mount.el.max_rate_deg_s", "2.0").ok());
+  const std::string text = read(path_);
+  EXPECT_NE(text.find("\n[mount.az]\nencoder_bits = 14\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n[[park]]\nname = \"stow\"\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n[mount.el]\nmax_rate_deg_s = 2.0\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\n[mount]\n"), std::string::npos) << "no header of its own: " << text;
+  EXPECT_NE(text.find("# my station, do not lose these notes"), std::string::npos) << text;
+  EXPECT_NE(text.find("[[park]]           # slot 1"), std::string::npos) << text;
+  const DaemonConfig c = ConfigStore::open(path_).config();
+  EXPECT_EQ(c.mount.az.encoder_bits, 14);
+  EXPECT_DOUBLE_EQ(c.mount.el.max_rate_deg_s, 2.0);
+  EXPECT_EQ(c.park[1].name, "stow");
+  EXPECT_EQ(c.park[0].name, "south");
+}
+
 TEST_F(ConfigStoreTest, RemovedKeysLoseTheirLine) {
   write(path_, kCommented);
   ConfigStore store = ConfigStore::open(path_);
