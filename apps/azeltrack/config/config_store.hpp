@@ -45,6 +45,8 @@ class ConfigStore {
 
   [[nodiscard]] const std::string& path() const { return path_; }
   [[nodiscard]] const DaemonConfig& config() const { return config_; }
+  /// The file as this process last loaded or saved it (migrated): what the settings show.
+  [[nodiscard]] const toml::table& root() const { return root_; }
   /// Things to log loudly: a fallback to the backup, migrations applied in memory.
   [[nodiscard]] const std::vector<std::string>& notices() const { return notices_; }
   /// Removes the temp files of writers that were killed mid-save (`FILE.tmp.PID` of a PID that

@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "config/schema_json.hpp"
+
 namespace azt::app {
 
 /// A refused action: HTTP status (400 for a bad value, 409 for "not now"), the field at fault.
@@ -42,6 +44,9 @@ class ConsoleModel {
 
   virtual nlohmann::json state() = 0;
   virtual nlohmann::json config() = 0;
+  /// GET /api/config/schema: every setting's description; a model over a configuration file adds
+  /// the file's values and the keys waiting for a restart.
+  virtual nlohmann::json config_schema() { return schema_json(); }
   virtual nlohmann::json targets() = 0;
   virtual nlohmann::json sky(double hours) = 0;
   /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …); `source` names

@@ -1,5 +1,7 @@
 // The console's configuration actions: each saves the keys it changes through the atomic store
-// (the file as re-read) and applies them to the running station once saved.
+// (the file as re-read) and applies them to the running station once saved. The settings of any
+// section go through act_settings, checked against the configuration schema; the older routes
+// (band, DX locator, offsets, tilt, park slots, corrections) keep their own bodies.
 #include "console/daemon_console.hpp"
 
 #include <algorithm>
@@ -7,8 +9,8 @@
 
 #include "azt/timekeeping/ntp_servers.hpp"
 #include "common/usage_error.hpp"
-#include "config/sky_config.hpp"
 #include "console/body_fields.hpp"
+#include "console/restart_needed.hpp"
 
 namespace azt::app {
 namespace {
@@ -20,6 +22,18 @@ toml::table& table_at(toml::table& root, const char* name) {
   toml::table* t = root[name].as_table();
   if (t == nullptr) throw ApiError(400, name, std::string("[") + name + "] is not a table");
   return *t;
+}
+
+/// The whole file's check names the key at fault ("[station].lat_deg and lon_deg go together"):
+/// the refusal carries that key as its field, so the page marks it.
+ApiError with_field_at_fault(const ApiError& error, const SettingsChange& change) {
+  const std::string message = error.what();
+  for (const KeySpec* k : change.keys) {
+    if (message.find("]." + std::string(k->key)) != std::string::npos) {
+      return ApiError(error.status(), std::string(k->key), message);
+    }
+  }
+  return error;
 }
 
 }  // namespace
@@ -37,6 +51,7 @@ void DaemonConsole::save(const std::string& field, ConfigStore::Change change,
           return;
         }
         for (const auto& notice : notices.value()) p_.log(notice);
+        restart_needed_ = restart_needed(started_, p_.store.root());
         done(ActResult{apply(), std::nullopt});
       });
 }
@@ -111,7 +126,7 @@ void DaemonConsole::act_scan_apply(const json& /*body*/, ActDone done) {
                                                   now->el_offset_deg == found.el_offset_deg) {
           p_.scanner->applied();  // not a newer scan's result, which finished meanwhile
         }
-        apply_corrections(p_.store.config().station.corrections);
+        apply_live(LiveApply::Corrections);
         return json::object();
       },
       [this, done = std::move(done)](ActResult result) {
@@ -158,35 +173,6 @@ void DaemonConsole::act_correction(const json& body, ActDone done) {
       std::move(done));
 }
 
-void DaemonConsole::act_station(const json& body, ActDone done) {
-  ConfigStore::Change change;
-  if (body.contains("grid")) {
-    change = [grid = body_text(body, "grid")](toml::table& root) {
-      toml::table& s = table_at(root, "station");
-      s.insert_or_assign("grid", grid);
-      s.erase("lat_deg");  // the locator's centre becomes the position
-      s.erase("lon_deg");
-    };
-  } else {
-    const double lat = body_number(body, "lat_deg");
-    const double lon = body_number(body, "lon_deg");
-    const auto alt = body_optional_number(body, "alt_m");
-    change = [lat, lon, alt](toml::table& root) {
-      set_station_position(table_at(root, "station"), lat, lon, alt);
-    };
-  }
-  save(
-      body.contains("grid") ? "grid" : "lat_deg", std::move(change),
-      [this] {
-        p_.config.sky = p_.store.config().sky;
-        p_.sky.refollow();
-        if (p_.satellites != nullptr) p_.satellites->set_site(p_.config.sky.settings.observer);
-        snapshot_.unix_s = -1.0;
-        return json{{"station", config()["station"]}};
-      },
-      std::move(done));
-}
-
 void DaemonConsole::act_band(const json& body, ActDone done) {
   save(
       "band",
@@ -194,9 +180,7 @@ void DaemonConsole::act_band(const json& body, ActDone done) {
         table_at(root, "sky").insert_or_assign("band", band);
       },
       [this] {
-        p_.config.sky.band_name = p_.store.config().sky.band_name;
-        p_.config.sky.settings.freq_mhz = p_.store.config().sky.settings.freq_mhz;
-        snapshot_.unix_s = -1.0;
+        apply_live(LiveApply::Band);
         return json{{"band", p_.config.sky.band_name}};
       },
       std::move(done));
@@ -214,9 +198,7 @@ void DaemonConsole::act_dx(const json& body, ActDone done) {
         }
       },
       [this] {
-        p_.config.sky.settings.dx = p_.store.config().sky.settings.dx;
-        p_.config.sky.settings.dx_grid = p_.store.config().sky.settings.dx_grid;
-        snapshot_.unix_s = -1.0;
+        apply_live(LiveApply::DxGrid);
         return json{{"dx_grid", p_.config.sky.settings.dx_grid}};
       },
       std::move(done));
@@ -234,7 +216,7 @@ void DaemonConsole::act_offsets(const json& body, ActDone done) {
         if (el) t.insert_or_assign("el_offset_deg", *el);
       },
       [this] {
-        apply_corrections(p_.store.config().station.corrections);
+        apply_live(LiveApply::Corrections);
         return json::object();
       },
       std::move(done));
@@ -280,7 +262,7 @@ void DaemonConsole::act_tilt(const json& body, ActDone done) {
         t.insert_or_assign("tilt_el_deg", a);
       },
       [this] {
-        apply_corrections(p_.store.config().station.corrections);
+        apply_live(LiveApply::Corrections);
         return json::object();
       },
       std::move(done));
@@ -313,39 +295,80 @@ void DaemonConsole::act_park(const json& body, ActDone done) {
         root.insert_or_assign("park", a);
       },
       [this] {
-        p_.config.park = p_.store.config().park;
-        p_.modes.set_park_slots(p_.config.park);
+        apply_live(LiveApply::Park);
         return json::object();
       },
       std::move(done));
 }
 
-void DaemonConsole::act_control(const json& body, ActDone done) {
-  std::vector<std::string> keys;
-  for (const char* key : {"window_deg", "ramp_s", "tracking_speed"}) {
-    if (body.contains(key)) keys.emplace_back(key);
+void DaemonConsole::apply_live(LiveApply what) {
+  const DaemonConfig& saved = p_.store.config();
+  switch (what) {
+    case LiveApply::Station:
+      p_.config.sky.settings.observer = saved.sky.settings.observer;
+      p_.config.sky.settings.grid = saved.sky.settings.grid;
+      p_.sky.refollow();
+      if (p_.satellites != nullptr) p_.satellites->set_site(p_.config.sky.settings.observer);
+      break;
+    case LiveApply::Band:
+      p_.config.sky.band_name = saved.sky.band_name;
+      p_.config.sky.settings.freq_mhz = saved.sky.settings.freq_mhz;
+      break;
+    case LiveApply::DxGrid:
+      p_.config.sky.settings.dx = saved.sky.settings.dx;
+      p_.config.sky.settings.dx_grid = saved.sky.settings.dx_grid;
+      break;
+    case LiveApply::Corrections:
+      apply_corrections(saved.station.corrections);
+      break;
+    case LiveApply::Park:
+      p_.config.park = saved.park;
+      p_.modes.set_park_slots(p_.config.park);
+      break;
   }
-  if (keys.empty()) throw ApiError(400, "window_deg", "give window_deg, ramp_s or tracking_speed");
-  std::vector<double> values;
-  values.reserve(keys.size());
-  for (const auto& k : keys) values.push_back(body_number(body, k));
+  snapshot_.unix_s = -1.0;  // the views are computed again with what changed
+}
+
+void DaemonConsole::act_settings(const std::string& route, const json& body, ActDone done) {
+  SettingsChange change = settings_change(route, body);  // a refusal here changes nothing
+  const std::string first = std::string(change.keys.front()->key);
+  // Park slots the file lacks before the one changed are written as the station runs them, so
+  // that the file's numbering stays the console's.
+  ItemFiller fill;
+  if (change.section->name == "park") {
+    fill = [running = p_.modes.park_slots()](std::size_t i) {
+      if (i >= running.size()) throw UsageError("at most 4 [[park]] slots");
+      const control::ParkSlot& s = running[i];
+      return toml::table{
+          {"name", s.name}, {"az_deg", s.position.az_deg}, {"el_deg", s.position.el_deg}};
+    };
+  }
   save(
-      keys.front(),
-      [keys, values](toml::table& root) {
-        toml::table& t = table_at(root, "control");
-        for (std::size_t i = 0; i < keys.size(); ++i) t.insert_or_assign(keys[i], values[i]);
-      },
-      [this, keys] {
-        for (const auto& k : keys) {
-          const std::string name = "control." + k;
-          if (std::find(restart_needed_.begin(), restart_needed_.end(), name) ==
-              restart_needed_.end()) {
-            restart_needed_.push_back(name);
-          }
-        }
-        return json{{"restart_needed", restart_needed_}};
-      },
-      std::move(done));
+      first, store_change(change, std::move(fill)),
+      [this, change] { return apply_settings(change); },
+      [change, done = std::move(done)](ActResult result) {
+        if (result.error) result.error = with_field_at_fault(*result.error, change);
+        done(std::move(result));
+      });
+}
+
+json DaemonConsole::apply_settings(const SettingsChange& change) {
+  json applied = json::array();
+  json restart = json::array();
+  std::vector<LiveApply> paths;
+  for (const KeySpec* k : change.keys) {
+    const auto path = live_apply_of(change.section->name, k->key);
+    (path ? applied : restart).push_back(change.dotted(*k));
+    if (path && std::find(paths.begin(), paths.end(), *path) == paths.end()) paths.push_back(*path);
+  }
+  for (const LiveApply path : paths) apply_live(path);
+  return {{"applied", applied}, {"restart", restart}, {"restart_needed", restart_needed_}};
+}
+
+json DaemonConsole::config_schema() {
+  json out = schema_json_with_values(p_.store.root());
+  out["restart_needed"] = restart_needed_;
+  return out;
 }
 
 }  // namespace azt::app

@@ -46,18 +46,23 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
   using Act = void (DaemonConsole::*)(const json&, ActDone);
   static const std::map<std::string, Act, std::less<>> save_actions = {
       {"correction", &DaemonConsole::act_correction},
-      {"config/station", &DaemonConsole::act_station},
       {"config/band", &DaemonConsole::act_band},
       {"config/dx", &DaemonConsole::act_dx},
       {"config/offsets", &DaemonConsole::act_offsets},
       {"scan/apply", &DaemonConsole::act_scan_apply},
       {"config/tilt", &DaemonConsole::act_tilt},
       {"config/park", &DaemonConsole::act_park},
-      {"config/control", &DaemonConsole::act_control},
       {"time/servers", &DaemonConsole::act_time_servers}};
   const auto it = save_actions.find(action);
-  if (it == save_actions.end()) throw ApiError(404, "", "no such action: " + action);
-  (this->*(it->second))(body, std::move(done));
+  if (it != save_actions.end()) {
+    (this->*(it->second))(body, std::move(done));
+    return;
+  }
+  if (action.rfind("config/", 0) == 0) {
+    act_settings(action.substr(7), body, std::move(done));
+    return;
+  }
+  throw ApiError(404, "", "no such action: " + action);
 }
 
 TargetRequest DaemonConsole::target_request(const json& body) {

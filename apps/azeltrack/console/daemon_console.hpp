@@ -19,6 +19,7 @@
 #include "config/daemon_config.hpp"
 #include "console/console_model.hpp"
 #include "console/moon_planner.hpp"
+#include "console/settings_change.hpp"
 #include "station/clock_watch.hpp"
 #include "station/pointing_scanner.hpp"
 #include "station/recent_events.hpp"
@@ -66,10 +67,12 @@ class DaemonConsole final : public ConsoleModel {
   explicit DaemonConsole(ConsoleParts parts)
       : p_(std::move(parts)),
         planner_({p_.config.sky, p_.offload, p_.unix_s}),
-        wait_({p_.config.sky, p_.config.station.el_range.min_deg, p_.offload}) {}
+        wait_({p_.config.sky, p_.config.station.el_range.min_deg, p_.offload}),
+        started_(p_.store.root()) {}
 
   nlohmann::json state() override;
   nlohmann::json config() override;
+  nlohmann::json config_schema() override;
   nlohmann::json targets() override;
   nlohmann::json sky(double hours) override;
   void act(const std::string& action, const nlohmann::json& body, const std::string& source,
@@ -101,13 +104,17 @@ class DaemonConsole final : public ConsoleModel {
   void act_scan_apply(const nlohmann::json& body, ActDone done);
   // The settings: each validates the body at once (ApiError), then saves off the loop.
   void act_correction(const nlohmann::json& body, ActDone done);
-  void act_station(const nlohmann::json& body, ActDone done);
   void act_band(const nlohmann::json& body, ActDone done);
   void act_dx(const nlohmann::json& body, ActDone done);
   void act_offsets(const nlohmann::json& body, ActDone done);
   void act_tilt(const nlohmann::json& body, ActDone done);
   void act_park(const nlohmann::json& body, ActDone done);
-  void act_control(const nlohmann::json& body, ActDone done);
+  /// PUT config/SECTION[/N] (settings_change.hpp): the keys checked against the schema, saved,
+  /// the live ones applied; the answer lists which applied and which wait for a restart.
+  void act_settings(const std::string& route, const nlohmann::json& body, ActDone done);
+  nlohmann::json apply_settings(const SettingsChange& change);
+  /// Brings the running station to the saved configuration's settings of one kind.
+  void apply_live(LiveApply what);
   /// POST time/servers {"servers": [...]}: chrony's upstream servers ([time] manage_chrony).
   void act_time_servers(const nlohmann::json& body, ActDone done);
 
@@ -123,6 +130,9 @@ class DaemonConsole final : public ConsoleModel {
   MoonPlanner planner_;
   TargetWait wait_;
   Snapshot snapshot_;
+  /// The file as the daemon started on it, and the saved settings that differ from it and wait
+  /// for a restart (restart_needed.hpp), brought up to date after every save.
+  toml::table started_;
   std::vector<std::string> restart_needed_;
   bool scan_apply_pending_ = false;  ///< a scan's apply is being saved: a second is refused
 };

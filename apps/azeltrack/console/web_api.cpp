@@ -134,6 +134,7 @@ linux_os::HttpReply WebApi::handle_get(const linux_os::HttpRequest& request) {
   const std::string& p = request.path;
   if (p == "/api/state") return json_reply(200, model_.state());
   if (p == "/api/config") return json_reply(200, model_.config());
+  if (p == "/api/config/schema") return json_reply(200, model_.config_schema());
   if (p == "/api/targets") return json_reply(200, model_.targets());
   if (p == "/api/sky") {
     return json_reply(

@@ -106,6 +106,25 @@ TEST(WebApi, ReadingIsOpenToEveryone) {
   EXPECT_EQ(rig.handle(Rig::request("DELETE", "/api/state")).status, 405U);
 }
 
+TEST(WebApi, TheSettingsSchemaIsReadingAndItsChangesNeedTheLogin) {
+  Rig rig;
+  const auto schema = rig.handle(Rig::request("GET", "/api/config/schema"));
+  ASSERT_EQ(schema.status, 200U);
+  EXPECT_GT(json::parse(schema.body)["sections"].size(), 30U) << "the model's default: the schema";
+  const std::string body = R"({"encoder_bits": 14})";
+  EXPECT_EQ(rig.handle(Rig::request("PUT", "/api/config/mount.az", body)).status, 401U);
+  linux_os::HttpRequest r = Rig::request("POST", "/api/config/mount.az", body);
+  r.authorization = "Bearer " + rig.token;
+  EXPECT_EQ(rig.handle(r).status, 405U) << "settings are changed with PUT";
+  EXPECT_TRUE(rig.model.actions.empty());
+  r.method = "PUT";
+  EXPECT_EQ(rig.handle(r).status, 200U);
+  EXPECT_EQ(rig.model.actions, std::vector<std::string>{R"(config/mount.az {"encoder_bits":14})"});
+  r.body = "[1, 2]";
+  EXPECT_EQ(rig.handle(r).status, 400U) << "a body that is not an object never reaches the model";
+  EXPECT_EQ(rig.model.actions.size(), 1U);
+}
+
 TEST(WebApi, TheMoonPlannerIsReadingAndAModelWithoutOneSays404) {
   // GET /api/moon-windows goes to the model's asynchronous planner (issue 16 §2), open to
   // every reader like the rest of reading; this model has none.
