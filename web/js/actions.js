@@ -5,7 +5,7 @@ import { S } from './state.js';
 import { $, setText } from './dom.js';
 import { toast } from './toast.js';
 import { request } from './api.js';
-import { refreshSession, setLoggedIn, showLogin } from './session.js';
+import { forgetToken, refreshSession, setLoggedIn, showLogin } from './session.js';
 
 // An action (POST/PUT). 401 opens the login form; a 403 (stale CSRF token) re-reads the session
 // once and retries. errEl: the form's .error element that shows a refusal instead of a toast;
@@ -21,6 +21,7 @@ export async function act(label, method, path, body, opts = {}) {
   }
   if (btn) btn.classList.remove('busy');
   if (r.status === 401) {
+    forgetToken(); // revoked in the console: from now on the password, as anywhere else
     setLoggedIn(false, null);
     showLogin(`Log in to ${label.toLowerCase()} — the controller answered: “${r.data.error || 'login required'}”.`);
     if (opts.errEl) setText(opts.errEl, 'Not saved: log in first.');

@@ -5,7 +5,9 @@ import { S } from './state.js';
 export async function request(method, path, body) {
   const headers = { Accept: 'application/json' };
   if (body !== undefined) headers['Content-Type'] = 'application/json';
-  if (S.csrf && method !== 'GET') headers['X-CSRF-Token'] = S.csrf;
+  // The kiosk acts with its bearer token (no cookie, so no CSRF token); a person with a session.
+  if (S.token) headers.Authorization = `Bearer ${S.token}`;
+  else if (S.csrf && method !== 'GET') headers['X-CSRF-Token'] = S.csrf;
   let r;
   try {
     r = await fetch(path, { method, headers, credentials: 'same-origin', cache: 'no-store',

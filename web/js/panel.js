@@ -6,7 +6,7 @@ import { S } from './state.js';
 import { $, setText } from './dom.js';
 import { toast } from './toast.js';
 import { act } from './actions.js';
-import { refreshSession, setLoggedIn } from './session.js';
+import { adoptToken, refreshSession, setLoggedIn } from './session.js';
 import { connect, setConnected, useSocket, watchSocket } from './socket.js';
 import { renderPanel, renderStatusScreen } from './panel_live.js';
 import { loadPanelTargets, markActive, wireTargets } from './panel_targets.js';
@@ -60,6 +60,7 @@ function wire() {
 }
 
 function start() {
+  adoptToken();
   useSocket({ state: renderPanel, connected: loadPanelTargets });
   wire();
   setLoggedIn(false, null);

@@ -4,6 +4,7 @@
 
 import { S } from './state.js';
 import { $ } from './dom.js';
+import { toast } from './toast.js';
 import { login, logout, showLogin } from './session.js';
 import { buildKeyboard } from './panel_keys.js';
 
@@ -59,7 +60,9 @@ export function wireLogin() {
     $('pw-show').textContent = shown ? 'Show' : 'Hide';
   });
   $('login-state').addEventListener('click', () => {
-    if (S.loggedIn) logout(); else showLogin('Enter the operator password.');
+    // The kiosk's token is the screen's own: it is revoked in the console, not logged out here.
+    if (S.token) toast('This screen acts with its kiosk token (the console\'s Settings can revoke it).');
+    else if (S.loggedIn) logout(); else showLogin('Enter the operator password.');
   });
   document.addEventListener('keydown', physicalKeys);
 }

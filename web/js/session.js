@@ -9,7 +9,7 @@ import { loadJSON, request } from './api.js';
 export function setLoggedIn(v, csrf) {
   S.loggedIn = v; S.csrf = v ? csrf : null;
   const st = $('login-state');
-  setText(st, v ? 'Logged in' : 'Read-only');
+  setText(st, v ? (S.token ? 'Kiosk' : 'Logged in') : 'Read-only');
   st.className = `pill ${v ? 'in' : 'out'}`;
   st.title = v ? 'Logged in: the console can control the antenna' : 'Read-only: log in to control the antenna';
   const out = $('logout-btn');
@@ -24,11 +24,27 @@ export function showLogin(msg) {
   window.scrollTo({ top: 0 });
   $('password').focus({ preventScroll: true });
 }
+/// The kiosk's token (docs/panel.md "No keyboard"): the panel's unit opens the page with
+/// #token=… in its address, which is never sent to the controller; the page keeps it in its own
+/// storage (the panel user's, 0700) and takes it out of the address at once.
+export function adoptToken() {
+  const m = /^#token=([0-9a-f]{64})$/.exec(window.location.hash);
+  if (m) {
+    localStorage.setItem('azt.token', m[1]);
+    window.history.replaceState(null, '', window.location.pathname + window.location.search);
+  }
+  S.token = localStorage.getItem('azt.token');
+}
+export function forgetToken() {
+  if (!S.token) return;
+  S.token = null;
+  localStorage.removeItem('azt.token');
+}
 export async function refreshSession() {
   const j = await loadJSON('/api/session');
   if (!j) return;
   S.passwordSet = j.password_set !== false;
-  setLoggedIn(!!j.logged_in && !!j.csrf, j.csrf || null);
+  setLoggedIn(!!j.logged_in && (!!j.csrf || !!S.token), j.csrf || null);
   if (!S.passwordSet && !S.loggedIn) setText('login-error', 'No operator password is set on the controller ([web] password_hash): the console is read-only.');
 }
 export async function login(ev) {

@@ -3,6 +3,7 @@
 export const S = {
   state: null, config: null, targets: null, sky: null, screen: 'main',
   loggedIn: false, csrf: null, passwordSet: true,
+  token: null, // the kiosk's bearer token (panel only): acts without a password or CSRF token
   loginDismissed: localStorage.getItem('azt.loginbar') === 'hidden',
   sel: null, // what TRACK starts: {body, label, serverName}
   ws: null, connected: false, backoff: 250, attempts: 0, lastMsg: 0, openedAt: 0, retryTimer: 0,
