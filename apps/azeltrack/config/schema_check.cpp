@@ -91,22 +91,24 @@ std::optional<std::string> choice_violation(const KeySpec& spec, const toml::nod
   return "must be " + choices_text(spec);
 }
 
+constexpr std::string_view kGpioLineRule = "must be a line number 0 to 1023, or \"CHIP:N\"";
+
 /// A line number on [gpio] chip, or "CHIP:N" (a line on another chip).
 std::optional<std::string> gpio_line_violation(const toml::node& value) {
-  static const std::string kWhy = "must be a line number 0 to 1023, or \"CHIP:N\"";
   if (value.is_integer()) {
     const auto n = *value.value<std::int64_t>();
-    return n >= 0 && n <= 1023 ? std::nullopt : std::optional(kWhy);
+    if (n >= 0 && n <= 1023) return std::nullopt;
+    return std::string(kGpioLineRule);
   }
   const auto* text = value.as_string();
-  if (text == nullptr) return kWhy;
+  if (text == nullptr) return std::string(kGpioLineRule);
   const std::string& s = text->get();
   const auto colon = s.rfind(':');
-  if (colon == std::string::npos || colon == 0) return kWhy;
+  if (colon == std::string::npos || colon == 0) return std::string(kGpioLineRule);
   const std::string digits = s.substr(colon + 1);
   const bool number = !digits.empty() && digits.size() <= 4 &&
                       digits.find_first_not_of("0123456789") == std::string::npos;
-  if (!number || std::stoi(digits) > 1023) return kWhy;
+  if (!number || std::stoi(digits) > 1023) return std::string(kGpioLineRule);
   return std::nullopt;
 }
 
