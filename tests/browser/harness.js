@@ -122,6 +122,11 @@ async function stopDaemon() {
   await exited;
 }
 
+/// Thrown by a scenario that cannot run here (skip()): recorded as skipped with its reason,
+/// neither passed nor failed.
+class Skipped extends Error {}
+function skip(reason) { throw new Skipped(reason); }
+
 /// Runs one scenario and records its result; a failure is reported and the next one runs.
 async function scenario(name, body) {
   const started = Date.now();
@@ -130,6 +135,11 @@ async function scenario(name, body) {
     results.push({ name, ok: true });
     console.log(`ok   ${name} (${Date.now() - started} ms)`);
   } catch (e) {
+    if (e instanceof Skipped) {
+      results.push({ name, ok: true, skipped: e.message });
+      console.log(`skip ${name}: ${e.message}`);
+      return;
+    }
     results.push({ name, ok: false, error: e.message });
     console.log(`FAIL ${name}: ${e.message}`);
   }
@@ -218,9 +228,10 @@ async function shutDown(browser) {
 /// The count and the exit status ctest reads; on a failure the daemon's last words, to see why.
 function summarise() {
   const failed = results.filter((r) => !r.ok).length;
+  const skipped = results.filter((r) => r.skipped).length;
   if (failed) console.log(fs.readFileSync(path.join(tmp, 'daemon.log'), 'utf8').split('\n').slice(-20).join('\n'));
   fs.rmSync(tmp, { recursive: true, force: true });
-  console.log(`${results.length - failed} passed, ${failed} failed`);
+  console.log(`${results.length - failed - skipped} passed, ${failed} failed${skipped ? `, ${skipped} skipped` : ''}`);
   process.exit(failed ? 1 : 0);
 }
 
@@ -237,5 +248,5 @@ function run(main, cleanUp = () => {}) {
 
 module.exports = {
   setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
-  stopDaemon, scenario, scenarioWithShots, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown, summarise, run,
+  stopDaemon, scenario, scenarioWithShots, skip, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown, summarise, run,
 };

@@ -9,18 +9,20 @@ import { forgetToken, refreshSession, setLoggedIn, showLogin } from './session.j
 
 // An action (POST/PUT). 401 opens the login form; a 403 (stale CSRF token) re-reads the session
 // once and retries. errEl: the form's .error element that shows a refusal instead of a toast;
-// quiet: neither (the caller shows the refusal itself); form: its field named by a 400 is marked.
+// quiet: neither (the caller shows the refusal itself); form: its field named by a 400 is marked;
+// type: the body's Content-Type when it is sent as it is (a file's text); passwordCheck: a 401
+// that is not "login required" is a wrong password typed in the form, not a session lost.
 export async function act(label, method, path, body, opts = {}) {
   const btn = opts.btn;
   if (btn) btn.classList.add('busy');
-  let r = await request(method, path, body);
+  let r = await request(method, path, body, opts.type);
   if (r.status === 403 && /csrf/i.test(r.data.error || '')) {
     await refreshSession(); // the session may have been renewed elsewhere: take its token, retry once
-    if (S.csrf) r = await request(method, path, body);
+    if (S.csrf) r = await request(method, path, body, opts.type);
     else r = { ok: false, status: 401, data: { error: 'login required (the session has ended)' } };
   }
   if (btn) btn.classList.remove('busy');
-  if (r.status === 401) {
+  if (r.status === 401 && !(opts.passwordCheck && !/login required/i.test(r.data.error || ''))) {
     forgetToken(); // revoked in the console: from now on the password, as anywhere else
     setLoggedIn(false, null);
     showLogin(`Log in to ${label.toLowerCase()} — the controller answered: “${r.data.error || 'login required'}”.`);
@@ -46,6 +48,9 @@ function markField(form, field) {
     kind: 'scan-kind', beamwidth_deg: 'scan-beam', points_per_line: 'scan-points',
     half_span_beams: 'scan-span', reference_beams: 'scan-ref', settle_s: 'scan-settle', dwell_s: 'scan-dwell' };
   let el = field && map[field] ? $(map[field]) : null;
+  // Forms built from the schema name each control by its key (data-field).
+  const named = field ? [...form.querySelectorAll('[data-field]')].find((e) => e.dataset.field === field) : null;
+  if (named) el = named;
   if (form.id === 'man-form') el = field === 'el_deg' ? $('man-el') : field === 'az_deg' ? $('man-az') : null;
   if (form.classList.contains('park-row') && field) el = form.querySelector(`[data-f="${field}"]`);
   if (el && form.contains(el)) {

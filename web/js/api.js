@@ -2,16 +2,17 @@
 
 import { S } from './state.js';
 
-export async function request(method, path, body) {
+// `type`: a body sent as it is (a string) with that Content-Type, instead of as JSON.
+export async function request(method, path, body, type) {
   const headers = { Accept: 'application/json' };
-  if (body !== undefined) headers['Content-Type'] = 'application/json';
+  if (body !== undefined) headers['Content-Type'] = type || 'application/json';
   // The kiosk acts with its bearer token (no cookie, so no CSRF token); a person with a session.
   if (S.token) headers.Authorization = `Bearer ${S.token}`;
   else if (S.csrf && method !== 'GET') headers['X-CSRF-Token'] = S.csrf;
   let r;
   try {
     r = await fetch(path, { method, headers, credentials: 'same-origin', cache: 'no-store',
-      body: body === undefined ? undefined : JSON.stringify(body) });
+      body: body === undefined ? undefined : type ? body : JSON.stringify(body) });
   } catch (e) {
     return { ok: false, status: 0, data: { error: 'no answer from the controller' } };
   }

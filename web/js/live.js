@@ -134,22 +134,23 @@ function renderLog(listId, keyName, list, max) {
   })));
 }
 
-// E-stop, limit switches and the T/R chain (docs/web-api.md "station_io").
-function renderIo(io) {
+// E-stop, limit switches and the T/R chain (docs/web-api.md "station_io"), wherever the page
+// shows them: the main screen's Station I/O and the Settings page's hardware card (data-io).
+function showIo(what, txt, bad) {
+  document.querySelectorAll(`[data-io="${what}"]`).forEach((e) => { setText(e, txt); e.classList.toggle('io-bad', bad); });
+}
+export function renderIo(io) {
   const key = JSON.stringify(io || null);
   if (key === S.ioKey) return;
   S.ioKey = key;
   const es = io && io.estop ? io.estop : null;
-  const estop = $('io-estop');
-  if (!es || (!es.wired && !es.latched)) { setText(estop, 'not wired'); estop.className = ''; } else {
-    setText(estop, es.latched ? (es.input ? 'PRESSED · latched' : 'latched · clear faults to resume') : 'ready');
-    estop.className = es.latched ? 'io-bad' : '';
+  if (!es || (!es.wired && !es.latched)) showIo('estop', 'not wired', false); else {
+    showIo('estop', es.latched ? (es.input ? 'PRESSED · latched' : 'latched · clear faults to resume') : 'ready', !!es.latched);
   }
   const lim = io && io.limits ? io.limits : null;
   const names = { az_ccw: 'AZ CCW', az_cw: 'AZ CW', el_down: 'EL DOWN', el_up: 'EL UP' };
   const tripped = lim ? Object.keys(names).filter((k) => lim[k]).map((k) => names[k]) : [];
-  setText('io-limits', !lim ? 'not wired' : tripped.length ? `tripped: ${tripped.join(', ')}` : 'all clear');
-  $('io-limits').className = tripped.length ? 'io-bad' : '';
+  showIo('limits', !lim ? 'not wired' : tripped.length ? `tripped: ${tripped.join(', ')}` : 'all clear', tripped.length > 0);
   const seq = io && io.sequencer ? io.sequencer : null;
   let ptt = '—';
   if (seq) {
@@ -157,11 +158,12 @@ function renderIo(io) {
       : seq.ptt ? 'keying…' : 'receive';
     if (!seq.wired) ptt += ' (no GPIO lines)';
   }
-  setText('io-ptt', ptt);
-  $('io-ptt').className = seq && (seq.transmitting || seq.timed_out) ? 'io-bad' : '';
+  showIo('ptt', ptt, !!(seq && (seq.transmitting || seq.timed_out)));
   const outs = seq && Array.isArray(seq.outputs) ? seq.outputs : [];
   $('io-seq').replaceChildren(...outs.map((o) => h('span', { class: `out${o.on ? ' on' : ''}`, text: String(o.name) })));
 }
+// A view of the inputs just built: drawn at once from the last state.
+export function refreshIo() { S.ioKey = ''; if (S.state) renderIo(S.state.station_io); }
 
 /// WSJT-X's Astronomical Data fields (docs/eme.md).
 function renderMoonEme(m) {

@@ -10,12 +10,26 @@ import { renderStationPage } from './station.js';
 import { openPlanner } from './planner.js';
 import { openScan } from './scan.js';
 import { openSoftware, softwareSummary } from './software.js';
+import { toast } from './toast.js';
 
 export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
 // Pages without a tab of their own (the phone's tab bar has no room): reached from the header's
 // status icons and from Setup, whose tab stays lit on them; the planner from the Moon panel, the
-// pointing scan from the Moon panel, Targets and Sky; the software page from Setup.
-export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets', software: 'setup' };
+// pointing scan from the Moon panel, Targets and Sky; the software, settings and account pages
+// from Setup.
+export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets', software: 'setup',
+  settings: 'setup', account: 'setup' };
+
+// The settings and account pages' modules are loaded when first opened: the console's first
+// load stays light.
+async function openLazy(name) {
+  try {
+    if (name === 'settings') await (await import('./settings.js')).openSettings();
+    else await (await import('./settings_account.js')).openAccount();
+  } catch (e) {
+    toast(`The ${name} page could not be loaded: ${e.message}`, 'err');
+  }
+}
 
 export function show(name) {
   if (!SCREENS.includes(name) && !SUBSCREENS[name]) name = 'main';
@@ -35,6 +49,7 @@ export function show(name) {
   if (name === 'planner') openPlanner();
   else if (name === 'scan') openScan();
   else if (name === 'software') openSoftware();
+  else if (name === 'settings' || name === 'account') openLazy(name);
   else if (SUBSCREENS[name]) renderStationPage(name, true);
 }
 export function go(name) { if (location.hash === `#${name}`) show(name); else location.hash = name; }

@@ -48,6 +48,7 @@ function fillConfig(force) {
   const corr = c.corrections || {};
   field('az-offset', corr.az_offset_deg, force); field('el-offset', corr.el_offset_deg, force);
   const rn = Array.isArray(c.restart_needed) ? c.restart_needed : [];
+  setText('setup-settings', rn.length ? `${rn.length} saved setting${rn.length === 1 ? '' : 's'} wait${rn.length === 1 ? 's' : ''} for a restart` : 'every setting of the controller');
   document.querySelectorAll('[data-key]').forEach((i) => {
     const note = i.nextElementSibling;
     if (note && note.classList.contains('restart-note')) note.hidden = !rn.includes(i.dataset.key);

@@ -50,6 +50,7 @@ export function setConnected(v) {
   $('conn-dot').title = v ? 'Live: connected to the controller' : 'Not connected';
   document.body.classList.toggle('stale', !v);
   if (v && !was) {
+    S.links += 1; // a new connection: after a restart, the controller is back
     on.connected();
     refreshSession(); // a restarted daemon has forgotten every session
   }

@@ -2,11 +2,12 @@
 
 export const S = {
   state: null, config: null, targets: null, sky: null, screen: 'main',
+  schema: null, // GET /api/config/schema, on the Settings page
   loggedIn: false, csrf: null, passwordSet: true,
   token: null, // the kiosk's bearer token (panel only): acts without a password or CSRF token
   loginDismissed: localStorage.getItem('azt.loginbar') === 'hidden',
   sel: null, // what TRACK starts: {body, label, serverName}
-  ws: null, connected: false, backoff: 250, attempts: 0, lastMsg: 0, openedAt: 0, retryTimer: 0,
+  ws: null, connected: false, links: 0, backoff: 250, attempts: 0, lastMsg: 0, openedAt: 0, retryTimer: 0,
   trend: [], trendDrawn: 0, skyDrawn: 0, skyListDrawn: 0, faultsKey: '', eventsKey: '', commandsKey: '', ioKey: '', dopKey: '',
 };
 
