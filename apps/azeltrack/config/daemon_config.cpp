@@ -53,6 +53,10 @@ linux_os::HamlibConfig read_hamlib(const ConfigSection& s) {
   return h;
 }
 
+bool is_sha256_hex(const std::string& text) {
+  return text.size() == 64 && text.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
 WebConfig read_web(const ConfigSection& s) {
   WebConfig w;
   w.bind = s.text("bind").value_or(w.bind);
@@ -62,9 +66,7 @@ WebConfig read_web(const ConfigSection& s) {
     s.fail("password_hash", "must be an Argon2id hash as `azeltrack web password` writes it");
   }
   w.api_token_sha256 = s.text("api_token_sha256").value_or("");
-  if (!w.api_token_sha256.empty() &&
-      (w.api_token_sha256.size() != 64 ||
-       w.api_token_sha256.find_first_not_of("0123456789abcdef") != std::string::npos)) {
+  if (!w.api_token_sha256.empty() && !is_sha256_hex(w.api_token_sha256)) {
     s.fail("api_token_sha256", "must be 64 lower-case hex digits (`azeltrack web token`)");
   }
   if (const toml::array* hosts = s.array("allowed_hosts")) {
@@ -75,6 +77,22 @@ WebConfig read_web(const ConfigSection& s) {
     }
   }
   return w;
+}
+
+/// [[token]]: each with a label of its own and a digest.
+std::vector<WebToken> read_tokens(const ConfigFile& file) {
+  std::vector<WebToken> out;
+  for (const ConfigSection& s : file.section_array("token")) {
+    WebToken t{s.text("label").value_or(""), s.text("sha256").value_or(""),
+               s.text("created_utc").value_or("")};
+    if (const auto why = token_label_problem(t.label)) s.fail("label", *why);
+    if (!is_sha256_hex(t.sha256)) s.fail("sha256", "must be 64 lower-case hex digits");
+    for (const auto& other : out) {
+      if (other.label == t.label) s.fail("label", "\"" + t.label + "\" is used by two tokens");
+    }
+    out.push_back(std::move(t));
+  }
+  return out;
 }
 
 sequencer::SequencerConfig read_sequencer(const ConfigSection& s) {
@@ -341,6 +359,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   }
   c.satellites.beamwidth_deg = sats.number("beamwidth_deg").value_or(20.0);
   c.web = read_web(file.section("web"));
+  c.web.tokens = read_tokens(file);
   c.park = read_park(file, c.station);
   if (c.station.park_when_out_of_range) c.out_of_range = control::OutOfRangePolicy::Park;
   c.log_level = file.section("log").text("level").value_or("info");
@@ -358,6 +377,16 @@ std::vector<const linux_os::GpioLineSpec*> GpioConfig::lines() const {
 
 DaemonConfig load_daemon_config(const std::string& path) {
   return daemon_config_from(ConfigFile::load(path));
+}
+
+std::optional<std::string> token_label_problem(const std::string& label) {
+  constexpr std::size_t kMaxLabel = 40;
+  if (label.empty() || label.size() > kMaxLabel) return "must be 1 to 40 characters";
+  const bool plain = label.find_first_not_of(
+                         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                         "0123456789 ._-") == std::string::npos;
+  if (!plain) return "may hold letters, digits, spaces, '.', '_' and '-' only";
+  return std::nullopt;
 }
 
 }  // namespace azt::app

@@ -95,12 +95,20 @@ struct SatellitesConfig {
 };
 
 /// [web]: the console's HTTP server and who may act through it (docs/web-api.md).
+/// A bearer token's record in `[[token]]` (the token itself is kept nowhere).
+struct WebToken {
+  std::string label;
+  std::string sha256;
+  std::string created_utc;
+};
+
 struct WebConfig {
   std::string bind = "127.0.0.1";
   unsigned short port = 8080;    ///< 0: disabled
   std::string password_hash;     ///< libsodium Argon2id string; empty: generated at first start
   std::string api_token_sha256;  ///< hex SHA-256 of the scripts' bearer token; empty: none
   std::vector<std::string> allowed_hosts;  ///< Host names besides IP literals and localhost
+  std::vector<WebToken> tokens;            ///< [[token]]
 };
 
 /// Everything `serve` reads (docs/configuration.md).
@@ -149,6 +157,8 @@ struct DaemonConfig {
 
 /// Parses and validates; throws UsageError naming the key and its line.
 DaemonConfig daemon_config_from(const ConfigFile& file);
+/// Why `label` cannot name an API token ([[token]] label), or nothing.
+std::optional<std::string> token_label_problem(const std::string& label);
 DaemonConfig load_daemon_config(const std::string& path);
 
 /// The commented configuration a first run writes: the simulated antenna tracking the Moon,

@@ -87,6 +87,26 @@ constexpr std::array<KeySpec, 5> kWeb{{
              "`\"shack-pi.local\"`"},
 }};
 
+constexpr std::array<KeySpec, 3> kToken{{
+    {.key = "label",
+     .type = KeyType::Text,
+     .help = "the name the token is listed and revoked by (1 to 40 letters, digits, spaces, `.`, "
+             "`_` or `-`), different for each",
+     .applies = Applies::Live,
+     .access = Access::ReadOnly},
+    {.key = "sha256",
+     .type = KeyType::Text,
+     .help = "SHA-256 (64 lower-case hex digits) of the token; the token itself is kept nowhere",
+     .applies = Applies::Live,
+     .access = Access::Secret},
+    {.key = "created_utc",
+     .type = KeyType::Text,
+     .default_note = "unknown",
+     .help = "when it was made (ISO 8601 UTC)",
+     .applies = Applies::Live,
+     .access = Access::ReadOnly},
+}};
+
 constexpr std::array<std::string_view, 3> kLogLevels{"debug", "info", "warn"};
 
 constexpr std::array<KeySpec, 1> kLog{{
@@ -97,7 +117,7 @@ constexpr std::array<KeySpec, 1> kLog{{
      .help = "the least important messages logged"},
 }};
 
-constexpr std::array<SectionSpec, 5> kSections{{
+constexpr std::array<SectionSpec, 6> kSections{{
     {.name = "rotctld",
      .chapter = Chapter::Servers,
      .keys = kRotctld,
@@ -119,6 +139,15 @@ constexpr std::array<SectionSpec, 5> kSections{{
      .title = "The web console",
      .help = "Logging in and the API: [web-api.md](web-api.md); from the internet: "
              "[remote.md](remote.md)."},
+    {.name = "token",
+     .chapter = Chapter::Servers,
+     .array_of_tables = true,
+     .keys = kToken,
+     .title = "API tokens",
+     .help = "Bearer tokens for scripts and for the touch panel's kiosk, one table each, made and "
+             "revoked with `azeltrack web token` or in the console's Settings (`/api/tokens`, "
+             "[web-api.md](web-api.md)); a running daemon takes changes made by the command at "
+             "`systemctl reload azeltrack`."},
     {.name = "log", .chapter = Chapter::Servers, .keys = kLog, .title = "The log"},
 }};
 

@@ -63,6 +63,28 @@ class ConsoleModel {
     const ActDone answer = std::move(done);
     answer(ActResult{{}, ApiError(404, "", "no Moon planner here")});
   }
+  /// The account's settings, saved for the HTTP API once it has checked who asks (account_api):
+  /// the password's new hash, and the API tokens' records as they are to be. Never reachable as
+  /// an action of their own. A model without a file refuses with 404.
+  virtual void save_password_hash(const std::string& hash, ActDone done) {
+    (void)hash;
+    const ActDone answer = std::move(done);
+    answer(ActResult{{}, ApiError(404, "", "no settings file here")});
+  }
+  virtual void save_tokens(const nlohmann::json& tokens, ActDone done) {
+    (void)tokens;
+    const ActDone answer = std::move(done);
+    answer(ActResult{{}, ApiError(404, "", "no settings file here")});
+  }
+  /// The time now as ISO 8601 UTC, for records that say when they were made ("" unknown).
+  virtual std::string utc_now_text() { return ""; }
+  /// GET /api/config/file: the settings file's text; PUT: a whole file to take instead.
+  virtual std::optional<std::string> config_file_text() { return std::nullopt; }
+  virtual void import_config_file(const std::string& text, ActDone done) {
+    (void)text;
+    const ActDone answer = std::move(done);
+    answer(ActResult{{}, ApiError(404, "", "no settings file here")});
+  }
 };
 
 }  // namespace azt::app

@@ -42,8 +42,12 @@ ConsoleServer::ConsoleServer(boost::asio::io_context& io, ConsoleParts parts,
                              const std::function<void(const std::string&)>& log,
                              SoftwareUpdates::Config software) {
   const WebConfig web = parts.config.web;
-  auth_ =
-      std::make_unique<WebAuth>(WebAuth::Config{ensure_password(parts, log), web.api_token_sha256});
+  std::vector<ApiToken> tokens;
+  for (const WebToken& t : web.tokens) tokens.push_back({t.label, t.sha256, t.created_utc, false});
+  if (!web.api_token_sha256.empty()) {
+    tokens.push_back({"[web] api_token_sha256", web.api_token_sha256, "", true});
+  }
+  auth_ = std::make_unique<WebAuth>(WebAuth::Config{ensure_password(parts, log), tokens});
   std::function<double()> now = parts.monotonic_s;
   Offload offload = parts.offload;
   software_ = std::make_unique<SoftwareUpdates>(std::move(software), offload, parts.unix_s);

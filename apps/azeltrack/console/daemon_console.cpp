@@ -37,6 +37,13 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
                    std::nullopt});
     return;
   }
+  if (action == "restart") {
+    if (!p_.restart) throw ApiError(409, "", "this daemon cannot restart itself");
+    p_.log(source + ": restart asked: the motors stop, the daemon starts again");
+    p_.restart(source);
+    done(ActResult{{{"restarting", true}}, std::nullopt});
+    return;
+  }
   if (action == "faults/clear") {
     p_.antenna.clear_faults();
     p_.log(source + ": latched faults cleared");

@@ -60,6 +60,8 @@ struct ConsoleParts {
   std::function<nlohmann::json()> receiver;
   /// Pointing scans (issue 16 §3; null: none here, `scan` is idle and scans are refused).
   PointingScanner* scanner = nullptr;
+  /// POST /api/restart: the daemon stops the motors and starts again (null: refused, 409).
+  std::function<void(const std::string& who)> restart;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -80,6 +82,11 @@ class DaemonConsole final : public ConsoleModel {
   void moon_windows(const std::string& query, ActDone done) override {
     planner_.answer(query, std::move(done));
   }
+  void save_password_hash(const std::string& hash, ActDone done) override;
+  void save_tokens(const nlohmann::json& tokens, ActDone done) override;
+  std::optional<std::string> config_file_text() override;
+  std::string utc_now_text() override;
+  void import_config_file(const std::string& text, ActDone done) override;
 
  private:
   /// Sun, Moon and every target at one whole second, computed once per second.

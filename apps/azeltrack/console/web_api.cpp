@@ -115,9 +115,17 @@ void WebApi::handle(linux_os::HttpRequest request, const Respond& respond) {
       });
     } else if (request.method == "GET" && request.path == "/api/software") {
       software_status(respond);
+    } else if (request.method == "GET" &&
+               (request.path == "/api/tokens" || request.path == "/api/config/file")) {
+      // Reading these needs a login, as acting does: they say who may act.
+      if (auto refusal = authorize(request)) {
+        respond(*refusal);
+      } else {
+        handle_account(request, respond);
+      }
     } else if (request.method == "GET" || request.method == "HEAD") {
       respond(handle_get(request));
-    } else if (request.method == "POST" || request.method == "PUT") {
+    } else if (request.method == "POST" || request.method == "PUT" || request.method == "DELETE") {
       handle_action(request, respond);
     } else {
       respond(error_reply(405, "method not allowed"));
@@ -145,6 +153,12 @@ linux_os::HttpReply WebApi::handle_get(const linux_os::HttpRequest& request) {
     const auto csrf = auth_.csrf_of(cookie_value(request.cookie, "azt_session"), now_());
     json body{{"logged_in", csrf.has_value()}, {"password_set", auth_.has_password()}};
     if (csrf) body["csrf"] = *csrf;
+    // A bearer token acts without a session (the kiosk, scripts): say whose it is.
+    if (request.authorization.rfind("Bearer ", 0) == 0) {
+      const auto label = auth_.bearer_label(std::string_view(request.authorization).substr(7));
+      body["logged_in"] = label.has_value();
+      if (label) body["token"] = *label;
+    }
     return json_reply(200, body);
   }
   // The pages by their names: the console at "/", the 480×320 touch panel at "/panel".
@@ -280,6 +294,7 @@ void WebApi::handle_action(linux_os::HttpRequest& request, const Respond& respon
     respond(r);
     return;
   }
+  if (handle_account(request, respond)) return;
   if (request.path == "/api/software/update" && request.method == "POST") {
     if (software_ == nullptr) {
       respond(error_reply(404, "no software updates here"));
@@ -294,7 +309,8 @@ void WebApi::handle_action(linux_os::HttpRequest& request, const Respond& respon
     return;
   }
   const bool is_config = request.path.rfind("/api/config/", 0) == 0;
-  if (is_config != (request.method == "PUT") || request.path.rfind("/api/", 0) != 0) {
+  if (is_config != (request.method == "PUT") || request.method == "DELETE" ||
+      request.path.rfind("/api/", 0) != 0) {
     respond(error_reply(request.path.rfind("/api/", 0) == 0 ? 405 : 404,
                         request.method + " " + request.path + " is not an action"));
     return;

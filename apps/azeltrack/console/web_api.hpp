@@ -68,6 +68,19 @@ class WebApi {
   [[nodiscard]] static bool origin_matches(const linux_os::HttpRequest& request);
   /// POST /api/stop from a loopback address: allowed without a login.
   [[nodiscard]] static bool is_local_stop(const linux_os::HttpRequest& request);
+  // The account (account_api.cpp), each after authorize(): the API tokens, the password, the
+  // whole settings file. False: the request is none of them.
+  bool handle_account(const linux_os::HttpRequest& request, const Respond& respond);
+  void list_tokens(const Respond& respond) const;
+  void create_token(const linux_os::HttpRequest& request, const Respond& respond);
+  void revoke_token(const std::string& label, const Respond& respond);
+  void change_password(const linux_os::HttpRequest& request, const Respond& respond);
+  void import_file(const linux_os::HttpRequest& request, const Respond& respond);
+  /// The running check takes the tokens just saved (`records`), the legacy one kept.
+  void take_tokens(const nlohmann::json& records);
+  /// The tokens' records as save_tokens takes them, `with` added or `without` left out.
+  [[nodiscard]] nlohmann::json token_records(const std::optional<ApiToken>& with,
+                                             const std::string& without) const;
 
   ConsoleModel& model_;
   WebAuth& auth_;

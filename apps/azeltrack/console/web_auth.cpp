@@ -158,9 +158,22 @@ std::optional<std::string> WebAuth::csrf_of(std::string_view session, double now
   return it->second.csrf;
 }
 
-bool WebAuth::bearer_ok(std::string_view token) const {
-  if (config_.api_token_sha256.empty() || token.empty()) return false;
-  return constant_time_equal(sha256_hex(token), config_.api_token_sha256);
+std::optional<std::string> WebAuth::bearer_label(std::string_view token) const {
+  if (token.empty()) return std::nullopt;
+  const std::string digest = sha256_hex(token);
+  std::optional<std::string> found;
+  // Every token compared, whichever matches: the time taken says nothing about which one.
+  for (const ApiToken& t : config_.tokens) {
+    if (constant_time_equal(digest, t.sha256) && !found) found = t.label;
+  }
+  return found;
+}
+
+void WebAuth::set_password_hash(std::string hash, std::string_view keep_session) {
+  config_.password_hash = std::move(hash);
+  for (auto it = sessions_.begin(); it != sessions_.end();) {
+    it = it->first == keep_session ? std::next(it) : sessions_.erase(it);
+  }
 }
 
 }  // namespace azt::app

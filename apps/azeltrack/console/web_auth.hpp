@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace azt::app {
 
@@ -27,11 +28,19 @@ std::string random_password();
 /// Compares in time that depends only on the lengths (never on where the first difference is).
 bool constant_time_equal(std::string_view a, std::string_view b);
 
+/// A bearer token as the settings keep it: a label people know it by and its digest.
+struct ApiToken {
+  std::string label;        ///< "panel", "logger script"
+  std::string sha256;       ///< lower-case hex SHA-256 of the token
+  std::string created_utc;  ///< ISO 8601 UTC; empty when not known
+  bool legacy = false;      ///< `[web] api_token_sha256`, not a [[token]] item
+};
+
 class WebAuth {
  public:
   struct Config {
     std::string password_hash;     ///< empty: no password, nobody can log in
-    std::string api_token_sha256;  ///< empty: no bearer token is accepted
+    std::vector<ApiToken> tokens;  ///< empty: no bearer token is accepted
     double session_lifetime_s = 7 * 24 * 3600.0;
   };
   explicit WebAuth(Config config) : config_(std::move(config)) {}
@@ -58,8 +67,17 @@ class WebAuth {
   void logout(std::string_view session);
   /// The session's CSRF token while the session is valid.
   [[nodiscard]] std::optional<std::string> csrf_of(std::string_view session, double now_s) const;
-  /// Whether `token` hashes to the configured api_token_sha256.
-  [[nodiscard]] bool bearer_ok(std::string_view token) const;
+  /// Whether `token` hashes to one of the configured tokens.
+  [[nodiscard]] bool bearer_ok(std::string_view token) const {
+    return bearer_label(token).has_value();
+  }
+  /// The label of the token `token` hashes to, if any.
+  [[nodiscard]] std::optional<std::string> bearer_label(std::string_view token) const;
+  /// The settings changed while running (a token made or revoked, the password changed): the
+  /// sessions of a changed password end, except `keep_session` (the one that changed it).
+  void set_tokens(std::vector<ApiToken> tokens) { config_.tokens = std::move(tokens); }
+  void set_password_hash(std::string hash, std::string_view keep_session);
+  [[nodiscard]] const std::vector<ApiToken>& tokens() const { return config_.tokens; }
   [[nodiscard]] bool has_password() const { return !config_.password_hash.empty(); }
   /// Addresses with failures on record (pruned as they age; bounded by kMaxClientsTracked).
   [[nodiscard]] std::size_t clients_tracked() const { return failures_.size(); }

@@ -58,6 +58,15 @@ int StationDaemon::run() {
   return restart_requested_ ? linux_os::kExitRestart : 0;
 }
 
+void StationDaemon::restart_soon(const std::string& who) {
+  // After the answer has gone out: the console that asked hears "restarting" before the
+  // servers close.
+  auto timer = std::make_shared<asio::steady_timer>(io_, std::chrono::milliseconds(300));
+  timer->async_wait([this, timer, who](boost::system::error_code ec) {
+    if (!ec) restart(who);
+  });
+}
+
 void StationDaemon::restart(const std::string& who) {
   // The same way out as a signal: motors stopped and outputs released before anything closes.
   restart_requested_ = true;

@@ -104,6 +104,8 @@ class StationDaemon {
   void shutdown(const std::string& why);
   /// Stops as a signal would, then run() returns linux_os::kExitRestart (the console's Restart).
   void restart(const std::string& who);
+  /// restart() in a moment, from a handler that must answer first.
+  void restart_soon(const std::string& who);
 
   DaemonConfig config_;  ///< the running configuration; the console changes parts of it
   ConfigStore& store_;

@@ -388,7 +388,8 @@ void StationDaemon::open_console() {
                    clock_.get(),
                    [this] { return network_->to_json(); },
                    [this] { return receiver_->to_json(); },
-                   scanner_.get()},
+                   scanner_.get(),
+                   [this](const std::string& who) { restart_soon(who); }},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});
