@@ -193,9 +193,10 @@ async function launch(pages, options) {
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
   // Console errors too, Content-Security-Policy violations among them ("Refused to apply inline
-  // style…"); a request the daemon answered with an error status is the test's own doing.
+  // style…"); a request the daemon answered with an error status is the test's own doing, and
+  // so is a live connection refused while a test restarts the daemon (the page retries it).
   page.on('console', (m) => {
-    if (m.type() === 'error' && !/^Failed to load resource/.test(m.text())) errors.push(`console: ${m.text()}`);
+    if (m.type() === 'error' && !/^Failed to load resource|^WebSocket connection to .* failed: .*ERR_CONNECTION_REFUSED/.test(m.text())) errors.push(`console: ${m.text()}`);
   });
   return { ctx, page, errors, userDataDir };
 }

@@ -88,8 +88,12 @@ async function everySection(page) {
   if (!/Default 0°.*0 to 2/.test(kinds.help)) throw new Error(`window_deg's help: ${kinds.help}`);
   const hash = /password_hash = "([^"]+)"/.exec(fs.readFileSync(config, 'utf8'))[1];
   if ((await page.content()).includes(hash.slice(-20))) throw new Error('the password hash is on the page');
+  // Read-only keys (a token's label) cannot be edited, in every item of an array of tables.
   for (const s of sch.sections) for (const k of s.keys.filter((x) => x.access === 'read_only')) {
-    if (!(await page.$eval(`#cfg-${slug(s.name)}-${k.key}`, (e) => e.disabled))) throw new Error(`${s.name}.${k.key} is read-only but editable`);
+    const sel = s.array_of_tables ? `form[data-route^="${s.name}/"] [data-field="${k.key}"]` : `#cfg-${slug(s.name)}-${k.key}`;
+    const states = await page.$$eval(sel, (es) => es.map((e) => e.disabled));
+    if (!s.array_of_tables && states.length !== 1) throw new Error(`${s.name}.${k.key} is not shown`);
+    if (states.some((d) => !d)) throw new Error(`${s.name}.${k.key} is read-only but editable`);
   }
 }
 

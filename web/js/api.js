@@ -6,9 +6,10 @@ import { S } from './state.js';
 export async function request(method, path, body, type) {
   const headers = { Accept: 'application/json' };
   if (body !== undefined) headers['Content-Type'] = type || 'application/json';
-  // The kiosk acts with its bearer token (no cookie, so no CSRF token); a person with a session.
+  // The kiosk acts with its bearer token (no cookie, so no CSRF token); a person with a session,
+  // whose token goes with reads too: some need the login (GET /api/tokens).
   if (S.token) headers.Authorization = `Bearer ${S.token}`;
-  else if (S.csrf && method !== 'GET') headers['X-CSRF-Token'] = S.csrf;
+  else if (S.csrf) headers['X-CSRF-Token'] = S.csrf;
   let r;
   try {
     r = await fetch(path, { method, headers, credentials: 'same-origin', cache: 'no-store',

@@ -13,7 +13,7 @@ import { act } from './actions.js';
 import { loadConfig } from './setup.js';
 import { changes, helpNodes, keyRow, markKey, savedWords } from './settings_forms.js';
 import { renderRestart, wireRestart } from './settings_restart.js';
-import { checkDownload, wireFile } from './settings_file.js';
+import { wireFile } from './settings_file.js';
 import { hardwareCard } from './settings_hardware.js';
 
 const OPEN = 'azt.settings.open'; // the tables left open, for this tab
@@ -26,7 +26,6 @@ export async function openSettings() {
     wireRestart(() => reload());
     wireFile(() => reload());
   }
-  checkDownload();
   // Edits not saved yet stay as they are; otherwise the page shows the file as it is now.
   if (!document.querySelector('#settings-body form[data-dirty]')) await reload();
 }
@@ -120,6 +119,8 @@ function itemForms(sec) {
   const items = Array.isArray(sec.items) ? sec.items : [];
   const forms = items.map((it, i) => tableForm(sec, `${sec.name}/${i + 1}`, it || {},
     `[[${sec.name}]] #${i + 1}${it && it.name ? ` · ${it.name}` : ''}`));
+  if (!items.length) forms.push(h('p', { class: 'hint', text: 'None in the file.' }));
+  if (!sec.keys.some((k) => k.access === 'editable')) return forms; // made elsewhere ([[token]]: Login and tokens)
   const n = items.length + 1;
   const add = tableForm(sec, `${sec.name}/${n}`, {}, `New [[${sec.name}]] #${n}`);
   add.hidden = true;
@@ -139,7 +140,9 @@ function tableForm(sec, route, values, legend) {
   const f = h('form', { class: 'sform', novalidate: true, 'data-route': route, 'aria-label': legend || `[${sec.name}]` },
     legend ? h('h3', { text: legend }) : null,
     ...sec.keys.map((k) => keyRow(k, route, values[k.key] == null ? null : values[k.key], rn.includes(`${dotted(route)}.${k.key}`))),
-    h('div', { class: 'row sform-foot' }, submit, undo, h('span', { class: 'hint sform-count', 'aria-live': 'polite' })),
+    sec.keys.some((k) => k.access === 'editable')
+      ? h('div', { class: 'row sform-foot' }, submit, undo, h('span', { class: 'hint sform-count', 'aria-live': 'polite' }))
+      : h('p', { class: 'hint', text: 'Read-only here.' }),
     h('p', { class: 'error sform-err', role: 'alert' }));
   const count = () => {
     const { body, errors } = changes(f, sec.keys);

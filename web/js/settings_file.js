@@ -3,10 +3,12 @@
 // controller before one save (a refusal saves nothing and names the line). Reading the file
 // needs a login, as acting does.
 
-import { $, setText } from './dom.js';
+import { S } from './state.js';
+import { $, h, setText } from './dom.js';
 import { toast } from './toast.js';
 import { request } from './api.js';
 import { act } from './actions.js';
+import { showLogin } from './session.js';
 import { ask } from './confirm.js';
 import { savedWords } from './settings_forms.js';
 
@@ -14,14 +16,30 @@ const MAX_BYTES = 64 * 1024; // the controller's limit for a request's body
 
 let afterImport = async () => {};
 
-// Whether the controller gives its file to this page: says so beside the link.
-export async function checkDownload() {
-  const r = await request('GET', '/api/config/file');
-  const link = $('cfg-download');
-  link.classList.toggle('disabled', r.status === 404);
-  if (r.status === 404) setText('cfg-download-note', 'This controller does not give its file from the console yet (it answered 404).');
-  else if (r.status === 401) setText('cfg-download-note', 'Log in to download the file.');
-  else setText('cfg-download-note', '');
+// The file is read with the session's CSRF token, as an action is (it holds who may act), so a
+// plain link cannot fetch it: the page fetches it and hands it to the browser as a download.
+async function download(ev) {
+  ev.preventDefault();
+  const headers = { Accept: 'text/plain' };
+  if (S.token) headers.Authorization = `Bearer ${S.token}`;
+  else if (S.csrf) headers['X-CSRF-Token'] = S.csrf;
+  let r;
+  try {
+    r = await fetch('/api/config/file', { headers, credentials: 'same-origin', cache: 'no-store' });
+  } catch (e) {
+    setText('cfg-download-note', 'No answer from the controller.');
+    return;
+  }
+  if (r.status === 401) { setText('cfg-download-note', 'Log in to download the file.'); showLogin('Log in to download the settings file.'); return; }
+  if (r.status === 404) { setText('cfg-download-note', 'This controller does not give its file from the console yet (it answered 404).'); return; }
+  if (!r.ok) { setText('cfg-download-note', `Not downloaded: HTTP ${r.status}.`); return; }
+  setText('cfg-download-note', '');
+  const url = URL.createObjectURL(await r.blob());
+  const a = h('a', { href: url, download: 'azeltrack.toml', hidden: true });
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10000);
 }
 
 async function importFile(ev) {
@@ -52,6 +70,7 @@ async function importFile(ev) {
 
 export function wireFile(reload) {
   afterImport = reload;
+  $('cfg-download').addEventListener('click', download);
   $('cfg-import-file').addEventListener('change', () => {
     $('cfg-import').disabled = !($('cfg-import-file').files || []).length;
     setText('cfg-import-error', '');

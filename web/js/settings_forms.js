@@ -178,5 +178,7 @@ export function savedWords(what, reply) {
   const parts = [];
   if (applied.length) parts.push(`applied now: ${applied.join(', ')}`);
   if (restart.length) parts.push(`at the next start: ${restart.join(', ')}`);
+  const waiting = list(reply.restart_needed);
+  if (!reply.applied && !reply.restart && waiting.length) parts.push(`waiting for a restart: ${waiting.join(', ')}`);
   return `Saved ${what}${parts.length ? ` — ${parts.join('; ')}` : ''}.`;
 }
