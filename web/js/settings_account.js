@@ -62,6 +62,8 @@ async function loadTokens() {
   const tokens = Array.isArray(r.data.tokens) ? r.data.tokens : [];
   if (!tokens.length) return note('No API token: scripts and the kiosk panel need one.');
   list.replaceChildren(...tokens.map((t) => {
+    // The file's single [web] api_token_sha256 is no record: it goes with the file, not from here.
+    if (t.legacy) return h('tr', {}, h('td', { class: 'tlabel', text: String(t.label) }), h('td', { text: when(t.created_utc) }), h('td', { class: 'dimtxt', text: 'in the file' }));
     const btn = h('button', { type: 'button', class: 'btn small', text: 'Revoke…', 'data-label': t.label, 'aria-label': `Revoke the token ${t.label}` });
     btn.addEventListener('click', () => revoke(t.label, btn));
     return h('tr', {}, h('td', { class: 'tlabel', text: String(t.label) }), h('td', { text: when(t.created_utc) }), h('td', {}, btn));

@@ -64,7 +64,7 @@ async function importFile(ev) {
   }
   input.value = '';
   $('cfg-import').disabled = true;
-  toast(savedWords(file.name, r.data), 'ok', null, 8000);
+  toast(savedWords(file.name, r.data, 'Imported'), 'ok', null, 8000);
   await afterImport();
 }
 

@@ -172,7 +172,7 @@ export function markKey(form, key, message) {
 }
 
 // A save's answer in words, for the toast: which keys apply now and which at the next start.
-export function savedWords(what, reply) {
+export function savedWords(what, reply, verb = 'Saved') {
   const list = (a) => (Array.isArray(a) ? a : []);
   const applied = list(reply.applied); const restart = list(reply.restart);
   const parts = [];
@@ -180,5 +180,5 @@ export function savedWords(what, reply) {
   if (restart.length) parts.push(`at the next start: ${restart.join(', ')}`);
   const waiting = list(reply.restart_needed);
   if (!reply.applied && !reply.restart && waiting.length) parts.push(`waiting for a restart: ${waiting.join(', ')}`);
-  return `Saved ${what}${parts.length ? ` — ${parts.join('; ')}` : ''}.`;
+  return `${verb} ${what}${parts.length ? ` — ${parts.join('; ')}` : ''}.`;
 }
