@@ -8,9 +8,12 @@
 #include <memory>
 #include <string>
 
+#include "azt/astro/time_scales.hpp"
 #include "cli/commands.hpp"
+#include "common/sky_setup.hpp"
 #include "common/usage_error.hpp"
 #include "config/config_store.hpp"
+#include "config/daemon_config.hpp"
 #include "console/web_auth.hpp"
 
 namespace azt::app {
@@ -19,7 +22,75 @@ namespace {
 struct WebOptions {
   std::string path;
   bool generate = false;
+  std::string label;   ///< token --label: a [[token]] item of that name
+  std::string revoke;  ///< token --revoke LABEL
+  bool list = false;   ///< token --list
 };
+
+toml::array& token_items(toml::table& root) {
+  if (!root.contains("token")) root.insert("token", toml::array{});
+  toml::array* items = root["token"].as_array();
+  if (items == nullptr) throw UsageError("token is not an array of tables");
+  return *items;
+}
+
+bool has_label(const toml::array& items, const std::string& label) {
+  for (const auto& item : items) {
+    const auto* t = item.as_table();
+    if (t != nullptr && t->get("label") != nullptr && (*t)["label"].value_or("") == label)
+      return true;
+  }
+  return false;
+}
+
+/// A [[token]] of that label: its digest saved, the token printed once.
+int make_labelled_token(const std::string& path, const std::string& label) {
+  if (const auto why = token_label_problem(label)) throw UsageError("--label " + *why);
+  const std::string token = random_hex(32);
+  ConfigStore store = ConfigStore::open(path);
+  auto saved = store.update([&](toml::table& root) {
+    toml::array& items = token_items(root);
+    if (has_label(items, label)) {
+      throw UsageError("a token is already called \"" + label + "\": --revoke it first");
+    }
+    items.push_back(
+        toml::table{{"label", label},
+                    {"sha256", sha256_hex(token)},
+                    {"created_utc", astro::format_iso8601_utc_unix(utc_now().unix_seconds())}});
+  });
+  if (!saved) throw UsageError(saved.error().message);
+  std::cout << token << '\n';
+  std::cerr
+      << "saved its SHA-256 as \"" << label
+      << "\"; a running daemon takes it at its next start (the console's tokens apply at once)\n";
+  return 0;
+}
+
+int revoke_token(const std::string& path, const std::string& label) {
+  ConfigStore store = ConfigStore::open(path);
+  auto saved = store.update([&](toml::table& root) {
+    toml::array& items = token_items(root);
+    if (!has_label(items, label)) throw UsageError("no token is called \"" + label + "\"");
+    for (auto it = items.begin(); it != items.end();) {
+      const auto* t = it->as_table();
+      const bool match = t != nullptr && (*t)["label"].value_or(std::string()) == label;
+      it = match ? items.erase(it) : std::next(it);
+    }
+    if (items.empty()) root.erase("token");
+  });
+  if (!saved) throw UsageError(saved.error().message);
+  std::cerr << "revoked \"" << label << "\"\n";
+  return 0;
+}
+
+int list_tokens(const std::string& path) {
+  const DaemonConfig c = load_daemon_config(path);
+  for (const WebToken& t : c.web.tokens) {
+    std::cout << t.label << '\t' << (t.created_utc.empty() ? "-" : t.created_utc) << '\n';
+  }
+  if (!c.web.api_token_sha256.empty()) std::cout << "[web] api_token_sha256\t-\n";
+  return 0;
+}
 
 void save_key(const std::string& path, const std::string& key, const std::string& value) {
   ConfigStore store = ConfigStore::open(path);
@@ -103,6 +174,11 @@ Runner add_web_command(CLI::App& app) {
     sub->add_option("--config", opts->path, "Configuration file")->required();
   }
   password->add_flag("--generate", opts->generate, "Generate a password and print it");
+  token->add_option("--label", opts->label,
+                    "Make a labelled token ([[token]]), listed and revoked by that name (the "
+                    "console's Settings, --list, --revoke); without: [web] api_token_sha256");
+  token->add_option("--revoke", opts->revoke, "Revoke the token of that label");
+  token->add_flag("--list", opts->list, "List the tokens' labels and when they were made");
   return [opts, password] {
     if (password->parsed()) {
       const std::string pw = read_password(opts->generate);
@@ -111,6 +187,9 @@ Runner add_web_command(CLI::App& app) {
       std::cerr << "saved; restart the daemon to use it\n";
       return 0;
     }
+    if (opts->list) return list_tokens(opts->path);
+    if (!opts->revoke.empty()) return revoke_token(opts->path, opts->revoke);
+    if (!opts->label.empty()) return make_labelled_token(opts->path, opts->label);
     const std::string t = random_hex(32);
     save_key(opts->path, "api_token_sha256", sha256_hex(t));
     std::cout << t << '\n';

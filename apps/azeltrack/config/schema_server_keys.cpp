@@ -144,10 +144,11 @@ constexpr std::array<SectionSpec, 6> kSections{{
      .array_of_tables = true,
      .keys = kToken,
      .title = "API tokens",
-     .help = "Bearer tokens for scripts and for the touch panel's kiosk, one table each, made and "
-             "revoked with `azeltrack web token` or in the console's Settings (`/api/tokens`, "
-             "[web-api.md](web-api.md)); a running daemon takes changes made by the command at "
-             "`systemctl reload azeltrack`."},
+     .help =
+         "Bearer tokens for scripts and for the touch panel's kiosk, one table each, made and "
+         "revoked with `azeltrack web token` or in the console's Settings (`/api/tokens`, "
+         "[web-api.md](web-api.md)); the console's apply at once, the command's at the daemon's "
+         "next start."},
     {.name = "log", .chapter = Chapter::Servers, .keys = kLog, .title = "The log"},
 }};
 
