@@ -127,13 +127,13 @@ async function directionTestReversed(page) {
 }
 
 // Download: the file as it is on disk; import: a changed copy saved, a broken one refused whole.
-async function fileExportImport(page, { outDir }) {
+async function fileExportImport(page) {
   const probe = await bearer('GET', '/api/config/file');
   if (probe.status === 404) missing('GET /api/config/file');
   await login(page);
   await openSettings(page);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#cfg-download')]);
-  const saved = path.join(outDir, 'settings-download.toml');
+  const saved = path.join(ctx.tmp, 'download.toml');
   await download.saveAs(saved);
   const got = fs.readFileSync(saved, 'utf8');
   if (got !== fileText()) throw new Error('the download is not the file on disk');
@@ -221,7 +221,7 @@ async function run(page, opts) {
   await scenario('the direction test finds the reversed simulated azimuth motor', () => directionTestReversed(page));
   await scenario('changed in the form: [[serial]] #1 added', () => changeAndCheck(page, { section: 'serial', route: 'serial/1', add: true,
     set: { protocol: 'gs232b', device: `pty:settings-test-${process.pid}` }, expect: { protocol: 'gs232b', device: `pty:settings-test-${process.pid}` } }));
-  await scenario('the whole file: download, import, a broken import refused', () => fileExportImport(page, opts));
+  await scenario('the whole file: download, import, a broken import refused', () => fileExportImport(page));
   await scenario('password change: wrong current, too short, then changed', () => passwordChange(page));
   await scenario('API tokens: made, shown once, used, revoked', () => tokens(page));
   await scenario('the Login and tokens page: screenshots, nothing wider than a phone', async () => {

@@ -8,9 +8,9 @@ const { spawnSync } = require('child_process');
 const fs = require('fs');
 const { until, api, state, loggedIn, text } = require('./harness');
 
-// Filled by settings_test.js: the program, its file, the operator password, a bearer token, and
-// every PUT /api/config/SECTION the page sent ({route, body}).
-const ctx = { bin: '', config: '', password: '', token: '', puts: [] };
+// Filled by settings_test.js: the program, its file, the test's temporary directory, the operator
+// password, a bearer token, and every PUT /api/config/SECTION the page sent ({route, body}).
+const ctx = { bin: '', config: '', tmp: '', password: '', token: '', puts: [] };
 
 const fileText = () => fs.readFileSync(ctx.config, 'utf8');
 // One key as the file on disk has it (`azeltrack config get`); null when absent.

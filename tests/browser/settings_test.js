@@ -21,8 +21,8 @@ const {
 } = require('./settings_lib');
 const backend = require('./settings_backend');
 
-const { bin, outDir, config } = setup('settings_test.js', 'azt-settings-');
-Object.assign(ctx, { bin, config, password: 'settings-test-password' });
+const { bin, outDir, tmp, config } = setup('settings_test.js', 'azt-settings-');
+Object.assign(ctx, { bin, config, tmp, password: 'settings-test-password' });
 const DESKTOP = { width: 1280, height: 800 };
 const PHONE = { width: 390, height: 844 };
 
