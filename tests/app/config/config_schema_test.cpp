@@ -288,7 +288,8 @@ TEST(ConfigSchema, LiveKeysAreTheConsolesAndSecretsAreTheWebs) {
       if (k.access == Access::Secret) secret.push_back(name);
     }
   }
-  EXPECT_EQ(secret, (std::vector<std::string>{"web.password_hash", "web.api_token_sha256"}));
+  EXPECT_EQ(secret, (std::vector<std::string>{"web.password_hash", "web.api_token_sha256",
+                                              "token.sha256"}));
   for (const char* name : {"station.grid", "sky.band", "sky.dx_grid", "corrections.tilt_el_deg",
                            "park.az_deg", "pointing.ia_deg"}) {
     EXPECT_NE(std::find(live.begin(), live.end(), name), live.end()) << name;

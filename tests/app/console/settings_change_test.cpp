@@ -143,8 +143,11 @@ TEST(SettingsChange, ItemsAreChangedOrAddedOneAtATime) {
 }
 
 TEST(SettingsChange, EveryLiveKeyHasAnApplyPathAndNoOtherKeyHasOne) {
+  // The keys this route may change; secrets and the program's own keys (the tokens' records)
+  // change through routes of their own.
   for (const SectionSpec& s : config_sections()) {
     for (const KeySpec& k : s.keys) {
+      if (k.access != Access::Editable) continue;
       EXPECT_EQ(k.applies == Applies::Live, live_apply_of(s.name, k.key).has_value())
           << "[" << s.name << "]." << k.key;
     }
