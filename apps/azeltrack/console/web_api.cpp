@@ -125,7 +125,8 @@ void WebApi::handle(linux_os::HttpRequest request, const Respond& respond) {
       }
     } else if (request.method == "GET" || request.method == "HEAD") {
       respond(handle_get(request));
-    } else if (request.method == "POST" || request.method == "PUT" || request.method == "DELETE") {
+    } else if (request.method == "POST" || request.method == "PUT" ||
+               (request.method == "DELETE" && request.path.rfind("/api/tokens/", 0) == 0)) {
       handle_action(request, respond);
     } else {
       respond(error_reply(405, "method not allowed"));

@@ -54,7 +54,7 @@ struct Rig {
   double unix_s = 1764241000.0;
   std::string token = "0123456789abcdef0123456789abcdef";
   NoModel model;
-  WebAuth auth{WebAuth::Config{"", sha256_hex(token)}};
+  WebAuth auth{WebAuth::Config{"", {{"script", sha256_hex(token), "", false}}}};
   SoftwareUpdates software{{"0.1.0", "amd64", (dir / "inbox").string(), (dir / "status").string()},
                            run_inline,
                            [this] { return unix_s; }};
@@ -229,7 +229,7 @@ TEST(SoftwareUpdates, OneUploadAtATimeIsDecidedFromTheHead) {
 
 TEST(SoftwareUpdates, WithoutThePackagesUnitThereAreNoUpdates) {
   NoModel model;
-  WebAuth auth{WebAuth::Config{"", sha256_hex("t")}};
+  WebAuth auth{WebAuth::Config{"", {{"script", sha256_hex("t"), "", false}}}};
   SoftwareUpdates software{{"0.1.0", "", "", ""}, run_inline, [] { return 0.0; }};
   WebApi api{model, auth, WebApiConfig{}, [] { return 0.0; }};
   api.serve_software(software);

@@ -41,7 +41,8 @@ const std::string kPassword = "correct horse battery";
 struct Rig {
   RecordingModel model;
   std::string token = "0123456789abcdef0123456789abcdef";
-  WebAuth auth{WebAuth::Config{hash_password(kPassword), sha256_hex(token)}};
+  WebAuth auth{
+      WebAuth::Config{hash_password(kPassword), {{"script", sha256_hex(token), "", false}}}};
   double now_s = 1000.0;
   /// Jobs sent off the loop wait here until the test runs them (run_jobs), as on the worker.
   std::vector<std::pair<std::function<void()>, std::function<void()>>> jobs;
