@@ -9,8 +9,9 @@ accelerator and the wall time, then "N passed, M failed".
 Exit status 0 when every step passed, 77 when it cannot run here (not root), 1 otherwise.
 
 Usage (as root): system_test.py DEB_N DEB_N_PLUS_1 --panel PANEL_DEB_N [--cache-dir DIR]
-                [--arch amd64]
-KVM is used when AZT_SYSTEM_ACCEL=kvm (nested KVM fails on the reference machine); TCG else."""
+                [--arch amd64|arm64]
+KVM is used when AZT_SYSTEM_ACCEL=kvm (nested KVM fails on the reference machine); TCG else.
+arm64 is qemu-system-aarch64's -M virt under TCG, the packages being the arm64 ones."""
 import argparse
 import os
 import shutil
@@ -22,7 +23,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 SIGNING = os.path.join(HERE, "..", "data", "software", "signing")
 TEST_KEY = "FC4892F01AAC91A16E33CF6BD790D49363F83F75"  # tests/data/software/signing
-QEMU = {"amd64": "qemu-system-x86_64"}
+QEMU = {"amd64": "qemu-system-x86_64", "arm64": "qemu-system-aarch64"}
 
 
 def log(text):
@@ -40,7 +41,7 @@ def sign(deb, out):
         subprocess.run(["debsigs", "--sign=origin", f"--default-key={TEST_KEY}", out], **quiet)
 
 
-def make_payload(work, image, debs, broken_udev):
+def make_payload(work, modules, debs, broken_udev):
     """The payload disk: the test, the packages (N, the panel's, and N+1 signed), the key."""
     payload = os.path.join(work, "payload")
     os.makedirs(os.path.join(payload, "debs"))
@@ -52,7 +53,8 @@ def make_payload(work, image, debs, broken_udev):
     shutil.copy(debs.panel, os.path.join(payload, "debs", "azeltrack-panel.deb"))
     sign(debs.deb_n1, os.path.join(payload, "debs", "azeltrack_N1_signed.deb"))
     shutil.copy(os.path.join(SIGNING, "test-key.asc"), payload)
-    shutil.copy(os.path.join(image, "gpio-sim.ko"), payload)
+    for module in os.listdir(modules):  # gpio-sim.ko, and i2c-stub.ko where the kernel lacks it
+        shutil.copy(os.path.join(modules, module), payload)
     img = os.path.join(work, "payload.img")
     subprocess.run(["mke2fs", "-q", "-t", "ext4", "-L", "azt-payload", "-d", payload, img, "64M"],
                    check=True)
@@ -60,15 +62,27 @@ def make_payload(work, image, debs, broken_udev):
 
 
 def qemu_command(arch, image, overlay, payload, work, accel):
-    return [QEMU[arch], "-accel", accel, "-m", "1536", "-smp", "2", "-display", "none",
-            "-monitor", "none", "-nic", "none",
-            "-kernel", os.path.join(image, "vmlinuz"),
-            "-initrd", os.path.join(image, "initrd.img"),
-            "-append", "root=/dev/vda rw console=ttyS0 quiet systemd.show_status=0",
-            "-drive", f"file={overlay},if=virtio,format=qcow2",
-            "-drive", f"file={payload},if=virtio,format=raw,readonly=on",
-            "-serial", f"file:{os.path.join(work, 'console.log')}",
-            "-serial", f"file:{os.path.join(work, 'results.log')}"]
+    """The machine: Debian's kernel booted directly, the root and the payload on virtio disks,
+    the kernel's console on the first serial port and the test's results on a second channel
+    (a second UART on a PC; on arm64's -M virt, which has one PL011, a virtio serial port).
+    arm64 runs a Cortex-A72, a Raspberry Pi 4's core."""
+    console = os.path.join(work, "console.log")
+    results = os.path.join(work, "results.log")
+    common = ["-accel", accel, "-m", "1536", "-smp", "2", "-display", "none",
+              "-monitor", "none", "-nic", "none",
+              "-kernel", os.path.join(image, "vmlinuz"),
+              "-initrd", os.path.join(image, "initrd.img"),
+              "-drive", f"file={overlay},if=virtio,format=qcow2",
+              "-drive", f"file={payload},if=virtio,format=raw,readonly=on"]
+    boot = "root=LABEL=azt-root rw quiet systemd.show_status=0"
+    if arch == "arm64":
+        return ["qemu-system-aarch64", "-M", "virt", "-cpu", "cortex-a72", *common,
+                "-append", f"{boot} console=ttyAMA0", "-serial", f"file:{console}",
+                "-device", "virtio-serial-device",
+                "-chardev", f"file,id=results,path={results}",
+                "-device", "virtserialport,chardev=results,name=azt.results"]
+    return ["qemu-system-x86_64", *common, "-append", f"{boot} console=ttyS0",
+            "-serial", f"file:{console}", "-serial", f"file:{results}"]
 
 
 def follow(qemu, results_path, started, timeout_s):
@@ -118,7 +132,7 @@ def main():
     ap.add_argument("--panel", required=True, help="the azeltrack-panel package of version N")
     ap.add_argument("--cache-dir", default=os.path.expanduser("~/.cache/azeltrack/system"))
     ap.add_argument("--arch", default="amd64")
-    ap.add_argument("--timeout", type=int, default=900)
+    ap.add_argument("--timeout", type=int, help="seconds (default 900; arm64, emulated: 3600)")
     ap.add_argument("--broken-udev", action="store_true",
                     help="the proof: with the package's udev rule naming the wrong group, the "
                          "GPIO step must fail (and only the install and GPIO steps run)")
@@ -131,9 +145,11 @@ def main():
     image = subprocess.run([os.path.join(HERE, "make_image.sh"), args.arch, args.cache_dir,
                             args.deb_n, args.panel], check=True, capture_output=False,
                            stdout=subprocess.PIPE, text=True).stdout.strip()
+    modules = subprocess.run([os.path.join(HERE, "make_modules.sh"), args.arch, image],
+                             check=True, stdout=subprocess.PIPE, text=True).stdout.strip()
     log(f"image ready in {time.monotonic() - t0:.0f} s: {image}")
     with tempfile.TemporaryDirectory(prefix="azt-system-") as work:
-        payload = make_payload(work, image, args, args.broken_udev)
+        payload = make_payload(work, modules, args, args.broken_udev)
         overlay = os.path.join(work, "root.qcow2")
         subprocess.run(["qemu-img", "create", "-q", "-f", "qcow2", "-F", "raw", "-b",
                         os.path.join(image, "root.img"), overlay], check=True)
@@ -141,7 +157,8 @@ def main():
         started = time.monotonic()
         qemu = subprocess.Popen(qemu_command(args.arch, image, overlay, payload, work, accel),
                                 stdin=subprocess.DEVNULL)
-        lines = follow(qemu, os.path.join(work, "results.log"), started, args.timeout)
+        timeout_s = args.timeout or (900 if args.arch == "amd64" else 3600)
+        lines = follow(qemu, os.path.join(work, "results.log"), started, timeout_s)
         wall = time.monotonic() - started
         steps = [l for l in lines if l.startswith("STEP ")]
         if args.broken_udev:
