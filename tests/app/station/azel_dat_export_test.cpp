@@ -110,7 +110,8 @@ TEST_F(AzelDatTest, TheFifthLineHasTheMoonConditionsOfTheSameInstant) {
   const auto p = fields(l[4]);
   ASSERT_EQ(p.size(), 6U);
   EXPECT_EQ(p[5], "Pol");
-  const auto sky = sky_snapshot(ephemeris_, sky_.settings, astro::UtcInstant::from_unix_seconds(kAt));
+  const auto sky =
+      sky_snapshot(ephemeris_, sky_.settings, astro::UtcInstant::from_unix_seconds(kAt));
   const auto moon = sky->observe(astro::Target::moon());
   const auto c = moon_conditions_at(*moon, *sky, sky_.settings);
   ASSERT_TRUE(c && c->dx_dpol_deg && c->mnr_db && c->width_hz && c->dx_width_hz);
