@@ -37,7 +37,7 @@ std::string default_config_path() {
 /// The default configuration's text with `[target] name` set to something that is up at
 /// `unix_s` (common/first_target.hpp), its comments kept; the reason is logged.
 std::string default_config_for(double unix_s) {
-  const std::string text = default_config_text();
+  std::string text = default_config_text();
   const ConfigFile file = ConfigFile::parse(text, "the default configuration");
   const DaemonConfig config = daemon_config_from(file);
   const auto ephemeris = open_ephemeris(config.sky.settings.ephemeris);

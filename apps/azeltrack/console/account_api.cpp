@@ -56,7 +56,7 @@ std::vector<ApiToken> tokens_of(const json& records) {
 }
 
 /// The model's answer, or its refusal, as the HTTP reply.
-ActDone reply_to(const WebApi::Respond& respond, json fields) {
+ActDone reply_to(const WebApi::Respond& respond, const json& fields) {
   return [respond, fields](ActResult result) {
     if (result.error) {
       respond(error_reply(result.error->status(), result.error->what(), result.error->field()));

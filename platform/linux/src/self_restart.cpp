@@ -40,6 +40,7 @@ Result<bool> reexec_self() {
   std::vector<std::string> args = own_arguments();
   if (args.empty()) return fail("cannot read /proc/self/cmdline");
   std::vector<char*> argv;
+  argv.reserve(args.size() + 1);
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   // Listening sockets, lock files and devices must not outlive the exec: the new process opens
