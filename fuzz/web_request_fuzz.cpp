@@ -283,7 +283,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   double now_s = kNow;
   FakeModel model((variant & kRefuseAtOnce) != 0, (variant & kRefuseLater) != 0);
-  app::WebAuth auth(app::WebAuth::Config{password_hash(), token_sha256()});
+  app::WebAuth auth(app::WebAuth::Config{password_hash(), {{"script", token_sha256(), "", false}}});
   app::WebApi api(
       model, auth, app::WebApiConfig{{"shack.local"}}, [&now_s] { return now_s; }, app::run_inline);
   app::WebAuth::Login login;

@@ -172,7 +172,7 @@ def ws_connect(origin=True, host=None):
 
 
 def parse_frame(buf):
-    """(opcode, payload, bytes used) of the first whole server frame in buf, or None."""
+    """(opcode, payload, bytes used, fin) of the first whole server frame in buf, or None."""
     if len(buf) < 2:
         return None
     opcode, n, at = buf[0] & 0x0F, buf[1] & 0x7F, 2
@@ -188,12 +188,14 @@ def parse_frame(buf):
         at += 4  # servers do not mask; skip a key anyway
     if len(buf) < at + n:
         return None
-    return opcode, buf[at:at + n], at + n
+    return opcode, buf[at:at + n], at + n, bool(buf[0] & 0x80)
 
 
 def read_frames(s, seconds):
-    """Every whole frame received within `seconds`."""
-    frames, buf = [], b""
+    """Every whole message received within `seconds`, as (opcode, payload): a message the server
+    sent in fragments (RFC 6455 §5.4: FIN clear, then continuation frames of opcode 0; Beast
+    fragments what exceeds its write buffer, 4 KiB) is joined as a browser joins it."""
+    frames, buf, partial = [], b"", None
     end = time.monotonic() + seconds
     s.settimeout(0.1)
     while time.monotonic() < end:
@@ -205,8 +207,18 @@ def read_frames(s, seconds):
             break
         buf += chunk
         while (f := parse_frame(buf)) is not None:
-            frames.append(f[:2])
-            buf = buf[f[2]:]
+            opcode, payload, used, fin = f
+            buf = buf[used:]
+            if opcode == 0 and partial is not None:
+                partial = (partial[0], partial[1] + payload)
+            elif opcode >= 8:  # a control frame may come between fragments
+                frames.append((opcode, payload))
+                continue
+            else:
+                partial = (opcode, payload)
+            if fin:
+                frames.append(partial)
+                partial = None
     return frames
 
 

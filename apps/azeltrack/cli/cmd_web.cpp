@@ -14,6 +14,7 @@
 #include "common/usage_error.hpp"
 #include "config/config_store.hpp"
 #include "config/daemon_config.hpp"
+#include "config/token_label.hpp"
 #include "console/web_auth.hpp"
 
 namespace azt::app {

@@ -10,6 +10,7 @@
 #include "config/hardware_config.hpp"
 #include "config/sim_config.hpp"
 #include "config/sky_config.hpp"
+#include "config/token_label.hpp"
 
 namespace azt::app {
 namespace {
@@ -377,16 +378,6 @@ std::vector<const linux_os::GpioLineSpec*> GpioConfig::lines() const {
 
 DaemonConfig load_daemon_config(const std::string& path) {
   return daemon_config_from(ConfigFile::load(path));
-}
-
-std::optional<std::string> token_label_problem(const std::string& label) {
-  constexpr std::size_t kMaxLabel = 40;
-  if (label.empty() || label.size() > kMaxLabel) return "must be 1 to 40 characters";
-  const bool plain = label.find_first_not_of(
-                         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                         "0123456789 ._-") == std::string::npos;
-  if (!plain) return "may hold letters, digits, spaces, '.', '_' and '-' only";
-  return std::nullopt;
 }
 
 }  // namespace azt::app

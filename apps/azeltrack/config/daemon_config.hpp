@@ -157,8 +157,7 @@ struct DaemonConfig {
 
 /// Parses and validates; throws UsageError naming the key and its line.
 DaemonConfig daemon_config_from(const ConfigFile& file);
-/// Why `label` cannot name an API token ([[token]] label), or nothing.
-std::optional<std::string> token_label_problem(const std::string& label);
+
 DaemonConfig load_daemon_config(const std::string& path);
 
 /// The commented configuration a first run writes: the simulated antenna tracking the Moon,

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "config/daemon_config.hpp"
+#include "config/token_label.hpp"
 #include "console/api_reply.hpp"
 #include "console/web_api.hpp"
 
