@@ -134,4 +134,15 @@ std::string_view chapter_title(Chapter chapter) {
   return "?";
 }
 
+const toml::table* table_at(const toml::table& root, std::string_view name) {
+  const toml::table* t = &root;
+  while (t != nullptr && !name.empty()) {
+    const auto dot = name.find('.');
+    const toml::node* n = t->get(name.substr(0, dot));
+    t = n != nullptr ? n->as_table() : nullptr;
+    name = dot == std::string_view::npos ? std::string_view() : name.substr(dot + 1);
+  }
+  return t;
+}
+
 }  // namespace azt::app

@@ -111,6 +111,8 @@ const SectionSpec* find_section(std::string_view name);
 const KeySpec* find_key(const SectionSpec& section, std::string_view key);
 /// The child table `key` of `section` ("az" of "mount"), or null.
 const SectionSpec* find_child(const SectionSpec& section, std::string_view key);
+/// The table a dotted section name ("mount.az") names in a file's `root`, or null.
+const toml::table* table_at(const toml::table& root, std::string_view name);
 
 /// Why `value` cannot be `spec`'s value ("must be 0 to 2", "must be an integer"), or nullopt.
 std::optional<std::string> key_violation(const KeySpec& spec, const toml::node& value);

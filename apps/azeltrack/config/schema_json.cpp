@@ -94,18 +94,6 @@ json build_schema_json() {
   return {{"schema_version", kSchemaVersion}, {"sections", sections}};
 }
 
-/// The table named by a dotted section name ("mount.az"), or null.
-const toml::table* table_at(const toml::table& root, std::string_view name) {
-  const toml::table* t = &root;
-  while (t != nullptr && !name.empty()) {
-    const auto dot = name.find('.');
-    const toml::node* n = t->get(name.substr(0, dot));
-    t = n != nullptr ? n->as_table() : nullptr;
-    name = dot == std::string_view::npos ? std::string_view() : name.substr(dot + 1);
-  }
-  return t;
-}
-
 /// The keys of one table as the file has them, secrets left out.
 json values_of(const SectionSpec& spec, const toml::table* table) {
   json out = json::object();

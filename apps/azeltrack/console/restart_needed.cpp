@@ -9,18 +9,6 @@
 namespace azt::app {
 namespace {
 
-/// The table at a dotted section name ("mount.az") of `root`, or null.
-const toml::table* table_at(const toml::table& root, std::string_view name) {
-  const toml::table* t = &root;
-  while (t != nullptr && !name.empty()) {
-    const auto dot = name.find('.');
-    const toml::node* n = t->get(name.substr(0, dot));
-    t = n != nullptr ? n->as_table() : nullptr;
-    name = dot == std::string_view::npos ? std::string_view() : name.substr(dot + 1);
-  }
-  return t;
-}
-
 /// The value's text, numbers of a number key as doubles: a default written "20" and a saved
 /// 20.0 are the same setting.
 std::string canonical(const KeySpec& k, const toml::node& n) {
