@@ -44,6 +44,10 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     done(ActResult{{{"restarting", true}}, std::nullopt});
     return;
   }
+  if (action == "hardware/direction-test") {
+    act_direction_test(body, source, std::move(done));
+    return;
+  }
   if (action == "faults/clear") {
     p_.antenna.clear_faults();
     p_.log(source + ": latched faults cleared");
@@ -70,6 +74,24 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     return;
   }
   throw ApiError(404, "", "no such action: " + action);
+}
+
+void DaemonConsole::act_direction_test(const json& body, const std::string& source,
+                                       ActDone done) {
+  if (p_.direction_test == nullptr) throw ApiError(404, "", "no direction test here");
+  const std::string axis = body_text(body, "axis");
+  auto finished = [done = std::move(done)](json result, std::optional<std::string> error) {
+    if (error) {
+      done(ActResult{{}, ApiError(409, "", *error)});
+    } else {
+      done(ActResult{std::move(result), std::nullopt});
+    }
+  };
+  if (auto refused = p_.direction_test->start(axis, source, std::move(finished))) {
+    throw ApiError(axis == "az" || axis == "el" ? 409 : 400, axis == "az" || axis == "el" ? "" : "axis",
+                   *refused);
+  }
+  p_.log(source + ": direction test of the " + (axis == "az" ? "azimuth" : "elevation") + " axis");
 }
 
 TargetRequest DaemonConsole::target_request(const json& body) {

@@ -21,6 +21,7 @@
 #include "console/moon_planner.hpp"
 #include "console/settings_change.hpp"
 #include "station/clock_watch.hpp"
+#include "station/direction_test.hpp"
 #include "station/pointing_scanner.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
@@ -62,6 +63,8 @@ struct ConsoleParts {
   PointingScanner* scanner = nullptr;
   /// POST /api/restart: the daemon stops the motors and starts again (null: refused, 409).
   std::function<void(const std::string& who)> restart;
+  /// POST /api/hardware/direction-test (null: none here, 404).
+  DirectionTest* direction_test = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -107,6 +110,8 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json act_target(const nlohmann::json& body, const std::string& source);
   /// POST /api/scan: points at the source and starts a pointing scan (issue 16 §3).
   nlohmann::json act_scan(const nlohmann::json& body, const std::string& source);
+  /// POST /api/hardware/direction-test {"axis"}: answered when the test ends (about 1.6 s).
+  void act_direction_test(const nlohmann::json& body, const std::string& source, ActDone done);
   /// POST /api/scan/apply: the last scan's offsets into [corrections] (saved atomically).
   void act_scan_apply(const nlohmann::json& body, ActDone done);
   // The settings: each validates the body at once (ApiError), then saves off the loop.

@@ -35,6 +35,7 @@
 #include "station/sequencer_runner.hpp"
 #include "station/simulated_power.hpp"
 #include "station/sky_follower.hpp"
+#include "station/direction_test.hpp"
 #include "station/station_commands.hpp"
 #include "station/station_service.hpp"
 
@@ -141,6 +142,7 @@ class StationDaemon {
   std::unique_ptr<PowerReceiver> receiver_;   ///< [receiver]: the power readings of scans
   std::unique_ptr<PointingScanner> scanner_;  ///< a pointing scan, while one runs
   StationCommands commands_;
+  DirectionTest direction_test_;  ///< the console's direction test of one axis, while one runs
   StationService service_;
   boost::asio::signal_set signals_;
   boost::asio::steady_timer timer_;

@@ -96,6 +96,12 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
           [this](const CommandSource& source, const Refusal& refusal) {
             control_event(source.name + ": refused: " + refusal.reason);
           }}),
+      direction_test_(DirectionTestParts{
+          *antenna_, commands_, modes_,
+          [this] {
+            return sequencer_->motion_hold() || sequencer_->state().value("transmitting", false);
+          },
+          [this] { return now_s(); }}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
           // The locator first: Hamlib shows 63 characters of it (format_get_info).
@@ -389,7 +395,8 @@ void StationDaemon::open_console() {
                    [this] { return network_->to_json(); },
                    [this] { return receiver_->to_json(); },
                    scanner_.get(),
-                   [this](const std::string& who) { restart_soon(who); }},
+                   [this](const std::string& who) { restart_soon(who); },
+                   &direction_test_},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});
@@ -405,6 +412,7 @@ void StationDaemon::control_event(const std::string& text) {
 void StationDaemon::motion_event(const CommandSource& source, const CommandRecord& record) {
   const std::string line = log_safe(source.name + ": " + record.words);
   log_.info("motion " + source.name, line, now_s());
+  direction_test_.interrupt(source.name + ": " + record.words);
   // A program's stream of positions is one entry; a new target or a STOP is a new one.
   motions_.add(
       unix_now_s(), line,

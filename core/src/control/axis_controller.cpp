@@ -112,6 +112,15 @@ double AxisController::update(double target_deg, double position_deg, double tar
   return slew_duty(sign(velocity) * magnitude, dt_s);
 }
 
+double AxisController::drive_open(double wanted, double dt_s) {
+  if (!std::isfinite(wanted) || !(dt_s > 0.0)) {
+    halt();
+    return 0.0;
+  }
+  moving_ = wanted != 0.0;
+  return slew_duty(std::clamp(wanted, -1.0, 1.0), dt_s);
+}
+
 void AxisController::halt() {
   duty_ = 0.0;
   moving_ = false;

@@ -136,6 +136,11 @@ Duties StationController::tick(double now_s, const Demand& demand, const AzEl& r
   } else if (demand.position) {
     az_target = plan_azimuth(az_.mount_deg, demand.position->az_deg, config_.az_range);
     el_target = plan_elevation(demand.position->el_deg, config_.el_range);
+  } else if (demand.test) {
+    Axis& tested = demand.test->azimuth ? az_ : el_;
+    drive(demand.test->azimuth ? el_ : az_, now_s, std::nullopt, 0.0);
+    drive_test(tested, now_s, demand.test->direction > 0 ? 1 : -1);
+    return duties();
   } else if (demand.jog) {
     // A continuous move runs to the end of the travel at full speed; the controller's
     // deceleration zone stops it there if nobody stops it first.
@@ -221,6 +226,38 @@ double StationController::drive_setpoint(Axis& axis, double now_s, double target
     axis.setpoint_duty = 0.0;
   }
   return axis.setpoint_duty;
+}
+
+double StationController::drive_test(Axis& axis, double now_s, int direction) const {
+  // Slow, so a wrong way is seen before it goes far: below the supervisor's "driven" duty where the
+  // motor still turns past its stiction. A relay has one speed; a setpoint box is given a goal a
+  // few degrees on, renewed each tick, so it keeps going the one way for the test's second.
+  constexpr double kTestDuty = 0.35;
+  constexpr double kSetpointLeadDeg = 5.0;
+  axis.holding = false;
+  double duty = 0.0;
+  switch (axis.drive.kind) {
+    case DriveKind::Pwm:
+      duty = axis.controller.drive_open(
+          direction * std::max(kTestDuty, axis.controller.config().min_duty + 0.1), config_.tick_s);
+      break;
+    case DriveKind::Relay:
+      duty = relay_duty(
+          axis.relay.update(axis.mount_deg + direction * kSetpointLeadDeg, axis.mount_deg, now_s));
+      break;
+    case DriveKind::Setpoint:
+      axis.setpoint_deg = axis.mount_deg + direction * kSetpointLeadDeg;
+      duty = axis.setpoint_duty = direction;
+      break;
+  }
+  // The supervisor still stops it for a stale reading, a latched fault or the E-stop, but is not
+  // asked to judge the motion: which way the shaft goes is the test's question, and a reversed
+  // motor must come back as its answer rather than as a latched runaway.
+  if (into_limit(axis, duty) || !axis.supervisor.check(now_s, 0.0).allow_motion) {
+    axis.halt(now_s);
+    return 0.0;
+  }
+  return duty;
 }
 
 bool StationController::into_limit(const Axis& axis, double duty) const {

@@ -56,6 +56,10 @@ class AxisController {
   /// fixed target). Returns the duty to apply.
   double update(double target_deg, double position_deg, double target_rate_deg_s, double dt_s);
 
+  /// Open loop (the direction test): the duty goes to `wanted` through the soft start, whatever
+  /// the reading. Returns the duty to apply.
+  double drive_open(double wanted, double dt_s);
+
   /// Drops the duty to zero at once and forgets the move (safety stops: no soft ramp).
   void halt();
 

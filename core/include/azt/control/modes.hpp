@@ -36,6 +36,13 @@ struct Jog {
   int el = 0;
 };
 
+/// The direction test of one axis (docs/hardware.md): driven open loop, slowly, one way, so the
+/// way its reading goes shows a motor or sensor wired the wrong way round. The other axis holds.
+struct AxisTest {
+  bool azimuth = true;
+  int direction = 1;  ///< +1 clockwise / up, −1 the other way
+};
+
 /// Where the antenna should point now, and why.
 struct Demand {
   std::optional<AzEl> position;  ///< nullopt: do not move (STOP, or holding)
@@ -45,6 +52,7 @@ struct Demand {
   /// 180 on flip mounts), chosen by a pass plan: driven as given, never re-planned to the nearest
   /// side, so a pass never unwinds mid-way.
   bool mount = false;
+  std::optional<AxisTest> test = std::nullopt;  ///< a direction test; `position` and `jog` are then nullopt
 };
 
 /// Which mode is active and what it asks for. Pure: the tracker feeds it the sky position of the

@@ -146,6 +146,8 @@ class StationController {
   double drive_relay(Axis& axis, double now_s, double target_deg, double rate_deg_s) const;
   double drive_setpoint(Axis& axis, double now_s, double target_deg) const;
   double drive(Axis& axis, double now_s, std::optional<double> target_deg, double rate_deg_s) const;
+  /// The direction test's open-loop drive of one axis (Demand::test).
+  double drive_test(Axis& axis, double now_s, int direction) const;
   /// A duty of `axis` that runs into a tripped switch.
   [[nodiscard]] bool into_limit(const Axis& axis, double duty) const;
   [[nodiscard]] std::optional<double> jog_target(int direction, bool azimuth) const;
