@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# House style, checked by the test command (DESIGN.md rule 6): clang-format on every first-party
-# C++ file, clang-tidy (naming, function size, bugprone, performance) on the core and the program.
+# House style, checked by the test command (docs/architecture.md, "Rules that hold everywhere"):
+# clang-format on every first-party C++ file, clang-tidy (naming, function size, bugprone,
+# performance) on the core and the program.
 # Usage: lint.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
 src=${1:?usage: lint.sh SOURCE_DIR BUILD_DIR}
