@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""The station under hostile load (issue 12, "Proof"): while wrong logins arrive at 5 per second
-from many addresses (each one a full Argon2id check), another process holds the configuration's
-lock for 10 s while a console save waits for it, 200 WebSocket upgrades and 300 rotctld sockets
-are held open, an operator logged in with a bearer token sends POST /api/stop every 200 ms.
+"""The station under hostile load (the benchmark of docs/reliability.md "Hardening"): while wrong
+logins arrive at 5 per second from many addresses (each one a full Argon2id check), another process
+holds the configuration's lock for 10 s while a console save waits for it, 200 WebSocket upgrades
+and 300 rotctld sockets are held open, an operator logged in with a bearer token sends POST
+/api/stop every 200 ms.
 
 Measured: the control tick's lateness over the whole run (the daemon's own statistics, printed
 when it stops: p50, p99, max, overruns), the latency of every /api/stop (max, p99), what the

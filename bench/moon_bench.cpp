@@ -7,7 +7,7 @@
 // otherwise the libswe rows would time a cache hit.
 //
 // Run: build/bench/azt_bench [--benchmark_filter=erfa] (Release or RelWithDebInfo build).
-// Benchmark functions are snake_case like every function here (DESIGN.md rule 6), not BM_*.
+// Benchmark functions are snake_case like every function here (.clang-tidy's naming), not BM_*.
 
 #include <benchmark/benchmark.h>
 

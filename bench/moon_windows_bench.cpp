@@ -1,5 +1,5 @@
-// Issue 16 §2: thirty days of common Moon windows for one station pair (FN06HE and JO62QM), the
-// planner page's question; the issue asks for under a second, so the page can answer as the
+// Thirty days of common Moon windows for one station pair (FN06HE and JO62QM), the planner
+// page's question (docs/eme.md); it must take under a second, so the page can answer as the
 // operator types. ERFA's ephemeris (and Swiss Ephemeris when built in).
 //
 // Run: build/bench/azt_moon_windows_bench (Release or RelWithDebInfo build).

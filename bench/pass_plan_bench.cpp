@@ -1,4 +1,4 @@
-// Issue 16 §4: what planning one satellite pass costs. The plan is made on the daemon's loop
+// What planning one satellite pass costs. The plan is made on the daemon's loop
 // once per pass (docs/satellites.md), so its worst case matters: 200 synthetic passes per mount
 // kind (a third crossing north, a third near the zenith, a third low, 400–900 km), timed one by
 // one with the steady clock. Prints a Markdown table.

@@ -1,6 +1,6 @@
-// Issue 7 §4 benchmark: SGP4 propagations per second and a 7-day pass search for 100 satellites,
-// beside python3-sgp4 (Debian builds only its pure-Python propagator) and skyfield's find_events
-// on the same element sets, in one run. Prints a Markdown table.
+// Satellite benchmark (docs/satellites.md "Speed"): SGP4 propagations per second and a 7-day pass
+// search for 100 satellites, beside python3-sgp4 (Debian builds only its pure-Python propagator)
+// and skyfield's find_events on the same element sets, in one run. Prints a Markdown table.
 //
 // Usage: azt_sat_bench [path/to/sat_bench.py]
 #include <sys/wait.h>

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Eight package uploads racing (issue 27 §10, "Proof"): eight curl processes each send a 60 MiB
-package to a logged-in daemon at once, while GET /api/state is asked every 10 ms. Before the fix
-all eight bodies were read into memory (RSS 15 -> 496 MiB) before seven were refused, the tick
-was 33 ms late and /api/state took 74 ms.
+"""Eight package uploads racing (docs/reliability.md "Hardening, round three": row 10 and the
+benchmark): eight curl processes each send a 60 MiB package to a logged-in daemon at once, while GET
+/api/state is asked every 10 ms. Before the fix all eight bodies were read into memory (RSS 15 ->
+496 MiB) before seven were refused, the tick was 33 ms late and /api/state took 74 ms.
 
 Measured: the daemon's resident memory before and its peak (VmHWM) after, how the uploads were
 answered, the latency of every /api/state (p50, p99, max) and the control tick's lateness over

@@ -1,4 +1,4 @@
-// libFuzzer target for the configuration loader (issue 4 §4, reliability notes R23/R24).
+// libFuzzer target for the configuration loader (docs/reliability.md R23, R24).
 //
 // Input: the bytes of a configuration file. Invariants:
 // - parsing and validating (ConfigFile::parse, migrations, daemon_config_from) either accept the

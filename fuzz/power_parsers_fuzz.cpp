@@ -1,4 +1,4 @@
-// libFuzzer target for the receiver power feed codecs (issue 16 §3): rtl_power's CSV lines
+// libFuzzer target for the receiver power feed codecs (docs/calibration.md): rtl_power's CSV lines
 // (parse_rtl_power_line, sweep_power_db) and the one-reading-a-line feed (parse_power_line,
 // parse_power_lines). The whole input is one line for each parser and one datagram.
 // Invariants:

@@ -1,6 +1,6 @@
-// libFuzzer target for what the daemon reads about software updates (issue 17 §2): an uploaded
-// file's ar members (check_deb_archive, on every byte a logged-in browser may send) and the root
-// update helper's status file (parse_update_status). The whole input goes to both.
+// libFuzzer target for what the daemon reads about software updates (docs/packaging.md): an
+// uploaded file's ar members (check_deb_archive, on every byte a logged-in browser may send) and
+// the root update helper's status file (parse_update_status). The whole input goes to both.
 // Invariants:
 // - an accepted archive starts with ar's magic, has a 2.x format, control.tar and data.tar
 //   members, and a data member no larger than the input;

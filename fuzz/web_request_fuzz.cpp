@@ -1,4 +1,4 @@
-// libFuzzer target for the web console's request handling (issue 12 §8, reliability notes R14,
+// libFuzzer target for the web console's request handling (docs/reliability.md R14,
 // R24): the bytes a client sends on one connection, parsed by Boost.Beast's request parser with
 // the server's limits, turned into an azt::linux_os::HttpRequest by the server's own
 // azt::linux_os::to_http_request (azt/linux/http_request.hpp), then dispatched as
@@ -23,8 +23,8 @@
 //   application/json, its type and headers free of CR and LF;
 // - the model acts only for a request that has_session() accepted (a valid bearer or session).
 // The crash this would have found: a Latin-1 Host echoed into the 403's JSON made
-// nlohmann::json::dump throw out of handle (before issue 12 part 1); today the header is made
-// valid UTF-8 and every dump replaces (seed latin1_host).
+// nlohmann::json::dump throw out of handle (docs/reliability.md "Hardening" row 1, before its
+// fix); today the header is made valid UTF-8 and every dump replaces (seed latin1_host).
 // AZT_FUZZ_TRACE=1 in the environment prints each request and its answer (to triage an input).
 #include <sodium.h>
 

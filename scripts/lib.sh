@@ -1,9 +1,10 @@
 # Shared by the scripts: sourced, not run.
 
 # The caches live outside the clone, so that a fresh clone (CI's) on the same machine reuses them
-# (issue 26): ccache's objects, clang-tidy's results (tests/lint/tidy_cache.py) and the upgrade
-# test's Debian root. CCACHE_BASEDIR makes paths under the clone relative, so clones at other
-# paths share the objects; a ccache.conf of the user's own still applies to the rest.
+# (docs/building.md, "The caches"): ccache's objects, clang-tidy's results
+# (tests/lint/tidy_cache.py) and the upgrade test's Debian root. CCACHE_BASEDIR makes paths under
+# the clone relative, so clones at other paths share the objects; a ccache.conf of the user's own
+# still applies to the rest.
 azt_cache=${AZT_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/azeltrack}
 export CCACHE_DIR=${CCACHE_DIR:-$azt_cache/ccache}
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}

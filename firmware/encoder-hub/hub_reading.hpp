@@ -1,6 +1,6 @@
 #pragma once
-// The frame's reading from both axes' checked counts (issue 14 §1): an axis with an error, or
-// whose jumpers select no known encoder, carries its error instead of a position.
+// The frame's reading from both axes' checked counts (docs/encoder-hub.md): an axis with an error,
+// or whose jumpers select no known encoder, carries its error instead of a position.
 
 #include "azt/proto/hub_frame.hpp"
 #include "jumpers.hpp"

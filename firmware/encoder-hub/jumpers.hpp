@@ -1,8 +1,8 @@
 #pragma once
-// What the hub's jumpers select, read once at boot (issue 14 §1; seed 000: "bit resolution set by
-// jumpers"). Pure: the firmware passes in which jumpers are fitted, as bits, and the host tests
-// call the same function. A fitted jumper pulls its pin to ground; with none fitted the hub reads
-// two AS5045-class encoders at 38400 baud, the common MAB25/HH12 station.
+// What the hub's jumpers select, read once at boot (docs/encoder-hub.md; seed 000: "bit resolution
+// set by jumpers"). Pure: the firmware passes in which jumpers are fitted, as bits, and the host
+// tests call the same function. A fitted jumper pulls its pin to ground; with none fitted the hub
+// reads two AS5045-class encoders at 38400 baud, the common MAB25/HH12 station.
 //
 // Per axis, five jumpers (docs/encoder-hub.md has the pins of a Nano):
 //   TYPE1 TYPE0   encoder

@@ -1,5 +1,5 @@
-// The EncoderHub firmware (issue 14): reads two absolute encoders and sends both counts to the
-// controller over RS-485, 50 times a second, in the CRC-8 frame version of
+// The EncoderHub firmware (docs/encoder-hub.md): reads two absolute encoders and sends both counts
+// to the controller over RS-485, 50 times a second, in the CRC-8 frame version of
 // azt/proto/hub_frame.hpp (the daemon's own decoder header). ATmega328P at 16 MHz, no Arduino
 // core: registers, Timer1 for the frame period, the watchdog for a hung loop. Between frames,
 // and while a frame is on the wire, the CPU sleeps (idle mode: the timer and USART run on).

@@ -1,7 +1,7 @@
 #pragma once
-// Each axis is read twice per frame (issue 14 §1): the two counts must agree within a few counts
-// (the shaft may move a little between them) or the frame carries the Disagree error for it. A
-// transient glitch, a flipped bit on a long cable or a half-latched word never becomes a position.
+// Each axis is read twice per frame (docs/encoder-hub.md): the two counts must agree within a few
+// counts (the shaft may move a little between them) or the frame carries the Disagree error for it.
+// So a transient glitch, a flipped bit on a long cable or a half-latched word is never a position.
 
 #include <stdint.h>
 

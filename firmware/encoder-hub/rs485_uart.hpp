@@ -1,5 +1,5 @@
 #pragma once
-// USART0 to a MAX485 (issue 14 §1): 8N1 at the jumpers' baud rate, transmit only, driven by
+// USART0 to a MAX485 (docs/encoder-hub.md): 8N1 at the jumpers' baud rate, transmit only, driven by
 // interrupts so that the CPU sleeps while a frame is on the wire. DE (with /RE) goes high just
 // before the first byte and low once the last stop bit has left the shift register (the TXC
 // interrupt), never after the last byte was merely handed to UDR0: dropping DE there would cut

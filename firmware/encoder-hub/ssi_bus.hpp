@@ -1,6 +1,6 @@
 #pragma once
-// Bit-banged SSI on the AVR (issue 14 §1): the clock idles high; each clock is a low half then
-// a high half of about 2 µs (≈ 250 kHz, well inside the AS5045's 1 MHz and a generic encoder's
+// Bit-banged SSI on the AVR (docs/encoder-hub.md): the clock idles high; each clock is a low half
+// then a high half of about 2 µs (≈ 250 kHz, well inside the AS5045's 1 MHz and a generic encoder's
 // limits on a short cable), the data bit sampled after the rising edge that shifts it out.
 
 #include <stdint.h>

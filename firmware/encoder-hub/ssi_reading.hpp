@@ -1,6 +1,6 @@
 #pragma once
-// One SSI word from an absolute encoder, checked and turned into a count (issue 14 §1). Pure:
-// the hub firmware and the host tests compile the same code (C++14, no heap, no STL; `int` is
+// One SSI word from an absolute encoder, checked and turned into a count (docs/encoder-hub.md).
+// Pure: the hub firmware and the host tests compile the same code (C++14, no heap, no STL; `int` is
 // 16 bits on the AVR, so every shift is on an unsigned or 32-bit type).
 //
 // A word is read MSB first. Before the first clock the data line must be idle high (an encoder

@@ -1,5 +1,5 @@
-// hub-sim: the EncoderHub firmware on a simulated ATmega328P (issue 14 §2). Loads the ELF, fits
-// the jumpers for the encoders asked for, puts encoder models on the SSI pins and writes the
+// hub-sim: the EncoderHub firmware on a simulated ATmega328P (docs/encoder-hub.md). Loads the ELF,
+// fits the jumpers for the encoders asked for, puts encoder models on the SSI pins and writes the
 // bytes the firmware's USART sends to stdout, or to a pseudo-terminal linked at --pty (paced in
 // real time there, as a hub on a serial port is).
 //

@@ -1,4 +1,4 @@
-// Browser tests of the web console (issue 5 §3): Debian's Chromium driven by playwright-core
+// Browser tests of the web console (docs/web-api.md): Debian's Chromium driven by playwright-core
 // against a real `azeltrack serve` on the simulated antenna. Each scenario checks what a user sees
 // and what the daemon did; screenshots at desktop and phone sizes go to OUT_DIR.
 // Usage: node console_test.js AZELTRACK OUT_DIR
@@ -39,10 +39,10 @@ function stopGpsfake() {
   // gpsd killed leaves its shared-memory export (key 0x4770 then the port in hex) behind.
   spawnSync('ipcrm', ['-M', `0x4770${gpsdPort.toString(16).padStart(4, '0')}`], { stdio: 'ignore' });
 }
-// The receiver for the pointing scans (issue 16 §3), as tests/integration/scan_test.py is one: a
-// Gaussian beam of BEAM_DEG on a source TRUE_AZ_DEG / TRUE_EL_DEG away from where the ephemeris
-// puts it (the target in /api/state), seen from where the encoders read, sent as dB lines over UDP
-// ([receiver] udp) every 100 ms.
+// The receiver for the pointing scans (docs/calibration.md), as tests/integration/scan_test.py is
+// one: a Gaussian beam of BEAM_DEG on a source TRUE_AZ_DEG / TRUE_EL_DEG away from where the
+// ephemeris puts it (the target in /api/state), seen from where the encoders read, sent as dB lines
+// over UDP ([receiver] udp) every 100 ms.
 const BEAM_DEG = 1.0;
 const TRUE_AZ_DEG = 0.4;
 const TRUE_EL_DEG = -0.25;
@@ -78,7 +78,7 @@ async function stopFeeder() {
 
 const hasProgram = (name) => spawnSync('sh', ['-c', `command -v ${name}`], { stdio: 'ignore' }).status === 0;
 
-// An ISS element set whose epoch is now, so that its next pass is within hours (issue 7).
+// An ISS element set whose epoch is now, so that its next pass is within hours.
 function tleWithEpochNow() {
   const checksum = (l) => l.slice(0, 68) + String([...l.slice(0, 68)].reduce((a, c) =>
     a + (c >= '0' && c <= '9' ? Number(c) : c === '-' ? 1 : 0), 0) % 10);
@@ -187,7 +187,7 @@ async function main() {
     });
 
     await scenario('choosing the Moon changes the target', page, async () => {
-      // The echo line is the Moon's alone (issue 16 §1, as on the seed's screen).
+      // The echo line is the Moon's alone (as on the seed's screen).
       if ((await state()).target.name !== 'Moon' && await page.isVisible('#echo-row')) {
         throw new Error('the echo line is shown while the Moon is not the target');
       }
@@ -197,7 +197,7 @@ async function main() {
       await until('Moon on screen', async () => (await text(page, '#target-name')).includes('Moon'), 3000);
       const s = await state();
       if (s.target.name !== 'Moon' || s.mode !== 'TRACK') throw new Error(`daemon: ${s.mode} ${s.target.name}`);
-      // Who moved the antenna (issue 13 §1): the console's choice, with its address.
+      // Who moved the antenna: the console's choice, with its address.
       await until('the command in the list', async () =>
         (await text(page, '#command-list')).includes('console 127.0.0.1: track Moon'), 3000);
       await until('the echo line', () => page.isVisible('#echo-row'), 3000);
@@ -339,7 +339,7 @@ async function main() {
       await until('the clock to tick again', async () => (await text(page, '#utc')) !== t1, 3000);
     });
 
-    // Issue 15: the station's clock, GPS and network, in the header and on their pages.
+    // The station's clock, GPS and network, in the header and on their pages.
     await scenario('the clock: the banner, the Time page, NTP servers saved from the console', page, async () => {
       await login(page);
       await until('the clock banner with a reason', async () => (await page.isVisible('#clock-banner')) &&
@@ -430,7 +430,7 @@ async function main() {
       if ((await page.$$('#planner-rows tr')).length !== 0) throw new Error('rows kept after a refusal');
     });
 
-    // Issue 16 §3: the pointing-scan page. The test is the receiver (startFeeder, above).
+    // The pointing-scan page (docs/calibration.md). The test is the receiver (startFeeder, above).
     const sd3 = (v) => { const t = v.toFixed(3); return `${t.startsWith('-') ? t : `+${t}`}°`; };
     // The plot as drawn: each circle's sample index, position and title; each curve's points.
     const plotted = () => page.evaluate(() => {

@@ -1,7 +1,8 @@
-// Browser test of the touch panel (/panel, issue 17 §3): Debian's Chromium driven by playwright-core
-// at the 4" display's 480×320 with touch (every action a tap), against a real `azeltrack serve` on
-// the simulated antenna, started by harness.js as for console_test.js. Each scenario checks what
-// the operator sees and what the daemon did; a screenshot of each screen goes to OUT_DIR.
+// Browser test of the touch panel (/panel, docs/panel.md): Debian's Chromium driven by
+// playwright-core at the 4" display's 480×320 with touch (every action a tap), against a real
+// `azeltrack serve` on the simulated antenna, started by harness.js as for console_test.js. Each
+// scenario checks what the operator sees and what the daemon did; a screenshot of each screen goes
+// to OUT_DIR.
 // Usage: node panel_test.js AZELTRACK OUT_DIR
 // AZT_WEB_DIR=web serves the page's files from that directory instead of the copy built into
 // AZELTRACK (to try an edit of web/ without a rebuild; the API and the WebSocket stay the daemon's).
@@ -37,7 +38,7 @@ poll_s = 1
 const num = (t) => parseFloat(String(t).replace('−', '-'));
 const visible = (page, sel) => page.isVisible(sel);
 
-// The rules of a screen at 480×320 (issue 17 §3): nothing scrolls, the document or any box in it;
+// The rules of a screen at 480×320 (docs/panel.md): nothing scrolls, the document or any box in it;
 // every visible control is 44×44 px or more and wholly on the screen; STOP is on the screen and
 // not covered. Returns the problems found.
 async function screenProblems(page) {

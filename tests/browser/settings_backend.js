@@ -1,4 +1,4 @@
-// The Settings scenarios whose API another change brings (issue 29 §1): the direction test, the
+// The Settings scenarios whose API another change brings (docs/web-api.md): the direction test, the
 // restart, the whole file's export and import, the password and the API tokens. Each first asks
 // the daemon with a request that changes nothing; a 404 records the scenario as skipped with the
 // reason (the console is built against the documented contract), never as passed.

@@ -1,4 +1,4 @@
-// Browser tests of the console's Settings (issue 29 §1; docs/web-api.md "The console's screens"):
+// Browser tests of the console's Settings (docs/web-api.md "The console's screens"):
 // Debian's Chromium driven by playwright-core against a real `azeltrack serve` on the simulated
 // antenna. Every section of the configuration file is a form built from GET /api/config/schema;
 // one value changed in a form is read back from the file on disk (`azeltrack config get`) and is

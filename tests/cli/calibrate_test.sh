@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Pointing calibration in simulation (issue 16 §3, docs/calibration.md): the mount's errors of
+# Pointing calibration in simulation (docs/calibration.md): the mount's errors of
 # examples/calibrate.toml (every term up to 1°, 0.1 dB of noise per reading) recovered from scans
 # across the sky; a single Sun cross scan finds the az/el offsets; refusals name their reason.
 # Usage: calibrate_test.sh path/to/azeltrack

@@ -100,7 +100,7 @@ expect_usage_error "simulate bad encoder bits" simulate --config "$tmp/bits.toml
 printf '[station]\ngrid = "FN06"\n[control]\nwindow_deg = 3\n' >"$tmp/window.toml"
 expect_usage_error "simulate window too large" simulate --config "$tmp/window.toml" --scenario slew --to-az 1 --to-el 1
 
-# Satellites (issue 7): look angles against skyfield's (computed with the same UT1 by
+# Satellites (docs/satellites.md): look angles against skyfield's (computed with the same UT1 by
 # tests/conformance/skyfield_sat_oracle.py: az 64.06290598896 el -4.43866229916 range 2899.55251 km
 # range rate 6.7753018521 km/s), Doppler, passes, the pass simulation, and bad input.
 iss=(--tle "$root/tests/data/sat/iss_2024.tle")

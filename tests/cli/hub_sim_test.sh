@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# hub-sim | azeltrack hub decode (issue 14 §2): the real firmware on a simulated ATmega328P, its
-# bytes through a pipe into the daemon's decoder, as `hub-sim … --seconds 1 | azeltrack hub
+# hub-sim | azeltrack hub decode (docs/encoder-hub.md): the real firmware on a simulated ATmega328P,
+# its bytes through a pipe into the daemon's decoder, as `hub-sim … --seconds 1 | azeltrack hub
 # decode` is documented to print the positions given; then through a pseudo-terminal, as a hub
 # on a serial port is read.
 # Usage: hub_sim_test.sh path/to/azeltrack path/to/hub-sim path/to/encoder-hub.elf

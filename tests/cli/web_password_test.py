@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Issue 17 §4: `azeltrack web password` as a new operator meets it. On a terminal (a pty here)
-it asks twice without echoing what is typed, and refuses a short or mistyped password saving
+"""`azeltrack web password` as a new operator meets it (docs/command-line.md). On a terminal (a pty
+here) it asks twice without echoing what is typed, and refuses a short or mistyped password saving
 nothing; from a pipe it says what it reads; with nothing to read it says so. The daemon's first
 start prints a generated password with a command to change it that works as printed, from
 another directory. Usage: web_password_test.py AZELTRACK"""

@@ -1,4 +1,4 @@
-// Running chronyc off the loop (issue 15 §2): the program's output and exit status come back,
+// Running chronyc off the loop (docs/time.md): the program's output and exit status come back,
 // its output is bounded, a hung program is killed at the deadline, a missing one is an error;
 // and the kernel's clock state can be read by anyone.
 #include "azt/linux/command_output.hpp"

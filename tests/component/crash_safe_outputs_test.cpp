@@ -1,4 +1,4 @@
-// A crash leaves no PWM driving (issue 12 §1, reference R16): a child process opens a channel of a
+// A crash leaves no PWM driving (docs/reliability.md R16): a child process opens a channel of a
 // fake sysfs PWM chip through SysfsPwm, drives it, installs the crash handlers and dies by a
 // fatal signal. No destructor runs in a crash; the handler's registered writes must still have
 // zeroed the duty and disabled the channel, and the child must still die by that signal.

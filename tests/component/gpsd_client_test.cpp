@@ -1,4 +1,4 @@
-// The gpsd client against a stand-in gpsd on loopback (issue 15 §1): it asks for JSON, turns
+// The gpsd client against a stand-in gpsd on loopback (docs/gps.md): it asks for JSON, turns
 // TPV and SKY reports into fixes and skies through libgps's parser, drops what is not a report,
 // gives up on a line no gpsd would send, and finds gpsd again after it went away or before it
 // started. The real gpsd fed by gpsfake is tests/integration/gps_test.py's.

@@ -1,4 +1,4 @@
-// The EncoderHub serial link against pseudo-terminals (issue 6 §6): frames in, a corrupt byte
+// The EncoderHub serial link against pseudo-terminals: frames in, a corrupt byte
 // rejected, the adapter unplugged (the terminal closed) and plugged back in at the same path.
 #include "azt/linux/hub_serial_link.hpp"
 

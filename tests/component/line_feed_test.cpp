@@ -1,5 +1,5 @@
-// The receiver power line feed (issue 16 §3) against a real FIFO and a real file: a writer that
-// opens the FIFO as `rtl_power ... > fifo` does (its open blocks until a reader comes), goes
+// The receiver power line feed (docs/calibration.md) against a real FIFO and a real file: a writer
+// that opens the FIFO as `rtl_power ... > fifo` does (its open blocks until a reader comes), goes
 // away and comes back; a file appended to, cut short, replaced, deleted and written again; lines
 // over the bound; problems said once. The loop runs in short slices until what a test waits for
 // has happened (run_until.hpp), never for a guessed time.

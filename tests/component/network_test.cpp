@@ -1,4 +1,4 @@
-// The station's network links (issue 15 §3): interfaces read from a sysfs tree laid out as the
+// The station's network links (docs/network.md): interfaces read from a sysfs tree laid out as the
 // kernel's (Ethernet with a device, WiFi, a bridge, loopback left out), the WiFi signal from
 // /proc/net/wireless, and the SSID from a stand-in NetworkManager on a private D-Bus.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-// The ppdev FODTRACK input (issue 6 §4): the register-to-lines mapping, whose polarity follows
-// Hamlib's fodtrack writes (register bit set = line asserted), and the real adapter's refusals
-// of a missing device and of a file that is not a parallel port.
+// The ppdev FODTRACK input (docs/hardware.md): the register-to-lines mapping, whose polarity
+// follows Hamlib's fodtrack writes (register bit set = line asserted), and the real adapter's
+// refusals of a missing device and of a file that is not a parallel port.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

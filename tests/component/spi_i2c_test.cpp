@@ -1,4 +1,4 @@
-// The SPI and I2C chip drivers of issue 6 §1–2 against recording fakes of the buses: the bytes
+// The SPI and I2C chip drivers (docs/hardware.md) against recording fakes of the buses: the bytes
 // each one puts on the wire, checked bit for bit against the datasheets (MCP3008 DS21295
 // figure 6-1, MCP41010 DS11195 section 5, ADS1115 SBAS444 section 8.6), and the real spidev and
 // i2c-dev adapters' refusals of a missing device and of a file that is not one.

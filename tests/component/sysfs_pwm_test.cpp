@@ -1,5 +1,5 @@
 // The sysfs PWM adapter and the IBT-2 bridge on it, against a directory laid out like
-// /sys/class/pwm/pwmchipN (issue 6 §6). The fake kernel's export is a pwmN directory made
+// /sys/class/pwm/pwmchipN. The fake kernel's export is a pwmN directory made
 // beforehand; the test checks what the adapter wrote into each attribute.
 #include "azt/linux/sysfs_pwm.hpp"
 #include "azt/linux/pwm_hbridge.hpp"

@@ -1,6 +1,7 @@
 // The UDP datagram server against real sockets on loopback: a datagram is handed on only whole
-// (issue 27 §6: a 1,610-byte datagram of receiver lines had been cut at the buffer, and its cut
-// last line read as a power of -4.0 dB). The loop runs until what a test waits for has happened.
+// (docs/reliability.md "Hardening, round three" row 6: a 1,610-byte datagram of receiver lines had
+// been cut at the buffer, and its cut last line read as a power of -4.0 dB). The loop runs until
+// what a test waits for has happened.
 #include "azt/linux/udp_datagram_server.hpp"
 
 #include <gtest/gtest.h>

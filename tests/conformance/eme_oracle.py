@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """WSJT-X's Astronomical Data, re-implemented from its published source for azeltrack's oracle
-test (issue 16 §1): the Moon and the Sun from astropy (Debian python3-astropy, offline), the EME
+test (docs/eme.md): the Moon and the Sun from astropy (Debian python3-astropy, offline), the EME
 quantities from the formulas of WSJT-X's lib/astro.f90 (WSJTX/wsjtx on GitHub, subroutine astro):
 
   - "Compute spatial polarization offset": xx = sin(lat)cos(El) - cos(lat)cos(Az)sin(El),

@@ -1,4 +1,4 @@
-// WSJT-X's Astronomical Data against azeltrack's (issue 16 §1 "Proof"): at 200 seeded random
+// WSJT-X's Astronomical Data against azeltrack's (docs/eme.md): at 200 seeded random
 // instants (2000–2035), random station pairs and EME bands, the Moon and Sun from astropy and the
 // EME quantities re-implemented from WSJT-X's lib/astro.f90 (the echo widths from lib/ephem.f90,
 // libration.f90 and astro0.f90) by tests/conformance/eme_oracle.py (its docstring cites the
@@ -240,7 +240,7 @@ TEST(EmeOracle, WsjtxAstronomicalData) {
       {"self width, ours (minute after)", "Hz/GHz", next_width, kWidthNextMinuteBarHzPerGhz},
       {"DX width, ours (minute after)", "Hz/GHz", next_dx_width, kWidthNextMinuteBarHzPerGhz},
   };
-  std::cout << oracle::format_summary("WSJT-X formulas on astropy vs azeltrack (issue 16 §1)", rows)
+  std::cout << oracle::format_summary("WSJT-X formulas on astropy vs azeltrack (docs/eme.md)", rows)
             << "cases " << cases.size() << " (seed " << seed << "), " << edge_cases
             << " within 0.01 deg of a Tsky bin edge left out of Tsky/Dgrd; WSJT-X's self width "
             << ref_width_per_ghz.mean() << " Hz/GHz on average, " << ref_width_per_ghz.max_abs()

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""Issue 16 §2 "Proof": `azeltrack moon-windows` against an independent computation with astropy
-(Debian python3-astropy, offline): both stations' airless Moon elevation every 5 minutes over the
-span, the common windows where both are above their limits (edges interpolated between samples),
-compared window by window: start and end within 60 s, the same number of windows. Three station
-pairs, 30 days each, from seeded dates.
+"""The Moon windows of docs/eme.md: `azeltrack moon-windows` against an independent computation with
+astropy (Debian python3-astropy, offline): both stations' airless Moon elevation every 5 minutes
+over the span, the common windows where both are above their limits (edges interpolated between
+samples), compared window by window: start and end within 60 s, the same number of windows. Three
+station pairs, 30 days each, from seeded dates.
 
 Usage: /usr/bin/python3 moon_windows_oracle.py AZELTRACK"""
 import json

@@ -1,7 +1,8 @@
-// Satellite look angles and passes against skyfield 1.45 + python-sgp4 (Debian, offline), issue 7
-// §4: seeded random instants and stations over the verification set's element sets (those that
-// propagate) plus an ISS set. Bars: az·cos(el) and el 1″, range 1 m, range rate 1 m/s, rise and
-// set within 1 s of skyfield's event times refined by bisection on its own elevation.
+// Satellite look angles and passes against skyfield 1.45 + python-sgp4 (Debian, offline;
+// docs/satellites.md "Accuracy, measured"): seeded random instants and stations over the
+// verification set's element sets (those that propagate) plus an ISS set. Bars: az·cos(el) and el
+// 1″, range 1 m, range rate 1 m/s, rise and set within 1 s of skyfield's event times refined by
+// bisection on its own elevation.
 //
 // The same UT1 on both sides: skyfield reports the UT1 − UTC it used, and it is passed as DUT1.
 

@@ -10,7 +10,7 @@ Usage:
       OUT:   id, kind, t_s, alt_deg, az_deg, dut1_s   kind: rise | culminate | set; t_s after from
 
 skyfield's geometric topocentric position (sat - topos).at(t), no light time, no refraction,
-no polar motion (the default timescale has none): the convention of azeltrack issue 7.
+no polar motion (the default timescale has none): the convention of azeltrack (docs/satellites.md).
 find_events() rise and set times are refined here by bisection on skyfield's own elevation,
 because its raw event times run up to ~12 s late; dut1_s is the UT1 - UTC skyfield used, so the
 caller can use the same UT1.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 16 §1: [export] azel_dat against a real `azeltrack serve` tracking the Moon: the file
+"""[export] azel_dat (docs/eme.md) against a real `azeltrack serve` tracking the Moon: the file
 appears within seconds in WSJT-X's four-line format, its Moon and Sun match the console's state,
 it is rewritten every second (never seen torn by a reader polling it), and a path that cannot be
 written is logged once while the daemon tracks on.

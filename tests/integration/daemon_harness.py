@@ -11,7 +11,7 @@ import urllib.error
 import urllib.request
 
 # The instant at which the daemons of the tests that scan the sky start (`serve --utc-start`), so
-# that what they find up is the same at any hour the tests run (issue 26: a test that scanned
+# that what they find up is the same at any hour the tests run (a test that scanned
 # "the first source up" passed or failed with the time of day). At FN06HE, 23:00 local time on the
 # day of a new Moon, inside tzdata's leap-second table: the Sun (−61°) and the Moon (−66°) are
 # down, Cassiopeia A, the catalogue's first source, stands at 58.5° (azimuth 312°).
@@ -133,7 +133,7 @@ def station_toml(web_port=0, rotctld_port=0, mount_rate_deg_s=None):
 
 
 def tle_with_epoch_now(name_line=b"ISS (ZARYA)"):
-    """An ISS element set whose epoch is now (its passes are the next hours', issue 7), as bytes
+    """An ISS element set whose epoch is now (its passes are the next hours'), as bytes
     under `name_line` (which may be any bytes: a test of a name that is not UTF-8)."""
     import datetime
 

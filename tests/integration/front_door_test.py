@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The station's one front door (issue 13 §1) against a real `azeltrack serve`: the console and a
+"""The station's one front door (docs/daemon.md) against a real `azeltrack serve`: the console and a
 PC program (rotctld) get the same answer for the same target on a 0–450° mount at 400° (taken),
 at 500° (refused as a bad value) and while a fault is latched (refused as "not now", the same
 reason in the console and in the daemon's record); every accepted motion command is listed with

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 15 §1 and §4 against a real `azeltrack serve`, gpsd and gpsfake on loopback (no GPS
+"""The GPS of docs/gps.md against a real `azeltrack serve`, gpsd and gpsfake on loopback (no GPS
 hardware): the daemon's `gps` state through every phase of a receiver's life, the station's
 position surveyed from a held fix and saved, and a jump while tracking refused.
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Issue 12 ("hardening") against a real `azeltrack serve` on the simulated antenna: every row of
-the issue that a client from outside can trigger, as a regression test written to fail on the code
-before the fixes. Each check is named by its row; a failure prints what was sent and what came
+"""docs/reliability.md "Hardening" against a real `azeltrack serve` on the simulated antenna: every
+row of its table that a client from outside can trigger, as a regression test written to fail on the
+code before the fixes. Each check is named by its row; a failure prints what was sent and what came
 back, and the daemon's log.
 
  1  a Host header that is not UTF-8 (b"\\xff", Latin-1 b"caf\\xe9"): 403 with a JSON body, alive

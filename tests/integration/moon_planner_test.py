@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 16 §2: GET /api/moon-windows against a real `azeltrack serve`: the same windows as the
+"""GET /api/moon-windows (docs/eme.md) against a real `azeltrack serve`: the same windows as the
 command line (both with ERFA's ephemeris), bad values refused by name, and the control loop
 answering while a 60-day search runs on the worker.
 

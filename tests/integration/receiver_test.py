@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Issue 16 §3: the receiver of pointing scans ([receiver]) on a real `azeltrack serve`: dB lines
-over UDP, and rtl_power's CSV lines through a FIFO, reach /api/state `receiver`; malformed lines
-are counted with their reason and change nothing else; a silence is counted once as missing; the
-daemon answers throughout. Usage: receiver_test.py AZELTRACK"""
+"""The receiver of pointing scans ([receiver], docs/calibration.md) on a real `azeltrack serve`: dB
+lines over UDP, and rtl_power's CSV lines through a FIFO, reach /api/state `receiver`; malformed
+lines are counted with their reason and change nothing else; a silence is counted once as missing;
+the daemon answers throughout. Usage: receiver_test.py AZELTRACK"""
 import os
 import shutil
 import signal

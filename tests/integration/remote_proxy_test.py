@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""docs/remote.md's recipe, run as it is (issue 27 §3): Debian's nginx terminates TLS (a
+"""docs/remote.md's recipe, run as it is: Debian's nginx terminates TLS (a
 throw-away certificate) in front of a real `azeltrack serve` on the loopback. Over HTTPS: a STOP
 without a login is refused (before the fix, any request through a local proxy counted as "this
 machine" and stopped the antenna without one); the login (cookie and CSRF token), the live view's

@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Issue 16 §3: a pointing scan run by `azeltrack serve` on its simulated antenna. This test is
-the receiver: it reads where the antenna points (/api/state) and sends the power a 2° Gaussian
-beam would see from a source that sits 0.4° of azimuth and −0.25° of elevation away from where
-the ephemeris puts it, as dB lines over UDP ([receiver] udp). The scan must find that offset,
-and its one-press apply must put it into [corrections] (saved). Refusals: no readings, a bad
-plan, a STOP mid-scan. Usage: scan_test.py AZELTRACK"""
+"""A pointing scan (docs/calibration.md) run by `azeltrack serve` on its simulated antenna. This
+test is the receiver: it reads where the antenna points (/api/state) and sends the power a 2°
+Gaussian beam would see from a source that sits 0.4° of azimuth and −0.25° of elevation away from
+where the ephemeris puts it, as dB lines over UDP ([receiver] udp). The scan must find that offset,
+and its one-press apply must put it into [corrections] (saved). Refusals: no readings, a bad plan, a
+STOP mid-scan. Usage: scan_test.py AZELTRACK"""
 import fcntl
 import math
 import os
@@ -106,8 +106,8 @@ try:
           abs(found.get("el_offset_deg", 9) - TRUE_EL) < 0.06, f"the source's offset found: {found}")
     check(abs(s["fit"]["width_xel_deg"] - BEAM) < 0.2, f"the beam's width: {s['fit']}")
 
-    # Issue 27 §8: an apply refused while another program holds the settings file (503 after the
-    # daemon's 5 s wait) keeps the result for the next apply.
+    # docs/reliability.md "Hardening, round three" row 8: an apply refused while another program
+    # holds the settings file (503 after the daemon's 5 s wait) keeps the result for the next apply.
     lock_fd = os.open(config + ".lock", os.O_RDWR | os.O_CREAT, 0o600)
     fcntl.flock(lock_fd, fcntl.LOCK_EX)
     try:
@@ -117,7 +117,8 @@ try:
         os.close(lock_fd)
     check(code == 503, f"an apply while the file is held: 503: {code} {body}")
     check(state()["scan"].get("found") == found, f"the result is kept: {state()['scan'].get('found')}")
-    # Issue 27 §9: an offset another program set meanwhile is what the found one comes off.
+    # docs/reliability.md "Hardening, round three" row 9: an offset another program set meanwhile is
+    # what the found one comes off.
     subprocess.run([BIN, "config", "set", "--config", config, "corrections.az_offset_deg", "1.0"],
                    check=True, stdout=subprocess.DEVNULL)
     code, body = http_json(base, "POST", "/api/scan/apply", {}, token, timeout=15)

@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
-"""The daemon's shutdown under valgrind's memcheck, with work in flight (issue 27 §5): a 16 MiB
-package upload (hashed and written on the worker: seconds under memcheck) and a burst of
-Software-page looks, then SIGTERM at 1.5, 3 and 4.5 s. The issue's report: memcheck found 26
-invalid reads in the worker's jobs on memory the console's destructor had freed, and a folder
-with a garbage name appeared in the daemon's working directory. (This bounded version did not
-catch that on the old code in three tries: its timing is the machine's. The deterministic
-regression test is SoftwareUpdates.QueuedWorkOutlivesTheObjectThatQueuedIt.) Now the daemon
-finishes its workers before destroying any part: no memcheck error (exit code 0, not valgrind's
-99), nothing new in its working directory, and the upload either stored whole or not at all.
-Three rounds, SIGTERM at a different moment of each. The bounded version in the test command;
+"""The daemon's shutdown under valgrind's memcheck, with work in flight (docs/reliability.md
+"Hardening, round three" row 5): a 16 MiB package upload (hashed and written on the worker: seconds
+under memcheck) and a burst of Software-page looks, then SIGTERM at 1.5, 3 and 4.5 s. The red-team
+report: memcheck found 26 invalid reads in the worker's jobs on memory the console's destructor had
+freed, and a folder with a garbage name appeared in the daemon's working directory. (This bounded
+version did not catch that on the old code in three tries: its timing is the machine's. The
+deterministic regression test is SoftwareUpdates.QueuedWorkOutlivesTheObjectThatQueuedIt.) Now the
+daemon finishes its workers before destroying any part: no memcheck error (exit code 0, not
+valgrind's 99), nothing new in its working directory, and the upload either stored whole or not at
+all. Three rounds, SIGTERM at a different moment of each. The bounded version in the test command;
 `scripts/test-memcheck` runs more rounds, and the integration suite against the ASan program.
 Usage: shutdown_memcheck_test.py AZELTRACK [ROUNDS]   (skipped, 77, without valgrind)"""
 import os

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Issue 16 §3: `[receiver] source = "sim"` on `azeltrack serve`'s simulated antenna, nothing else
-attached. The mount points wrong the way [sim.mount_errors] says (0.4° in azimuth, −0.25° in
-elevation); the simulated receiver hears the Sun, the Moon and the radio sources through that
-true beam. A scan of a source in the sky must find the error, and its apply must raise the power
-read while tracking the source to the scan's fitted peak. The daemon runs at a fixed instant
+"""`[receiver] source = "sim"` (docs/calibration.md) on `azeltrack serve`'s simulated antenna,
+nothing else attached. The mount points wrong the way [sim.mount_errors] says (0.4° in azimuth,
+−0.25° in elevation); the simulated receiver hears the Sun, the Moon and the radio sources through
+that true beam. A scan of a source in the sky must find the error, and its apply must raise the
+power read while tracking the source to the scan's fitted peak. The daemon runs at a fixed instant
 (daemon_harness.FIXED_UTC), so the source is the same at any hour. Usage: sim_receiver_test.py
 AZELTRACK"""
 import math

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The console's package upload (issue 17 §2) against a real `azeltrack serve` started as the
+"""The console's package upload (docs/packaging.md) against a real `azeltrack serve` started as the
 package's unit starts it (--update-inbox, --update-status): what crosses the HTTP transport.
 - curl's upload (`Expect: 100-continue`, then the body) of a real package built by dpkg-deb is
   left in the inbox byte for byte, its SHA-256 in the answer and in GET /api/software;
@@ -7,7 +7,7 @@ package's unit starts it (--update-inbox, --update-status): what crosses the HTT
   its body anyway still reads that answer; a logged-in one announcing more than 64 MiB is
   refused (413) from its head; nothing reaches the inbox;
 - one upload at a time, decided from the head: a second one while the first is still arriving
-  is refused (409) before its body is read (issue 27 §10);
+  is refused (409) before its body is read;
 - while a 48 MiB package is received, hashed and written (fsynced) the event loop keeps
   answering: the slowest GET /api/state during the upload is measured and must stay under 250 ms;
 - the helper's report (written here as the helper writes it) is shown, and a bad report is an
@@ -109,9 +109,9 @@ try:
     check(" 413 " in raw_head(head + f"Authorization: Bearer {TOKEN}\r\n"
                                      "Content-Length: 70000000\r\n\r\n"),
           "over 64 MiB with a login: 413 from the head")
-    # Issue 27 §10: one upload at a time, decided from the head. While one connection is still
-    # sending a large body, a second upload is answered 409 before its body is read; once the
-    # first connection is gone, the slot is free again.
+    # docs/reliability.md "Hardening, round three" row 10: one upload at a time, decided from the
+    # head. While one connection is still sending a large body, a second upload is answered 409
+    # before its body is read; once the first connection is gone, the slot is free again.
     first = socket.create_connection(("127.0.0.1", PORT), timeout=5)
     first.sendall((head + f"Authorization: Bearer {TOKEN}\r\nContent-Length: 50000000\r\n\r\n"
                    ).encode() + b"!<arch>\n" + b"x" * 65536)

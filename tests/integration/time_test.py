@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Issue 15 §2 and §4 on loopback, no clock changed: a GPS replayed by gpsfake at the current
+"""The clock of docs/time.md on loopback, no clock changed: a GPS replayed by gpsfake at the current
 time, gpsd writing its NTP shared memory, chronyd -x (no clock control) serving NTP from it on a
 free port, an NTP query, and the daemon's `time` state beside chronyc's own report.
 

@@ -127,15 +127,15 @@ try:
         check(code == 400 and r.get("field") == field, f"target {body}: {code} {r}")
     check(state()["mode"] == "MAN", "a refused target changed the mode")
 
-    # A spacecraft from a Horizons table (issue 7 §1): listed with its description and frequency;
-    # outside its table's span it has no position, and the daemon carries on.
+    # A spacecraft from a Horizons table (docs/satellites.md): listed with its description and
+    # frequency; outside its table's span it has no position, and the daemon carries on.
     crafts = [t for t in request("GET", "/api/targets")[1]["targets"] if t["kind"] == "spacecraft"]
     check(len(crafts) == 1 and crafts[0]["frequency_mhz"] == 8420.0 and "Horizons" in
           crafts[0]["description"] and crafts[0]["az_deg"] is None and "error" in crafts[0],
           f"spacecraft listed: {crafts}")
 
-    # A satellite (issue 7 §3): listed with its next pass, tracked as a target, pre-positioned
-    # to where its planned pass starts.
+    # A satellite (docs/satellites.md): listed with its next pass, tracked as a target,
+    # pre-positioned to where its planned pass starts.
     sats = request("GET", "/api/targets")[1]["satellites"]
     check(len(sats) == 1 and sats[0]["name"] == "ISS (ZARYA)" and "next_pass" in sats[0],
           f"satellites listed: {sats}")
@@ -224,7 +224,8 @@ try:
                          capture_output=True).returncode == 0, "the saved file is valid")
 
     # WebSocket: a same-origin handshake is accepted, a forged one refused; 20 clients get pushes.
-    # Views without a login share 16 places (issue 12); these 20 are a logged-in station's.
+    # Views without a login share 16 places (docs/reliability.md "Hardening" row 5); these 20 are a
+    # logged-in station's.
     def ws_handshake(origin, token=None):
         s = socket.create_connection(("127.0.0.1", PORT), timeout=5)
         key = base64.b64encode(os.urandom(16)).decode()

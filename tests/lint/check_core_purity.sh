@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fails if the portable core includes anything that ties it to an OS, a clock, threads, Boost or a
-# logger (DESIGN.md: "azt_core may use the C++ standard library and ERFA only"). The Swiss
+# logger (docs/architecture.md: azt_core may use the C++ standard library and ERFA only). The Swiss
 # Ephemeris adapter is the one allowed outside library, behind the Ephemeris interface.
 set -euo pipefail
 core=${1:?usage: check_core_purity.sh CORE_DIR}

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Fails if a room of the program includes a room above it, or a header by a bare name (issue 13
-# §3, docs/architecture.md). The rooms, from the ground up; each may include only rooms to its
+# Fails if a room of the program includes a room above it, or a header by a bare name
+# (docs/architecture.md). The rooms, from the ground up; each may include only rooms to its
 # left (and itself), the core and the platform libraries. main.cpp, at the root, may include any.
 # Usage: check_rooms.sh APP_DIR
 set -euo pipefail

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""clang-tidy on many translation units, each run only once per content (issue 26).
+"""clang-tidy on many translation units, each run only once per content (docs/building.md, "The
+caches").
 
 A unit's result is reused when nothing that determines it changed: the unit's compile command,
 clang-tidy's arguments, its binary and version, every .clang-tidy above the unit, and the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# packaging/chrony/azeltrack.conf (issue 15 §2) as chronyd itself reads it (`chronyd -p` parses
+# packaging/chrony/azeltrack.conf (docs/time.md) as chronyd itself reads it (`chronyd -p` parses
 # the file and prints the directives it understood, changing nothing): every directive accepted,
 # the GPS refclock on gpsd's shared memory unit 0, serving the LAN, holdover and the RTC; and the
 # PPS line left commented (chronyd refuses to start when /dev/pps0 is missing).

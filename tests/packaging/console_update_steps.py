@@ -1,4 +1,4 @@
-"""The update from the console in the upgrade test's root (issue 17 §2, issue 27 §1–2): the
+"""The update from the console in the upgrade test's root (docs/packaging.md): the
 signed packages, the ones the root helper must refuse, and the client phases that upload them
 through the daemon's API and run the helper as azeltrack-update.path would. Used by
 upgrade_test.py, on the host (the packages, the steps) and as its client in the daemon's network
@@ -125,7 +125,7 @@ TEST_KEY = "FC4892F01AAC91A16E33CF6BD790D49363F83F75"  # tests/data/software/sig
 
 def signed_packages(root, deb_n1):
     """N+1 signed with the tests' key (which the test trusts in the root as an operator trusts
-    their own), and N+1 signed with a key nobody trusts (issue 27 §1), made in the root's /tmp."""
+    their own), and N+1 signed with a key nobody trusts, made in the root's /tmp."""
     signing = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "software",
                            "signing")
     shutil.copy(os.path.join(signing, "test-key.asc"), root.path + "/tmp/test-key.asc")
@@ -151,11 +151,11 @@ def signed_packages(root, deb_n1):
 
 
 def update_from_console(root, debs, settings, checks):
-    """Issue 17 §2, the seed's update page: back on N (a downgrade by apt, settings kept), the
-    operator uploads N+1 on the console; the root helper (run here as azeltrack-update.path would
-    start it) checks and installs it; the daemon restarted (as the postinst would, with systemd)
-    runs N+1 and shows the helper's result; every setting is unchanged. Then the packages the
-    helper must refuse change nothing."""
+    """The seed's update page (docs/packaging.md): back on N (a downgrade by apt, settings kept),
+    the operator uploads N+1 on the console; the root helper (run here as azeltrack-update.path
+    would start it) checks and installs it; the daemon restarted (as the postinst would, with
+    systemd) runs N+1 and shows the helper's result; every setting is unchanged. Then the packages
+    the helper must refuse change nothing."""
     log("downgrading to N, to update it from the console")
     status, out = root.run(f"apt-get install -y -q --allow-downgrades {shlex.quote(debs[0])}")
     checks(status == 0, f"apt-get install N again: {status}\n{out[-2000:]}")

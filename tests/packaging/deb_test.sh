@@ -16,7 +16,7 @@ trap 'rm -rf "$tmp"' EXIT
 source "$src/tests/cli/lib.sh"
 
 # The project's release key (packaging/keys/azeltrack-release.asc), whose signed updates the
-# update helper installs (issue 27 §1).
+# update helper installs (docs/packaging.md, "Signed updates").
 release_key=5A33A3747E83ECC0CD2795FE2124FFC9F62C5588
 dpkg-deb -c "$deb" | awk '{ print $6 }' | sed 's|^\./|/|' >"$tmp/files"
 for f in /usr/bin/azeltrack /lib/systemd/system/azeltrack.service \

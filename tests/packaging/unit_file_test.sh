@@ -28,8 +28,8 @@ for dev in char-ttyUSB char-ttyACM char-gpiochip char-spi char-i2c; do
   grep -q "^DeviceAllow=$dev rw" "$unit" && ok || bad "device $dev not allowed"
 done
 
-# The update helper's units (issue 17 §2): the path unit watches the daemon's inbox, the service
-# runs the helper once; both verify, and the inbox is the one the daemon's ExecStart names.
+# The update helper's units (docs/packaging.md): the path unit watches the daemon's inbox, the
+# service runs the helper once; both verify, and the inbox is the one the daemon's ExecStart names.
 sed "s|/usr/libexec/azeltrack/azeltrack-update|$src/packaging/update/azeltrack-update|" \
   "$src/debian/azeltrack.azeltrack-update.service" >"$tmp/azeltrack-update.service"
 cp "$src/debian/azeltrack.azeltrack-update.path" "$tmp/azeltrack-update.path"

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The root update helper against what the daemon's user can leave in its inbox (issue 27 §2):
+# The root update helper against what the daemon's user can leave in its inbox
+# (docs/reliability.md "Hardening, round three" row 2):
 # a FIFO (it had held the helper in "checking" until its 20-minute start timeout), a folder (it
 # was refused but left there, so the path unit started the helper again and again), a symbolic
 # link, a hard link to a root-owned file, a file over 64 MiB, and bytes that are no package; and

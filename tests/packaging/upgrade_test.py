@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The package's life in a throw-away Debian 12 root (issue 17 §1–2): install version N, start the
-daemon as its unit would, change settings through the daemon's API, upgrade to N+1 without a
+"""The package's life in a throw-away Debian 12 root (docs/packaging.md): install version N, start
+the daemon as its unit would, change settings through the daemon's API, upgrade to N+1 without a
 terminal (`DEBIAN_FRONTEND=noninteractive apt-get install ./new.deb`), and find every setting
 unchanged and the daemon running again; then remove (the settings stay) and purge (the user, the
 unit and /var/lib/azeltrack go).

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The Debian 12 machine the system test boots (issue 28): a root file system made by mmdebstrap
-# from Debian's packages alone (systemd, udev, Debian's kernel and initramfs, chrony, the GPIO and
-# I2C tools, and what the azeltrack package depends on, so that `apt install ./azeltrack.deb`
-# needs no network). No prebuilt image is downloaded.
+# The Debian 12 machine the system test boots (docs/packaging.md): a root file system made by
+# mmdebstrap from Debian's packages alone (systemd, udev, Debian's kernel and initramfs, chrony, the
+# GPIO and I2C tools, and what the azeltrack package depends on, so that `apt install
+# ./azeltrack.deb` needs no network). No prebuilt image is downloaded.
 #
 # The kernel modules the board needs that Debian's kernel lacks (gpio-sim; i2c-stub on arm64)
 # are make_modules.sh's, built against this image's kernel; for another architecture than this

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""The Debian package on a real system (issue 28): a Debian 12 machine under qemu, made from
-Debian's packages by make_image.sh (cached outside the clone), boots with its own kernel, systemd
-and udev and no network; a payload disk carries the packages and the test (guest/run), which
+"""The Debian package on a real system (docs/packaging.md): a Debian 12 machine under qemu, made
+from Debian's packages by make_image.sh (cached outside the clone), boots with its own kernel,
+systemd and udev and no network; a payload disk carries the packages and the test (guest/run), which
 installs, runs, crashes, hangs, updates, reboots and purges azeltrack as a user would on a Pi and
 reports each step on the second serial port. This prints one line per step with its figure, the
 accelerator and the wall time, then "N passed, M failed".

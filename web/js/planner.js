@@ -1,4 +1,4 @@
-// The Moon planner (issue 16 §2, docs/eme.md): the common Moon windows with a DX station from
+// The Moon planner (docs/eme.md): the common Moon windows with a DX station from
 // GET /api/moon-windows, asked again as the operator types (after a pause) or presses Find.
 
 import { S } from './state.js';

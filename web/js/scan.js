@@ -1,4 +1,4 @@
-// The pointing-scan page (issue 16 §3, docs/calibration.md): the form that starts a scan
+// The pointing-scan page (docs/calibration.md): the form that starts a scan
 // (POST /api/scan), the receiver's state, the power read at each point plotted against the offset
 // as the points come in, the fitted Gaussian once the scan is fitted, the result, and the
 // one-press apply (POST /api/scan/apply). What is shown comes from /api/state's `scan` and

@@ -1,5 +1,5 @@
 #pragma once
-// The one station backend (issue 13 §2): the StationController, reading each axis through its
+// The one station backend: the StationController, reading each axis through its
 // sensor port and moving it through its drive port. The simulated antenna, the Linux devices and
 // a Hamlib rotator box differ only in the ports they hand it, so what the simulation measures is
 // what the station runs.

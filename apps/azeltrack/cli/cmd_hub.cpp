@@ -95,7 +95,7 @@ int run_encode(const HubEncodeOptions& o) {
 
 nlohmann::ordered_json frame_json(const proto::HubFrame& f) {
   const proto::HubReading& r = f.reading;
-  // An axis the hub has no position for (CRC-8 frames, issue 14) has no angle and says why.
+  // An axis a CRC-8 frame has no position for (docs/encoder-hub.md) has no angle and says why.
   const auto angle = [](uint16_t raw, uint8_t bits, proto::HubAxisError error) {
     return error == proto::HubAxisError::None
                ? nlohmann::ordered_json(proto::hub_raw_to_deg(raw, bits))

@@ -1,4 +1,4 @@
-// `azeltrack moon-windows` (issue 16 §2): the common Moon windows of two stations, with the best
+// `azeltrack moon-windows` (docs/eme.md): the common Moon windows of two stations, with the best
 // minute's Dgrd, Tsky and Dpol and the Sun's separation, for planning a sked.
 
 #include <iomanip>

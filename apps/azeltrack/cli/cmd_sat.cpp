@@ -1,5 +1,5 @@
-// `azeltrack sat` and `azeltrack passes` (issue 7 §3): a satellite from an element-set file, where
-// it is now (or at --at) with its Doppler, and its passes over a horizon mask.
+// `azeltrack sat` and `azeltrack passes` (docs/satellites.md): a satellite from an element-set
+// file, where it is now (or at --at) with its Doppler, and its passes over a horizon mask.
 #include <cmath>
 #include <iomanip>
 #include <iostream>

@@ -1,5 +1,5 @@
 // `azeltrack seq-sim`: the T/R sequencer of the configuration run in virtual time, so its timing
-// can be checked from outside (issue 6 §3). Prints every output transition.
+// can be checked from outside (docs/hardware.md). Prints every output transition.
 #include <iomanip>
 #include <iostream>
 #include <memory>

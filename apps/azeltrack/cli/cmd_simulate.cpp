@@ -86,7 +86,7 @@ sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double
 }
 
 /// The next pass of --sat after --from, flown by the real controller on the simulated plant
-/// (issue 7 §3): the mount is the configuration's travel and plant rates.
+/// (docs/satellites.md): the mount is the configuration's travel and plant rates.
 int run_pass(const SimConfig& c, const SimulateOptions& o) {
   if (o.tle.empty() || o.sat.empty()) throw UsageError("pass needs --tle FILE and --sat NAME");
   const SatelliteCatalogue cat = SatelliteCatalogue::load(o.tle);

@@ -1,6 +1,6 @@
 #pragma once
-// `azeltrack simulate --scenario calibrate | scan` (issue 16 §3): pointing calibration on the
-// simulated mount, whose beam points wrong as [sim.mount_errors] says, read by the simulated
+// `azeltrack simulate --scenario calibrate | scan` (docs/calibration.md): pointing calibration on
+// the simulated mount, whose beam points wrong as [sim.mount_errors] says, read by the simulated
 // receiver of [sim.receiver] (docs/calibration.md).
 
 #include <string>

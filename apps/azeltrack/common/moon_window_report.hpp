@@ -1,5 +1,5 @@
 #pragma once
-// One common Moon window as JSON (issue 16 §2), for `azeltrack moon-windows --json` and the
+// One common Moon window as JSON (docs/eme.md), for `azeltrack moon-windows --json` and the
 // console's planner alike: start, end, duration_s, best, dgrd_db, tsky_k, dpol_deg, sun_sep_deg,
 // el_deg, dx_el_deg.
 

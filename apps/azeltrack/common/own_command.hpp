@@ -1,5 +1,5 @@
 #pragma once
-// How to name this program in a hint the operator copies (issue 17 §4): a hint must work as
+// How to name this program in a hint the operator copies: a hint must work as
 // printed, from any directory, whether azeltrack was installed or built in a checkout.
 
 #include <string>

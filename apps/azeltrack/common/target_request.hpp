@@ -1,5 +1,5 @@
 #pragma once
-// What a source asks the antenna to point at, parsed once (issue 13 §1): the console's body, a
+// What a source asks the antenna to point at, parsed once (docs/daemon.md): the console's body, a
 // PC program's position and the configuration's start target all become one of these, and only
 // the station's front door (station_commands.hpp) decides what it means for the modes.
 

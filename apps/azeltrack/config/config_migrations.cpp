@@ -59,7 +59,7 @@ void carry_key(toml::table& root, toml::table& plant, const std::string& axis, c
 }
 
 /// 1 -> 2: the mount's rate and encoder resolution lived in the simulator's tables ([sim.az]),
-/// and the real station's controller read them from there (issue 13 §2). They move to
+/// and the real station's controller read them from there. They move to
 /// [mount.az] / [mount.el]; the motor model the controller also uses (time constant, stiction,
 /// backlash) is copied there too, and stays in [sim.*] as the simulated plant's, so a migrated
 /// file drives the same controller and the same simulation.

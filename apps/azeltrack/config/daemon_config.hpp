@@ -85,12 +85,12 @@ struct GpioConfig {
   [[nodiscard]] bool any_line() const { return !lines().empty(); }
 };
 
-/// [satellites]: the element-set catalogue the daemon tracks satellites from (issue 7).
+/// [satellites]: the element-set catalogue the daemon tracks satellites from (docs/satellites.md).
 struct SatellitesConfig {
   std::string file;        ///< TLE or OMM; relative to the configuration's directory; empty: none
   std::string mask = "0";  ///< horizon: one elevation, or "AZ:MIN_EL,…" sectors
   /// The satellite antenna's half-power beamwidth: a moment of a pass beyond half of it from the
-  /// satellite counts as lost (the pass planner's loss, issue 16 §4).
+  /// satellite counts as lost (the pass planner's loss, docs/satellites.md).
   double beamwidth_deg = 20.0;
 };
 

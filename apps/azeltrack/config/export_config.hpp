@@ -1,5 +1,5 @@
 #pragma once
-// [export] (issue 16 §1): files azeltrack writes for other programs. `azel_dat`: WSJT-X's
+// [export] (docs/eme.md): files azeltrack writes for other programs. `azel_dat`: WSJT-X's
 // azel.dat (eme/azel_dat.hpp), rewritten every second; "" (the default) writes none.
 
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// [gps] (issue 15 §1): the receiver through gpsd, and whether the station's position comes from
+// [gps] (docs/gps.md): the receiver through gpsd, and whether the station's position comes from
 // it. The station's position in use stays [station] in the file: a surveyed position is saved
 // there (atomically, like every save), so a restart without GPS keeps it.
 

@@ -83,7 +83,7 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   auto cal = control::PotCalibration::make((*p)[0], (*p)[1], (*p)[2], (*p)[3]);
   if (!cal) s.fail("pot_calibration", cal.error().message);
   a.pot.calibration = *cal;
-  // Checked before narrowing: 4294967297 must be an error, never 1 (issue 12 row 9).
+  // Checked before narrowing: 4294967297 must be an error, never 1.
   const std::int64_t max_counts = std::int64_t{1} << a.pot.adc.bits;
   if (const auto lo = s.integer("open_below_counts")) {
     if (*lo < 0 || *lo > max_counts) s.fail("open_below_counts", "must be 0 to the ADC's range");

@@ -1,6 +1,6 @@
 #pragma once
 // [hardware.az] / [hardware.el]: how each axis of the `hardware` backend is driven and read
-// (issue 6: every drive and sensor of the seeds, chosen per axis; docs/hardware.md).
+// (every drive and sensor of the seeds, chosen per axis; docs/hardware.md).
 
 #include <cstdint>
 #include <optional>

@@ -1,6 +1,6 @@
 #pragma once
 // [mount.az] / [mount.el]: what the controller must know about the real antenna's axes, whatever
-// drives them (issue 13 §2). The simulated plant ([sim.az], [sim.el]) is a model of this mount:
+// drives them. The simulated plant ([sim.az], [sim.el]) is a model of this mount:
 // it turns at the mount's rate and reads the mount's encoders; only its imperfections are its own.
 
 #include <cstdint>

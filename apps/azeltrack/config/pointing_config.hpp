@@ -11,7 +11,7 @@ class ConfigSection;
 /// aw_deg and sag_deg (each optional, default 0, within ±10°). Throws UsageError naming the key.
 calibration::PointingTerms pointing_terms_from(const ConfigSection& s);
 
-/// [pointing]: the station's fitted pointing model (issue 16 §3, docs/calibration.md), applied
+/// [pointing]: the station's fitted pointing model (docs/calibration.md), applied
 /// to every reading after the encoder offset.
 calibration::PointingTerms station_pointing_from(const ConfigFile& file);
 

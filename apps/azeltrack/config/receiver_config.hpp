@@ -1,9 +1,9 @@
 #pragma once
-// [receiver] (issue 16 §3): where the power readings of pointing scans come from. `rtl_power`:
-// its CSV lines from a FIFO or a file it appends to (`rtl_power -f … -i 1 - > PATH`; one line,
-// one reading: a range that fits one hop); `udp`: datagrams of one dB value per line from any SDR
-// program; `sim`: the simulated receiver ([sim.receiver]) through the simulated antenna's true
-// beam (the `sim` backend only); `none`: no receiver (the default).
+// [receiver] (docs/calibration.md): where the power readings of pointing scans come from.
+// `rtl_power`: its CSV lines from a FIFO or a file it appends to (`rtl_power -f … -i 1 - > PATH`;
+// one line, one reading: a range that fits one hop); `udp`: datagrams of one dB value per line from
+// any SDR program; `sim`: the simulated receiver ([sim.receiver]) through the simulated antenna's
+// true beam (the `sim` backend only); `none`: no receiver (the default).
 
 #include <string>
 

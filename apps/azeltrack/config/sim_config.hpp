@@ -24,8 +24,8 @@ struct SimHubConfig {
   std::string elf;  ///< [sim] hub_firmware; empty: the build's or the package's ELF
 };
 
-/// [sim.receiver]: the simulated receiver of pointing scans (issue 16 §3): its beam, noise and
-/// reading rate, the dish (for the radio sources' antenna temperatures at the catalogue's flux
+/// [sim.receiver]: the simulated receiver of pointing scans (docs/calibration.md): its beam, noise
+/// and reading rate, the dish (for the radio sources' antenna temperatures at the catalogue's flux
 /// for flux_mhz), and the Sun's and Moon's brightness temperatures at the band. The defaults are
 /// a 10 m dish at 23 cm: a 1.6° beam, the quiet Sun at about 170 000 K, the Moon at 220 K.
 struct SimReceiverConfig {

@@ -1,5 +1,5 @@
 #pragma once
-// What the station's controller knows, read from the configuration (issue 13 §2): the mount
+// What the station's controller knows, read from the configuration: the mount
 // ([mount.az], [mount.el]), the controller ([control]), the travel ([geometry]) and the pointing
 // corrections ([corrections]), as control::StationSetup. Every backend, the simulated one
 // included, runs its controller with this alone.

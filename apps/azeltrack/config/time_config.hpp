@@ -1,5 +1,5 @@
 #pragma once
-// [time] (issue 15 §2): how the daemon reads chrony, and whether the console may set chrony's
+// [time] (docs/time.md): how the daemon reads chrony, and whether the console may set chrony's
 // upstream NTP servers (the seed's "NTP Client Server"). Time itself is chrony's job
 // (packaging/chrony/azeltrack.conf); azeltrack watches it and says when it cannot be trusted.
 

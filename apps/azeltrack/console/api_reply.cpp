@@ -6,7 +6,7 @@ using json = nlohmann::json;
 
 linux_os::HttpReply json_reply(unsigned status, const json& body) {
   // Replace, never throw: whatever text reached the body (a header echoed in a message, a name
-  // from a file), the answer is sent (issue 12 rows 1, 2 and 12).
+  // from a file), the answer is sent (docs/reliability.md "Hardening" rows 1, 2, 12).
   return linux_os::HttpReply{
       status, "application/json", body.dump(-1, ' ', false, json::error_handler_t::replace), {}};
 }

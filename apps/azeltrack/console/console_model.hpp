@@ -55,7 +55,7 @@ class ConsoleModel {
   /// finishes off the event loop), always on the loop's thread.
   virtual void act(const std::string& action, const nlohmann::json& body, const std::string& source,
                    ActDone done) = 0;
-  /// GET /api/moon-windows?QUERY (issue 16 §2): the common Moon windows with a DX station, which
+  /// GET /api/moon-windows?QUERY (docs/eme.md): the common Moon windows with a DX station, which
   /// take a fraction of a second to find, so answered later (off the loop); the same contract as
   /// act(). A model without a planner refuses with 404.
   virtual void moon_windows(const std::string& query, ActDone done) {

@@ -104,9 +104,9 @@ void DaemonConsole::act_scan_apply(const json& /*body*/, ActDone done) {
   if (scan_apply_pending_) throw ApiError(409, "", "the scan result is being applied already");
   const ScanOffsets found = *p_.scanner->found();
   // The beam was on the source where the readings said source + found: take it off the value in
-  // the file now, not this process's copy, which `azeltrack config set` may have changed since
-  // (issue 27 §9). The result stays applicable until the save is done: a save refused while
-  // another program holds the file must not lose minutes of scanning (§8).
+  // the file now, not this process's copy, which `azeltrack config set` may have changed since.
+  // The result stays applicable until the save is done: a save refused while another program
+  // holds the file must not lose minutes of scanning.
   scan_apply_pending_ = true;
   save(
       "az_offset_deg",

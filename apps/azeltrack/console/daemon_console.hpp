@@ -51,15 +51,15 @@ struct ConsoleParts {
   const RecentEvents* events = nullptr;   ///< refusals given to any source, for the state
   const RecentEvents* motions = nullptr;  ///< accepted motion commands and their sources
   std::function<void(const std::string&)> log = [](const std::string&) {};
-  /// The GPS receiver's state (issue 15; null when not given).
+  /// The GPS receiver's state (null when not given).
   std::function<nlohmann::json()> gps;
-  /// The station's clock (issue 15 §2; null when not given: `time` is null).
+  /// The station's clock (null when not given: `time` is null).
   ClockWatch* clock = nullptr;
-  /// The network links (issue 15 §3; null when not given: `network` is null).
+  /// The network links (null when not given: `network` is null).
   std::function<nlohmann::json()> network;
-  /// The receiver of pointing scans (issue 16 §3; null when not given: `receiver` is off).
+  /// The receiver of pointing scans (null when not given: `receiver` is off).
   std::function<nlohmann::json()> receiver;
-  /// Pointing scans (issue 16 §3; null: none here, `scan` is idle and scans are refused).
+  /// Pointing scans (null: none here, `scan` is idle and scans are refused).
   PointingScanner* scanner = nullptr;
   /// POST /api/restart: the daemon stops the motors and starts again (null: refused, 409).
   std::function<void(const std::string& who)> restart;
@@ -108,7 +108,7 @@ class DaemonConsole final : public ConsoleModel {
   /// The console's target body, parsed into the one request type (a malformed field: ApiError).
   static TargetRequest target_request(const nlohmann::json& body);
   nlohmann::json act_target(const nlohmann::json& body, const std::string& source);
-  /// POST /api/scan: points at the source and starts a pointing scan (issue 16 §3).
+  /// POST /api/scan: points at the source and starts a pointing scan (docs/calibration.md).
   nlohmann::json act_scan(const nlohmann::json& body, const std::string& source);
   /// POST /api/hardware/direction-test {"axis"}: answered when the test ends (about 1.6 s).
   void act_direction_test(const nlohmann::json& body, const std::string& source, ActDone done);

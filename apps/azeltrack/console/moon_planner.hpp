@@ -1,5 +1,5 @@
 #pragma once
-// The console's Moon planner (issue 16 §2): GET /api/moon-windows, the common Moon windows with
+// The console's Moon planner (docs/eme.md): GET /api/moon-windows, the common Moon windows with
 // a DX station. Finding thirty days of them takes a fraction of a second, so it runs on the
 // worker thread, one at a time (a second request meanwhile is told to wait), with an ephemeris
 // of its own: ERFA's, whose functions share no state with the loop's (libswe's global state

@@ -1,5 +1,5 @@
 #pragma once
-// A package upload as it arrives (issue 27 §10): the transport hands each chunk of the body to
+// A package upload as it arrives: the transport hands each chunk of the body to
 // this sink on the loop; the worker appends it to an unnamed file in the update inbox and adds it
 // to the SHA-256, and only then is the next chunk read. So one chunk at a time is in memory, not
 // the package, and nothing on the loop touches the disk or hashes. An upload cut short or

@@ -1,6 +1,6 @@
 #pragma once
-// The console's Software page (issue 17 §2, the AnTrack-Pro manual's "Software Updating"): this
-// program's version, a package uploaded by the logged-in operator handed to the root update
+// The console's Software page (docs/packaging.md, the AnTrack-Pro manual's "Software Updating"):
+// this program's version, a package uploaded by the logged-in operator handed to the root update
 // helper, and what the helper reports. The daemon never runs as root and never installs
 // anything: it checks the upload is a Debian archive at all, writes it to the inbox (its own
 // folder), and reads the helper's status file. The helper (packaging/azeltrack-update, started
@@ -63,7 +63,7 @@ class SoftwareUpdates {
     bool pending = false;  ///< request.deb waits for the helper
   };
   // The worker's halves are static and get what they read by value: a job may still run while
-  // this object is destroyed at shutdown (issue 27 §5), so it never reaches `this`.
+  // this object is destroyed at shutdown, so it never reaches `this`.
   [[nodiscard]] static Look look(const Config& config);  // worker thread
   [[nodiscard]] static std::string request_path(const Config& config);
   [[nodiscard]] static bool enabled(const Config& config) { return !config.inbox_dir.empty(); }

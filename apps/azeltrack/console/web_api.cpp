@@ -219,7 +219,7 @@ bool WebApi::is_local_stop(const linux_os::HttpRequest& request) {
   // STOP only stops, and a stop must never wait for a password: from this machine (the touch
   // panel beside the controller, a script on it) it needs no login, as rotctld's `S` on the
   // loopback needs none. From the LAN it needs one, like every other action, and so does a
-  // request a local reverse proxy (nginx, Caddy) passes on from anywhere (issue 27 §3).
+  // request a local reverse proxy (nginx, Caddy) passes on from anywhere (docs/remote.md).
   if (request.path != "/api/stop" || request.method != "POST" || request.forwarded) return false;
   const std::string& c = request.client;
   return c == "::1" || c.rfind("127.", 0) == 0 || c.rfind("::ffff:127.", 0) == 0;
@@ -254,7 +254,7 @@ void WebApi::login(const linux_os::HttpRequest& request, const Respond& respond)
     respond(r);
     return;
   }
-  // Argon2id takes ~0.1 s and 64 MiB: on the worker, never on the loop (issue 12 row 4).
+  // Argon2id takes ~0.1 s and 64 MiB: on the worker, never on the loop.
   auto matched = std::make_shared<bool>(false);
   offload_(
       [matched, hash = auth_.password_hash(), password = body["password"].get<std::string>()] {

@@ -41,13 +41,13 @@ class WebApi {
   /// loop (a login's password check, a save). Never throws. The request is taken by value: a
   /// package upload's body moves on to the software updates, never copied on the loop.
   void handle(linux_os::HttpRequest request, const Respond& respond);
-  /// GET /api/software and POST /api/software/update (issue 17 §2); without, both are 404.
+  /// GET /api/software and POST /api/software/update (docs/packaging.md); without, both are 404.
   void serve_software(SoftwareUpdates& software) { software_ = &software; }
   /// What body the request whose head this is may send: a package upload from a logged-in
   /// console may be large; one without a login is answered 401 from its head; everything else
   /// is small (HttpServer::kMaxBodyBytes). One upload at a time, decided here from the head:
   /// while another is being received or stored, the next is answered 409 before its body is read
-  /// (issue 27 §10: eight 60 MiB uploads had all been read into memory first).
+  /// (docs/reliability.md: eight 60 MiB uploads had all been read into memory first).
   [[nodiscard]] linux_os::HttpServer::BodyAllowance body_allowance(
       const linux_os::HttpRequest& head);
   /// The WebSocket upgrade: nullopt accepts it.

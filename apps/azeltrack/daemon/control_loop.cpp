@@ -1,4 +1,4 @@
-// The daemon's control loop: one thread, one Asio loop (DESIGN.md). The tick runs on a timer
+// The daemon's control loop: one thread, one Asio loop (docs/daemon.md). The tick runs on a timer
 // re-armed at absolute deadlines; SIGINT, SIGTERM and SIGHUP stop the motors and leave cleanly; an
 // exception that escapes a handler stops the motors and releases the transmitter before exit 1.
 #include <spdlog/spdlog.h>

@@ -1,6 +1,6 @@
 #pragma once
-// `azeltrack serve`: one thread, one Boost.Asio io_context (DESIGN.md). The control tick runs on
-// a steady_timer re-armed at absolute deadlines; the protocol servers and the web console share
+// `azeltrack serve`: one thread, one Boost.Asio io_context (docs/daemon.md). The control tick runs
+// on a steady_timer re-armed at absolute deadlines; the protocol servers and the web console share
 // the loop; SIGINT, SIGTERM and SIGHUP stop the motors and leave cleanly.
 
 #include <functional>

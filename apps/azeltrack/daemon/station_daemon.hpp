@@ -49,7 +49,7 @@ class StationDaemon {
   /// a device or the start target cannot be had.
   StationDaemon(ConfigStore& store, const DaemonOptions& options);
   /// Finishes and joins both workers before any part is destroyed: a job still queued at a
-  /// SIGTERM can then reach nothing that is gone (issue 27 §5), whatever it captured.
+  /// SIGTERM can then reach nothing that is gone, whatever it captured.
   ~StationDaemon();
   StationDaemon(const StationDaemon&) = delete;
   StationDaemon& operator=(const StationDaemon&) = delete;

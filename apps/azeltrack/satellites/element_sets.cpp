@@ -130,7 +130,7 @@ ElementSetFile parse_element_sets(std::string_view text, const std::string& sour
     file.errors.push_back(from_source(source_name, "no element sets in it"));
   }
   // Names and messages reach JSON and the log: a Latin-1 name ("ISS Z\xE9RYA") must not throw
-  // there (issue 12 row 2), so every text leaves here as valid UTF-8.
+  // there (docs/reliability.md "Hardening" row 2), so every text leaves here as valid UTF-8.
   for (auto& set : file.sets) set.name = valid_utf8(set.name);
   for (auto& error : file.errors) error = valid_utf8(error);
   return file;

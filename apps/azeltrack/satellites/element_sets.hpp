@@ -1,6 +1,6 @@
 #pragma once
-// Element-set files as CelesTrak and Space-Track serve them (issue 7 §1): CCSDS OMM in XML, JSON,
-// KVN and CSV, or classic TLEs, read into the one structure the propagator takes.
+// Element-set files as CelesTrak and Space-Track serve them (docs/satellites.md): CCSDS OMM in XML,
+// JSON, KVN and CSV, or classic TLEs, read into the one structure the propagator takes.
 //
 // OMM: CCSDS 502.0-B-3 "Orbit Data Messages" (the OMM keywords, KVN and NDM/XML), and CelesTrak's
 // "A New Way to Obtain GP Data" (https://celestrak.org/NORAD/documentation/gp-data-formats.php)

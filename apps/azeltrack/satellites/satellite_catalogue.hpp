@@ -1,8 +1,8 @@
 #pragma once
-// Satellites for the command line and the daemon (issue 7): a catalogue of element sets (TLE or
-// OMM) with their SGP4 propagators. Where each one is from a station, and its passes, is the
-// core's (azt/orbit/satellite.hpp). A satellite whose elements do not initialise is an error for
-// that satellite alone.
+// Satellites for the command line and the daemon (docs/satellites.md): a catalogue of element sets
+// (TLE or OMM) with their SGP4 propagators. Where each one is from a station, and its passes, is
+// the core's (azt/orbit/satellite.hpp). A satellite whose elements do not initialise is an error
+// for that satellite alone.
 
 #include <optional>
 #include <string>

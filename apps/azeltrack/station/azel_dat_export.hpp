@@ -1,5 +1,5 @@
 #pragma once
-// azel.dat for WSJT-X's neighbours (issue 16 §1, [export] azel_dat): once a second the Moon, the
+// azel.dat for WSJT-X's neighbours (docs/eme.md, [export] azel_dat): once a second the Moon, the
 // Sun, the tracked radio source and the echo Doppler at the station's band, in WSJT-X's format
 // (eme/azel_dat.hpp). Computed on the loop (a sky snapshot is well under a millisecond), written
 // off it (publish_file: renamed into place, never torn, no fsync a second). Elevations are

@@ -1,5 +1,5 @@
 #pragma once
-// The station's clock, watched (issue 15 §2): every [time] poll_s a look at chrony, the kernel
+// The station's clock, watched (docs/time.md): every [time] poll_s a look at chrony, the kernel
 // and the RTC runs off the loop (chronyc may take seconds), and the core's assess_clock judges
 // it. The console shows the verdict as `time` and a banner when the clock cannot be trusted;
 // tracking carries on either way. With [time] manage_chrony the console's NTP servers are

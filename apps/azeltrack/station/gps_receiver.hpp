@@ -1,5 +1,5 @@
 #pragma once
-// The station's GPS receiver (issue 15 §1): gpsd through the Linux client, what it says kept by
+// The station's GPS receiver (docs/gps.md): gpsd through the Linux client, what it says kept by
 // the core's GpsMonitor (for the console's `gps` state) and SiteSurvey (the station's position
 // from a held fix). Everything runs on the daemon's loop; nothing here waits for gpsd. With
 // [gps] use_position, a finished survey (timed by the receiver's clock) is offered to `adopt`

@@ -1,6 +1,6 @@
 #pragma once
-// The antenna as the daemon drives it: a backend behind the station's hard inputs (issue 6 §2):
-// the E-stop, the travel-end switches, and the T/R sequencer's motion hold.
+// The antenna as the daemon drives it: a backend behind the station's hard inputs
+// (docs/hardware.md): the E-stop, the travel-end switches, and the T/R sequencer's motion hold.
 //
 // E-stop: the input going active stops the drives, puts the mode to STOP, releases the PTT chain
 // and latches. The latch is written to a file, so a restart (or a crash) with the button released

@@ -1,5 +1,5 @@
 #pragma once
-// The station's network links (issue 15 §3), for the console's Ethernet and WiFi icons and its
+// The station's network links (docs/network.md), for the console's Ethernet and WiFi icons and its
 // Network page: every few seconds the interfaces are read off the loop (sysfs, getifaddrs,
 // /proc/net/wireless, and NetworkManager over D-Bus for the SSID where it runs); a link that
 // goes up or down is logged once.

@@ -1,6 +1,6 @@
 #pragma once
-// A pointing scan run by the daemon (issue 16 §3): while the station tracks the scanned source,
-// the demand is the source plus the scan's offset (calibration::ScanSession, the logic
+// A pointing scan run by the daemon (docs/calibration.md): while the station tracks the scanned
+// source, the demand is the source plus the scan's offset (calibration::ScanSession, the logic
 // `azeltrack simulate --scenario calibrate` runs), the antenna's state and the receiver's
 // readings ([receiver], station/power_receiver.hpp) go to the session each tick, and at the end
 // the scan is fitted. The offsets it finds are in the Offset screen's terms, for the console's

@@ -56,7 +56,7 @@ PowerReceiver::PowerReceiver(boost::asio::io_context& io, const ReceiverConfig& 
           return std::string{};  // no reply
         });
     if (!server) throw UsageError("[receiver]: " + server.error().message);
-    // A cut datagram's last line would read as a false power (issue 27 §6): none of it counts.
+    // A cut datagram's last line would read as a false power: none of it counts.
     server.value()->on_oversized([this](std::size_t bytes, const std::string& /*client*/) {
       feed_.malformed(now_s_(), "a datagram of " + std::to_string(bytes) + " bytes is over " +
                                     std::to_string(linux_os::UdpDatagramServer::kMaxDatagramBytes) +

@@ -1,6 +1,6 @@
 #pragma once
-// The receiver whose power the pointing scans read (issue 16 §3, [receiver]): rtl_power's CSV
-// lines from a FIFO or file (linux_os::LineFeed) or dB lines in UDP datagrams, each reading or
+// The receiver whose power the pointing scans read (docs/calibration.md, [receiver]): rtl_power's
+// CSV lines from a FIFO or file (linux_os::LineFeed) or dB lines in UDP datagrams, each reading or
 // malformed line handed to the core's PowerFeed, which counts good, malformed and missing
 // readings; or, with `sim`, the simulated receiver read at its rate on the control tick.
 // Everything on the daemon's loop; nothing waits for the receiver.

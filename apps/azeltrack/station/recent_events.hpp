@@ -1,5 +1,5 @@
 #pragma once
-// What the operator should know happened lately, for the console (issue 12 §7): every refusal a
+// What the operator should know happened lately, for the console: every refusal a
 // client was given (a target below the elevation limit, a move while a fault is latched, a
 // position asked for while the sensors are stale) and every change of who commands the antenna.
 // A client repeating the same refused command makes one entry with a count, not a flood.

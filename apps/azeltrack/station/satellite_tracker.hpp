@@ -1,5 +1,5 @@
 #pragma once
-// A satellite as the daemon's target (issue 7 §2, §3): the next pass is planned as a whole at
+// A satellite as the daemon's target (docs/satellites.md): the next pass is planned as a whole at
 // selection (or after the previous LOS), the antenna is pre-positioned to where the plan starts,
 // and through the pass the planned mount position is the demand (never re-planned to the nearest
 // side mid-pass). The catalogue file is re-read when it changes (replaced atomically by whatever

@@ -1,7 +1,7 @@
 #pragma once
-// `[receiver] source = "sim"` (issue 16 §3): the daemon's simulated antenna with a receiver, so a
-// pointing scan works on `scripts/run` with nothing else attached. A reading is what the
-// simulated receiver ([sim.receiver]) hears through the plants' true beam: their shaft angles
+// `[receiver] source = "sim"` (docs/calibration.md): the daemon's simulated antenna with a
+// receiver, so a pointing scan works on `scripts/run` with nothing else attached. A reading is what
+// the simulated receiver ([sim.receiver]) hears through the plants' true beam: their shaft angles
 // through the mount's errors ([sim.mount_errors]), which the station only knows through its
 // encoders and corrections. The sources' places are observed at whole seconds and interpolated
 // between them (a source moves at most 0.004°/s), so a reading costs no ephemeris work.

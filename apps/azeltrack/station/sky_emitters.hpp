@@ -1,6 +1,6 @@
 #pragma once
-// What the simulated receiver of pointing scans hears (issue 16 §3): the Sun and the Moon as
-// discs of their brightness temperature, and every catalogue radio source with a flux at the
+// What the simulated receiver of pointing scans hears (docs/calibration.md): the Sun and the Moon
+// as discs of their brightness temperature, and every catalogue radio source with a flux at the
 // band as a point. `simulate --scenario calibrate` and the daemon's `[receiver] source = "sim"`
 // use the same list.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The one front door to the mode controller (issue 13 §1). The console, every PC-program
+// The one front door to the mode controller (docs/daemon.md). The console, every PC-program
 // protocol and the configuration's start target reach the modes only through here, so they meet
 // the same rules: the travel from [geometry], the same refusal while a fault is latched (each
 // protocol answers it in its own error form, the console as 409, with the same reason), and a

@@ -16,7 +16,7 @@ StationService::StationService(StationCommands& commands, const control::ModeCon
 
 std::optional<proto::PositionReport> StationService::position() const {
   auto here = antenna_.position(now_());
-  // The client gets an error (never a cached angle); the operator sees why (issue 12 §7).
+  // The client gets an error (never a cached angle); the operator sees why.
   if (!here && log_)
     log_("a PC program: position asked for while unknown (no fresh sensor reading)");
   return here;

@@ -41,7 +41,7 @@ class FdGuard {
 Result<bool> write_durable_temp(const std::string& temp, std::string_view contents, mode_t mode) {
   ::unlink(temp.c_str());  // a stale temp from a killed earlier run with a recycled pid
   // 0600 while it is being written: a temp left by a kill -9 holds the whole file (the password
-  // hash among it) and must not be readable by others even if the file itself is (issue 12).
+  // hash among it) and must not be readable by others even if the file itself is.
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0600);
   if (fd < 0) return step_error("create temp file", temp, errno);
   FdGuard guard(fd);
@@ -133,7 +133,7 @@ Result<bool> write_file_atomically(const std::string& path, std::string_view con
 Result<bool> publish_file(const std::string& path, std::string_view contents) {
   if (path.empty()) return fail("publish_file: empty path");
   // A fixed mode, never the old file's: stat() of a planted symlink would have copied its
-  // target's bits, setuid included (issue 27 §4). open() takes the umask off 0644, and rename()
+  // target's bits, setuid included. open() takes the umask off 0644, and rename()
   // replaces a link at `path` itself, never its target.
   const std::string temp = path + ".tmp." + std::to_string(::getpid());
   ::unlink(temp.c_str());

@@ -14,7 +14,7 @@
 namespace azt::linux_os {
 
 Result<FileLock> FileLock::acquire(const std::string& lock_path, double wait_s) {
-  // 0600: the lock file says nothing, but nobody else needs to open it (issue 12 row 11).
+  // 0600: the lock file says nothing, but nobody else needs to open it.
   const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0600);
   if (fd < 0) return fail("open lock file '" + lock_path + "': " + std::strerror(errno));
   // Polled without blocking in flock(2) itself, so the wait is bounded whoever holds the lock.

@@ -19,7 +19,7 @@ std::string clean(boost::beast::string_view text) {
 }
 
 /// A header's value as valid UTF-8 ("" when absent): a Latin-1 or binary byte in a header must
-/// never reach JSON or a log line as it is (issue 12 row 1).
+/// never reach JSON or a log line as it is (docs/reliability.md "Hardening" row 1).
 std::string header(const http::request_header<>& req, http::field f) {
   const auto it = req.find(f);
   return it == req.end() ? std::string() : clean(it->value());

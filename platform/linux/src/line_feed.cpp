@@ -222,7 +222,7 @@ void LineFeed::deliver() {
   try {
     events_.line(line);
   } catch (const std::exception&) {
-    // A fault handling one line drops that line, never the daemon (issue 12).
+    // A fault handling one line drops that line, never the daemon.
   }
 }
 

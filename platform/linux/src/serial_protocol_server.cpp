@@ -214,7 +214,7 @@ std::string SerialProtocolServer::feed(std::string_view bytes) {
 }
 
 void SerialProtocolServer::discard_pending(bool hang_up) {
-  // What a client that left did not read must not greet the next one (issue 12 row 8). At a
+  // What a client that left did not read must not greet the next one. At a
   // hang-up the commands it sent that are not read yet still act (a set sent just before
   // closing is meant), but their replies are dropped; a half-sent line is forgotten with the
   // session. Then, and at an open, the replies queued towards the slave are flushed.

@@ -62,7 +62,7 @@ void UdpDatagramServer::received(std::size_t real_bytes) {
   try {
     reply = handler_(std::string_view(buffer_.data(), real_bytes), client_name());
   } catch (const std::exception&) {
-    // A fault handling one datagram drops that datagram, never the daemon (issue 12).
+    // A fault handling one datagram drops that datagram, never the daemon.
     reply.clear();
   }
   if (reply.empty()) return;

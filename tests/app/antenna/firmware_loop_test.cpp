@@ -1,4 +1,4 @@
-// The firmware in the loop (issue 14 §2, §3): the one station backend drives the simulated
+// The firmware in the loop (docs/encoder-hub.md): the one station backend drives the simulated
 // plants, reading them through the real EncoderHub ELF on a simulated ATmega328P and the daemon's
 // own frame decoder, in virtual time (the AVR's cycles run for exactly the time each tick asks).
 #include <gtest/gtest.h>

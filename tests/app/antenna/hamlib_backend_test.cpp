@@ -1,4 +1,4 @@
-// The `hamlib` backend as the one station backend over a rotator box (issue 13 §2): Hamlib's
+// The `hamlib` backend as the one station backend over a rotator box (docs/daemon.md): Hamlib's
 // in-process dummy rotator (model 1, turning at 6 deg/s in real time) is each axis's setpoint
 // drive and position sensor, read and supervised by the real StationController. The box is a
 // real peer moving in real time, so the loop ticks on the steady clock, with deadlines.

@@ -1,7 +1,7 @@
-// The `hardware` backend with simulated devices behind its Linux-shaped ports (issue 6 §1, §2, §5,
-// §6): azimuth on relays (GPIO) read by a pot on an MCP3008 (spidev), elevation by a rotator box
-// whose control pot is an MCP41010 (spidev) read by a pot on an ADS1115 (i2c-dev). The devices
-// answer with the simulated plants' angles; time is virtual (the backend's tick clock).
+// The `hardware` backend with simulated devices behind its Linux-shaped ports
+// (docs/hardware.md): azimuth on relays (GPIO) read by a pot on an MCP3008 (spidev), elevation by a
+// rotator box whose control pot is an MCP41010 (spidev) read by a pot on an ADS1115 (i2c-dev). The
+// devices answer with the simulated plants' angles; time is virtual (the backend's tick clock).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -603,7 +603,8 @@ TEST(HardwareConfig, MistakesNameTheKey) {
                      "relay_reverse = 6\n")
                 .find("same line as [gpio] estop"),
             std::string::npos);
-  // Issue 12 row 9: numbers are checked before they are narrowed (4294967297 is not 1).
+  // Numbers are checked before they are narrowed: 4294967297 is not 1 (docs/reliability.md
+  // "Hardening" row 9).
   const std::string pot =
       "[hardware.az]\nsensor = \"mcp3008\"\nadc_device = \"/dev/spidev0.1\"\n"
       "pot_calibration = [0, 0, 1000, 450]\n";

@@ -1,4 +1,4 @@
-// The `pwm` backend end to end (issue 6 §5, §6): EncoderHub frames on a pseudo-terminal in, two
+// The `pwm` backend end to end (docs/hardware.md): EncoderHub frames on a pseudo-terminal in, two
 // IBT-2 bridges on a fake /sys/class/pwm chip out, the real StationController between. When the
 // hub falls silent mid-slew the drives must be off within 200 ms of the last valid frame (R01).
 #include <fcntl.h>
@@ -105,9 +105,10 @@ TEST_F(PwmBackendTest, DrivesTowardsTheTargetAndStopsWhenTheHubFallsSilent) {
       << backend->faults().back();
 }
 
-// Issue 13 §2: the hub's frames carry its jumpers' bits. Frames whose bits are not [mount.az]'s
+// The hub's frames carry its jumpers' bits. Frames whose bits are not [mount.az]'s
 // are never read as angles: a fault names both values and the bridge is never driven.
-// Issue 14: the hub firmware says when it has no position for an axis (a parity error here).
+// The hub firmware says when it has no position for an axis (a parity error here;
+// docs/encoder-hub.md).
 // The daemon shows the reason as that axis's fault and drives nothing until good frames return.
 TEST_F(PwmBackendTest, AnAxisErrorFromTheHubIsAFaultNamingItAndNothingIsDriven) {
   boost::asio::io_context io;
@@ -182,7 +183,7 @@ TEST_F(PwmBackendTest, AHubFrameWhoseBitsAreNotTheMountsIsAFaultNamingBoth) {
   EXPECT_FALSE(backend->faults().empty());
 }
 
-// Issue 6 §6: a limit switch edge turns the drive towards it off within 20 ms, between ticks.
+// A limit switch edge turns the drive towards it off within 20 ms, between ticks.
 TEST_F(PwmBackendTest, ALimitSwitchEdgeTurnsTheDriveTowardsItOffAtOnce) {
   boost::asio::io_context io;
   DaemonConfig c = config();

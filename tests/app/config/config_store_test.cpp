@@ -1,4 +1,4 @@
-// ConfigStore: the daemon's configuration load/save path (issue 4 §3, reliability notes R23).
+// ConfigStore: the daemon's configuration load/save path (docs/reliability.md R23).
 #include "config/config_store.hpp"
 
 #include <gtest/gtest.h>
@@ -354,8 +354,8 @@ TEST_F(ConfigStoreTest, TheShippedDefaultSurvivesASaveUnchangedInMeaning) {
   EXPECT_EQ(reopened.config().rotctld.port, 4533);
 }
 
-// Issue 12 row 7: two saves, a corrupt file, a third save. The third must build on the second
-// (this process wrote it), never on the older .bak.
+// docs/reliability.md "Hardening" row 7: two saves, a corrupt file, a third save. The third must
+// build on the second (this process wrote it), never on the older .bak.
 TEST_F(ConfigStoreTest, ACorruptFileIsRebuiltFromTheLastSaveNotFromTheOlderBackup) {
   write(path_, kValid);
   ConfigStore store = ConfigStore::open(path_);
@@ -386,7 +386,8 @@ TEST_F(ConfigStoreTest, ACorruptFileThatHeldAnotherProgramsSaveIsNotRebuilt) {
   EXPECT_FALSE(fs::exists(path_ + ".corrupt"));
 }
 
-// Issue 12 row 3: a lock held elsewhere makes the save wait a bounded time, then fail clearly.
+// docs/reliability.md "Hardening" row 3: a lock held elsewhere makes the save wait a bounded time,
+// then fail clearly.
 TEST_F(ConfigStoreTest, AHeldLockFailsTheSaveAfterTheWaitAndChangesNothing) {
   write(path_, kValid);
   const ConfigStore store = ConfigStore::open(path_);
@@ -403,7 +404,8 @@ TEST_F(ConfigStoreTest, AHeldLockFailsTheSaveAfterTheWaitAndChangesNothing) {
   EXPECT_EQ(read(path_), kValid);
 }
 
-// Issue 12 row 11: temps of killed writers go at open; what is created is private.
+// docs/reliability.md "Hardening" row 11: temps of killed writers go at open; what is created is
+// private.
 TEST_F(ConfigStoreTest, TempFilesOfDeadWritersGoAtStartAndNewFilesArePrivate) {
   write(path_, kValid);
   pid_t dead = 4194303;  // above the usual pid_max; checked below
@@ -424,7 +426,7 @@ TEST_F(ConfigStoreTest, TempFilesOfDeadWritersGoAtStartAndNewFilesArePrivate) {
   EXPECT_EQ(mode & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
 }
 
-// Issue 13 §2: a schema-1 file set the real mount's speed and encoders under [sim.az]. It loads
+// A schema-1 file set the real mount's speed and encoders under [sim.az]. It loads
 // into the same controller setup as the same mount written in schema 2's [mount.az], and the
 // simulated plant keeps its imperfections.
 TEST_F(ConfigStoreTest, SchemaOneSimRatesBecomeTheMountsWithTheSameControllerSetup) {

@@ -1,4 +1,4 @@
-// [export] (issue 16 §1): azel.dat off by default, an absolute file path when set.
+// [export] (docs/eme.md): azel.dat off by default, an absolute file path when set.
 #include "config/export_config.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// [time] (issue 15 §2): the defaults a station runs with, and each bad value refused by name.
+// [time] (docs/time.md): the defaults a station runs with, and each bad value refused by name.
 #include "config/time_config.hpp"
 
 #include <gtest/gtest.h>

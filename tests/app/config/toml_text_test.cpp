@@ -1,4 +1,4 @@
-// Saved settings read back exactly what was saved (issue 15: a surveyed station position was cut
+// Saved settings read back exactly what was saved (a surveyed station position had once been cut
 // to 6 significant digits, metres away), and still read as people write them.
 #include "config/toml_text.hpp"
 

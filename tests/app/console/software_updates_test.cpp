@@ -1,4 +1,4 @@
-// The console's Software page behind the API (issue 17 §2): the version; an upload from a
+// The console's Software page behind the API (docs/packaging.md): the version; an upload from a
 // logged-in console checked as a Debian archive and left in the inbox, byte for byte, for the
 // root update helper; the helper's report read back; anonymous, oversized, malformed and
 // overlapping uploads refused with nothing written; a daemon without the package's unit offers
@@ -206,8 +206,9 @@ TEST(SoftwareUpdates, OnlyALoggedInUploadMayBeLarge) {
   }
 }
 
-// Issue 27 §10: eight concurrent 60 MiB uploads were all read into memory (15 → 496 MiB RSS)
-// before seven were refused. The second is refused from its head while the first holds the slot.
+// docs/reliability.md "Hardening, round three" row 10: eight concurrent 60 MiB uploads were all
+// read into memory (15 → 496 MiB RSS) before seven were refused. The second is refused from its
+// head while the first holds the slot.
 TEST(SoftwareUpdates, OneUploadAtATimeIsDecidedFromTheHead) {
   Rig rig;
   auto first = rig.api.body_allowance(rig.request("POST", "/api/software/update"));
@@ -251,12 +252,12 @@ TEST(SoftwareUpdates, WithoutThePackagesUnitThereAreNoUpdates) {
   EXPECT_EQ(api.body_allowance(r).max_bytes, linux_os::HttpServer::kMaxBodyBytes);
 }
 
-// Issue 27 §5: at a SIGTERM the daemon destroyed the console (and this object) while an upload's
-// job still waited on the worker, whose work half then read the freed object (26 invalid reads
-// under valgrind, and a folder with a garbage name created). The work halves hold what they need
-// by value: here the object is destroyed and its memory overwritten before the queued jobs run,
-// and the package still lands in the inbox. (The done halves, which run only on the loop, are
-// dropped with it, as after the daemon's loop ends.)
+// docs/reliability.md "Hardening, round three" row 5: at a SIGTERM the daemon destroyed the console
+// (and this object) while an upload's job still waited on the worker, whose work half then read the
+// freed object (26 invalid reads under valgrind, and a folder with a garbage name created). The
+// work halves hold what they need by value: here the object is destroyed and its memory overwritten
+// before the queued jobs run, and the package still lands in the inbox. (The done halves, which run
+// only on the loop, are dropped with it, as after the daemon's loop ends.)
 TEST(SoftwareUpdates, QueuedWorkOutlivesTheObjectThatQueuedIt) {
   Rig rig;
   std::vector<std::function<void()>> queued;
@@ -280,9 +281,10 @@ TEST(SoftwareUpdates, QueuedWorkOutlivesTheObjectThatQueuedIt) {
   EXPECT_EQ(read_bytes(rig.request_deb()), deb);
 }
 
-// Issue 27 §10: an accepted upload is not held whole (60 MiB each in RAM before): each chunk is
-// written to an unnamed file in the inbox as it comes, so until the last one nothing in the inbox
-// has a name for the helper to take, and an upload abandoned half-way leaves nothing there.
+// docs/reliability.md "Hardening, round three" row 10: an accepted upload is not held whole (60 MiB
+// each in RAM before): each chunk is written to an unnamed file in the inbox as it comes, so until
+// the last one nothing in the inbox has a name for the helper to take, and an upload abandoned
+// half-way leaves nothing there.
 TEST(SoftwareUpdates, AnUploadGoesToTheInboxAsItArrivesAndHasNoNameUntilWhole) {
   Rig rig;
   const std::string deb = tiny_deb();

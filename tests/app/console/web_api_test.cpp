@@ -1,5 +1,5 @@
-// WebApi: routing and who may act (issue 5 §2, reliability notes R14), over a recording model and
-// an injected clock. Every refused request must leave the model untouched.
+// WebApi: routing and who may act (docs/web-api.md, docs/reliability.md R14), over a recording
+// model and an injected clock. Every refused request must leave the model untouched.
 #include "console/web_api.hpp"
 
 #include <gtest/gtest.h>
@@ -127,7 +127,7 @@ TEST(WebApi, TheSettingsSchemaIsReadingAndItsChangesNeedTheLogin) {
 }
 
 TEST(WebApi, TheMoonPlannerIsReadingAndAModelWithoutOneSays404) {
-  // GET /api/moon-windows goes to the model's asynchronous planner (issue 16 §2), open to
+  // GET /api/moon-windows goes to the model's asynchronous planner (docs/eme.md), open to
   // every reader like the rest of reading; this model has none.
   Rig rig;
   const auto reply = rig.handle(Rig::request("GET", "/api/moon-windows"));
@@ -171,8 +171,9 @@ TEST(WebApi, StopFromThisMachineNeedsNoLoginAndFromTheLanDoes) {
   EXPECT_EQ(rig.model.actions.size(), 3U);
 }
 
-// Issue 27 §3: behind nginx or Caddy on the Pi every request comes from 127.0.0.1; one that a
-// proxy passed on is from wherever its first sender is, and a STOP from there needs the login.
+// docs/reliability.md "Hardening, round three" row 3: behind nginx or Caddy on the Pi every request
+// comes from 127.0.0.1; one that a proxy passed on is from wherever its first sender is, and a STOP
+// from there needs the login.
 TEST(WebApi, StopThroughALocalProxyNeedsTheLogin) {
   Rig rig;
   linux_os::HttpRequest r = Rig::request("POST", "/api/stop");
@@ -363,8 +364,8 @@ TEST(WebApi, TheFailedLoginTableForgetsAddressesAfterAnHour) {
 }
 
 TEST(WebApi, TextThatIsNotUtf8IsAnsweredNeverThrown) {
-  // Issue 12 rows 1 and 12: a Latin-1 Host and a path with a stray byte. The transport makes
-  // text valid before it gets here; the API must not throw even if it did not.
+  // docs/reliability.md "Hardening" rows 1 and 12: a Latin-1 Host and a path with a stray byte. The
+  // transport makes text valid before it gets here; the API must not throw even if it did not.
   Rig rig;
   linux_os::HttpRequest r = Rig::request("GET", "/api/state");
   r.host = "caf\xe9";

@@ -1,7 +1,7 @@
-// Every way out of the daemon leaves the outputs safe (issue 12 §1): the real `serve` loop on the
-// `pwm` backend, driving a fake /sys/class/pwm chip from EncoderHub frames on a pseudo-terminal,
-// moved by a rotctld client. Once the azimuth bridge is driven, an exception thrown from a
-// handler, or a SIGTERM, must leave every duty at 0 and every channel disabled.
+// Every way out of the daemon leaves the outputs safe (docs/daemon.md, "Failing safe"): the real
+// `serve` loop on the `pwm` backend, driving a fake /sys/class/pwm chip from EncoderHub frames on a
+// pseudo-terminal, moved by a rotctld client. Once the azimuth bridge is driven, an exception
+// thrown from a handler, or a SIGTERM, must leave every duty at 0 and every channel disabled.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -1,4 +1,5 @@
-// Element-set files (issue 7 §1): CCSDS OMM in XML, JSON, KVN and CSV against the TLE parser.
+// Element-set files (docs/satellites.md): CCSDS OMM in XML, JSON, KVN and CSV against the TLE
+// parser.
 //
 // Fixtures: tests/data/omm/catalogue.{tle,xml,json,kvn,csv}, four objects (LEO, polar, Molniya,
 // a decaying object with n̈ and a negative B*), written by tests/data/omm/make_fixtures.py with

@@ -1,4 +1,4 @@
-// azel.dat every second (issue 16 §1): the Moon and Sun as the sky engine sees them, the echo
+// azel.dat every second (docs/eme.md): the Moon and Sun as the sky engine sees them, the echo
 // Doppler at the band and its rate from one second to the next, the tracked source, R/T, the
 // optional fifth line; and a failed write said once, not every second.
 #include "station/azel_dat_export.hpp"

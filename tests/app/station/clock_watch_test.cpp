@@ -1,4 +1,4 @@
-// The station's clock watched (issue 15 §2): the reading off the loop becomes the console's
+// The station's clock watched (docs/time.md): the reading off the loop becomes the console's
 // `time`; a change of verdict is logged once; a reading that stops coming goes stale; the NTP
 // servers are refused unless chrony is managed, checked, applied and read back.
 #include "station/clock_watch.hpp"

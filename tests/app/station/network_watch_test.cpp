@@ -1,4 +1,4 @@
-// The network links for the console (issue 15 §3): the reading off the loop becomes `network`,
+// The network links for the console (docs/network.md): the reading off the loop becomes `network`,
 // and a link going down or coming back is logged once, not at every look.
 #include "station/network_watch.hpp"
 

@@ -74,8 +74,8 @@ TEST(SatelliteTrackerSite, APassUnderWayIsFinishedAsPlanned) {
   EXPECT_NE(next_there, next_here);
 }
 
-// Issue 16 §4: the loss a pass will cost is known before AOS. A rotator with 90° of travel cannot
-// follow the ISS across the sky; a flip mount follows every pass.
+// docs/satellites.md: the loss a pass will cost is known before AOS. A rotator with 90° of travel
+// cannot follow the ISS across the sky; a flip mount follows every pass.
 TEST(SatelliteTrackerLoss, ThePlannedLossIsReportedBeforeAOS) {
   track::MountGeometry short_travel;
   short_travel.az = control::AzimuthRange{0.0, 90.0};

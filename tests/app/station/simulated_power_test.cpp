@@ -1,6 +1,6 @@
-// `[receiver] source = "sim"` (issue 16 §3): the daemon's simulated receiver hears the Sun through
-// the simulated mount's true beam, so the power peaks where the mount's errors put the beam on
-// the Sun, not where the shafts point; it is refused on any backend but `sim`.
+// `[receiver] source = "sim"` (docs/calibration.md): the daemon's simulated receiver hears the Sun
+// through the simulated mount's true beam, so the power peaks where the mount's errors put the beam
+// on the Sun, not where the shafts point; it is refused on any backend but `sim`.
 #include "station/simulated_power.hpp"
 
 #include <gtest/gtest.h>

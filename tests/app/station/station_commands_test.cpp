@@ -1,4 +1,4 @@
-// The station's front door (issue 13 §1): every source meets the same rules and is recorded.
+// The station's front door (docs/daemon.md): every source meets the same rules and is recorded.
 #include "station/station_commands.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The station's hard inputs and the T/R sequencer on the daemon's loop (issue 6 §2, §3, §5):
+// The station's hard inputs and the T/R sequencer on the daemon's loop (docs/hardware.md):
 // [gpio] configuration, the sequencer's real-time order and gaps on GPIO outputs, the E-stop
 // latch (across a restart), limit switches, and lines that cannot be had — against a GPIO
 // provider in memory (tests/app/fake_gpio.hpp) and the simulated antenna.

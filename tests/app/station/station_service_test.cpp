@@ -1,5 +1,5 @@
-// StationService: what PC programs' requests do to the station's modes (issue 4 §2), through the
-// station's front door (issue 13 §1).
+// StationService: what PC programs' requests do to the station's modes (docs/daemon.md), through
+// the station's front door.
 #include "station/station_service.hpp"
 
 #include <gtest/gtest.h>

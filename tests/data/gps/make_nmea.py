@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the NMEA logs the GPS tests replay through gpsfake (issue 15 §4), u-blox M8N style:
+"""Writes the NMEA logs the GPS tests replay through gpsfake (docs/gps.md), u-blox M8N style:
 RMC, GGA, GSA, GSV and TXT, one fix a second. Deterministic (a fixed seed), so the logs in this
 folder are what this script prints; run it again after a change:
     python3 tests/data/gps/make_nmea.py tests/data/gps
@@ -120,7 +120,7 @@ def main(folder):
     logs["garbage"] = (txt + garbage, None)
     for name, (lines, truth) in logs.items():
         with open(f"{folder}/{name}.nmea", "w", encoding="latin-1", newline="") as f:
-            f.write(f"# {name}: written by make_nmea.py (issue 15), one fix a second\n")
+            f.write(f"# {name}: written by make_nmea.py (docs/gps.md), one fix a second\n")
             f.writelines(lines)
         with open(f"{folder}/{name}.json", "w", encoding="ascii") as f:
             json.dump({"mean": truth}, f, indent=1)

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""A stand-in NetworkManager (issue 15 §3 tests): the part of its D-Bus API azeltrack reads
-(GetDevices; Device.Interface and DeviceType; Device.Wireless.ActiveAccessPoint; AccessPoint
+"""A stand-in NetworkManager (for the tests of docs/network.md): the part of its D-Bus API azeltrack
+reads (GetDevices; Device.Interface and DeviceType; Device.Wireless.ActiveAccessPoint; AccessPoint
 Ssid and Strength), owned on the bus at argv[1]. Devices: eth0 (Ethernet), wlan0 associated
 with "shack-net" at 72 %, wlan1 not associated.
 Usage: /usr/bin/python3 fake_networkmanager.py BUS_ADDRESS  (python3-dbus, python3-gi)"""

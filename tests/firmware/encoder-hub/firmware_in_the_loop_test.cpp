@@ -1,7 +1,8 @@
-// End to end (issue 14 §3): the Moon tracked for one simulated hour by the daemon's station,
-// reading the plants through the EncoderHub firmware on a simulated ATmega328P, against the same
-// hour read through the plain hub model. The firmware's frames come 50 times a second, each up to
-// a frame period old: the tracking must stay within the plain simulation's error + 1 LSB.
+// End to end (docs/encoder-hub.md): the Moon tracked for one simulated hour by the daemon's
+// station, reading the plants through the EncoderHub firmware on a simulated ATmega328P, against
+// the same hour read through the plain hub model. The firmware's frames come 50 times a second,
+// each up to a frame period old: the tracking must stay within the plain simulation's error + 1
+// LSB.
 #include <gtest/gtest.h>
 
 #include <cmath>

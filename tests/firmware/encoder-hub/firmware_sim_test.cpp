@@ -1,7 +1,7 @@
 // The EncoderHub firmware itself, the ELF the build makes, on a simulated ATmega328P (simavr,
-// issue 14 §3): every resolution and code decodes exactly through the daemon's decoder, every
-// encoder fault gives no false position and is reported, the watchdog recovers a hung loop, and
-// the link's timing is measured in the AVR's own cycles.
+// docs/encoder-hub.md): every resolution and code decodes exactly through the daemon's decoder,
+// every encoder fault gives no false position and is reported, the watchdog recovers a hung loop,
+// and the link's timing is measured in the AVR's own cycles.
 #include <gtest/gtest.h>
 
 #include <cmath>

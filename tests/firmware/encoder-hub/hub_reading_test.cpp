@@ -1,5 +1,5 @@
-// From two reads per axis to the frame the hub sends (issue 14 §1): the agreement window on a
-// circle of counts, and errors in place of positions, through the daemon's own decoder.
+// From two reads per axis to the frame the hub sends (docs/encoder-hub.md): the agreement window on
+// a circle of counts, and errors in place of positions, through the daemon's own decoder.
 #include "hub_reading.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The hub's jumpers (issue 14 §1), from the firmware's own header: every combination of one
+// The hub's jumpers (docs/encoder-hub.md), from the firmware's own header: every combination of one
 // axis's five, the baud pair, and the default with none fitted.
 #include "jumpers.hpp"
 

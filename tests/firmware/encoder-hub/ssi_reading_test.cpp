@@ -1,6 +1,6 @@
-// The hub firmware's SSI word checks (issue 14 §1), compiled for the host from the firmware's own
-// header: AS5045 words built bit by bit as the datasheet lays them out, every status and line
-// fault, and Gray code both ways at every width.
+// The hub firmware's SSI word checks (docs/encoder-hub.md), compiled for the host from the
+// firmware's own header: AS5045 words built bit by bit as the datasheet lays them out, every status
+// and line fault, and Gray code both ways at every width.
 #include "ssi_reading.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The sky at one instant (issue 13 §3: moved from the app to the core, errors as Results): the
+// The sky at one instant (moved from the app to the core, errors as Results): the
 // snapshot observes each target as the reduction chain does on its own, and adds what a DX
 // station sees of the Moon only when there is one.
 #include "azt/astro/sky_snapshot.hpp"

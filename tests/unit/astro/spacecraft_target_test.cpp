@@ -1,6 +1,6 @@
-// A spacecraft from a JPL Horizons vector table (issue 7 §1), observed through the same chain as
-// the Moon. The check: a table of the Moon's own geocentric states (from eraMoon98, as the ERFA
-// ephemeris, tests/data/horizons/make_fixtures.py) observed as a "spacecraft" must give the
+// A spacecraft from a JPL Horizons vector table (docs/satellites.md), observed through the same
+// chain as the Moon. The check: a table of the Moon's own geocentric states (from eraMoon98, as the
+// ERFA ephemeris, tests/data/horizons/make_fixtures.py) observed as a "spacecraft" must give the
 // Moon's place — the table's light time, aberration and parallax are the Moon's.
 #include <gtest/gtest.h>
 

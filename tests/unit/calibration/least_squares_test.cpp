@@ -1,4 +1,4 @@
-// Levenberg–Marquardt and the Cholesky solver behind the calibration fits (issue 16 §3).
+// Levenberg–Marquardt and the Cholesky solver behind the calibration fits (docs/calibration.md).
 #include "azt/calibration/least_squares.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// The pointing model fitted to scans across the sky (issue 16 §3): degree-sized terms come back
-// within the noise, and a sky that cannot separate the terms is refused, not fitted.
+// The pointing model fitted to scans across the sky (docs/calibration.md): degree-sized terms come
+// back within the noise, and a sky that cannot separate the terms is refused, not fitted.
 #include "azt/calibration/pointing_fit.hpp"
 
 #include <gtest/gtest.h>

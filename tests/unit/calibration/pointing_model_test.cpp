@@ -1,5 +1,6 @@
-// The exact pointing geometry (issue 16 §3) against the first-order sums each term is documented
-// by, the inverse against the forward model, and the reading near the zenith and over it.
+// The exact pointing geometry (docs/calibration.md) against the first-order sums each term is
+// documented by, the inverse against the forward model, and the reading near the zenith and over
+// it.
 #include "azt/calibration/pointing_model.hpp"
 
 #include <gtest/gtest.h>

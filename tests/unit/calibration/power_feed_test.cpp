@@ -1,5 +1,5 @@
-// The receiver power readings as they arrive (issue 16 §3): freshness on injected time, the good,
-// malformed and missing counters (a silence counted once), the bounded history a scan point's
+// The receiver power readings as they arrive (docs/calibration.md): freshness on injected time, the
+// good, malformed and missing counters (a silence counted once), the bounded history a scan point's
 // dwell window is read from, and the linear mean.
 #include "azt/calibration/power_feed.hpp"
 

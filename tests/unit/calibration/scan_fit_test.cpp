@@ -1,5 +1,6 @@
-// Fitting scans (issue 16 §3): a Gaussian beam on a source, sampled with seeded noise, gives back
-// its centre and width; scans with too few readings or no source are refused with the reason.
+// Fitting scans (docs/calibration.md): a Gaussian beam on a source, sampled with seeded noise,
+// gives back its centre and width; scans with too few readings or no source are refused with the
+// reason.
 #include "azt/calibration/scan_fit.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The points of cross, five-point and raster scans (issue 16 §3), and what a plan refuses.
+// The points of cross, five-point and raster scans (docs/calibration.md), and what a plan refuses.
 #include "azt/calibration/scan_plan.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// A scan as it runs (issue 16 §3): the order of the points, when a point is read (settled, still,
-// for dwell_s of still time), which readings count, missed points, and the fit at the end.
+// A scan as it runs (docs/calibration.md): the order of the points, when a point is read (settled,
+// still, for dwell_s of still time), which readings count, missed points, and the fit at the end.
 #include "azt/calibration/scan_session.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The IBT-2 H-bridge layer (issue 6 §1): never reversed under load.
+// The IBT-2 H-bridge layer (docs/hardware.md): never reversed under load.
 #include "azt/control/hbridge.hpp"
 
 #include <gtest/gtest.h>

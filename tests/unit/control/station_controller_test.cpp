@@ -172,7 +172,7 @@ TEST(StationController, ElevationLimitsBlockOnlyTheirOwnDirection) {
   EXPECT_DOUBLE_EQ(rig.station.set_limits(limits).el, 0.0);
 }
 
-// Issue 6 §1: the same station with relays on azimuth and a rotator box (setpoint) on elevation.
+// The same station with relays on azimuth and a rotator box (setpoint) on elevation.
 struct MixedRig {
   sim::StationSimSetup setup = sim::reference_station(16, 0.1);
   static constexpr double kBoxBandDeg = 0.5;  ///< the box's own deadband in the model below

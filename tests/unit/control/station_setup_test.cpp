@@ -1,4 +1,4 @@
-// control::StationSetup: what every backend builds its one StationController from (issue 13 §2).
+// control::StationSetup: what every backend builds its one StationController from.
 #include "azt/control/station_setup.hpp"
 
 #include <gtest/gtest.h>

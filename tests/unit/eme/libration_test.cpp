@@ -1,4 +1,4 @@
-// The Moon's apparent libration and WSJT-X's echo width (issue 16 §1): the sub-observer point
+// The Moon's apparent libration and WSJT-X's echo width (docs/eme.md): the sub-observer point
 // swings within the libration's known bounds over a month, the formula's constants, and the
 // width of a real Moon at the bands in the range operators see.
 #include "azt/eme/libration.hpp"

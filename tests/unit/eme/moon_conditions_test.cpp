@@ -1,4 +1,4 @@
-// The Moon's EME conditions put together (issue 16 §1): angular separation, the lit fraction,
+// The Moon's EME conditions put together (docs/eme.md): angular separation, the lit fraction,
 // and how the station's and a DX station's places become Dpol, MNR, Tsky and Dgrd.
 #include "azt/eme/moon_conditions.hpp"
 

@@ -1,4 +1,4 @@
-// Common Moon windows (issue 16 §2): the edges are where the limit is crossed, a window under
+// Common Moon windows (docs/eme.md): the edges are where the limit is crossed, a window under
 // way at the start begins there, limits and masks the Moon never clears give none, and the best
 // minute lies inside its window. astropy checks the times (moon_windows_oracle.py).
 #include "azt/eme/moon_windows.hpp"

@@ -1,4 +1,4 @@
-// Spatial polarisation (issue 16 §1) with WSJT-X's definitions: the parallactic angle in
+// Spatial polarisation (docs/eme.md) with WSJT-X's definitions: the parallactic angle in
 // directions where it is known, Dpol folded as a linear polarisation, MNR and its 25 dB cap.
 #include "azt/eme/polarisation.hpp"
 

@@ -1,4 +1,4 @@
-// The sky behind the Moon and Dgrd (issue 16 §1), as WSJT-X defines them: the table's 2° bins
+// The sky behind the Moon and Dgrd (docs/eme.md), as WSJT-X defines them: the table's 2° bins
 // and their edges, the scaling with frequency, and Dgrd's zero at perigee in the coldest sky.
 #include "azt/eme/sky_temperature.hpp"
 

@@ -1,5 +1,5 @@
-// A GPS fix off the Earth is refused, never wrapped (issue 27 §7: from gpsd, longitude 500 had
-// been saved as the station's 140.0 and -200 as 160.0).
+// A GPS fix off the Earth is refused, never wrapped (docs/gps.md; from gpsd, longitude 500 had
+// once been saved as the station's 140.0 and -200 as 160.0).
 #include "azt/gnss/fix_range.hpp"
 
 #include <gtest/gtest.h>

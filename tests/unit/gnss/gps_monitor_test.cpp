@@ -1,4 +1,4 @@
-// The GPS state the console shows (issue 15 §1), driven by injected times.
+// The GPS state the console shows (docs/gps.md), driven by injected times.
 #include "azt/gnss/gps_monitor.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The station's position from the GPS (issue 15 §1): a held 3D fix, averaged; what breaks a
+// The station's position from the GPS (docs/gps.md): a held 3D fix, averaged; what breaks a
 // run; the distance that tells a moved antenna from a wandering fix; and what to adopt.
 #include "azt/gnss/site_survey.hpp"
 

@@ -277,7 +277,7 @@ TEST_F(AtomicFileTest, SigkillNeverLeavesATornFile) {
   EXPECT_LT(seconds, 15.0);
 }
 
-// publish_file (issue 16 §1, azel.dat): atomic for readers, no backup, no temp left behind.
+// publish_file (azel.dat, docs/eme.md): atomic for readers, no backup, no temp left behind.
 TEST_F(AtomicFileTest, PublishReplacesWholeWithoutABackup) {
   const std::string path = file("azel.dat");
   ASSERT_TRUE(publish_file(path, "first\n"));
@@ -292,8 +292,9 @@ TEST_F(AtomicFileTest, PublishReplacesWholeWithoutABackup) {
   EXPECT_EQ(entries(), std::vector<std::string>{"azel.dat"}) << "no .bak, no temp";
 }
 
-// Issue 27 §4: a symlink planted at the export path, pointing to a setuid file, had given the
-// new azel.dat mode 4755. The link itself is replaced; its target keeps its bits and contents.
+// docs/reliability.md "Hardening, round three" row 4: a symlink planted at the export path,
+// pointing to a setuid file, had given the new azel.dat mode 4755. The link itself is replaced; its
+// target keeps its bits and contents.
 TEST_F(AtomicFileTest, PublishOverASymlinkNeitherCopiesNorTouchesItsTarget) {
   const std::string target = file("setuid-program");
   ASSERT_TRUE(publish_file(target, "#!/bin/sh\n"));

@@ -1,5 +1,6 @@
 // A request a reverse proxy passed on is marked as such, whatever its spelling of the header
-// (issue 27 §3: a STOP through nginx on the Pi had counted as one from this machine).
+// (docs/reliability.md "Hardening, round three" row 3: a STOP through nginx on the Pi had counted
+// as one from this machine).
 #include "azt/linux/http_request.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// Pass search (issue 7 §1) on a synthetic sky whose rises and sets are known in closed form:
-// el(t) = A·sin(2πt/P) − B, az(t) = 360·t/P. The roots are where sin = (B + mask)/A.
+// Pass search (docs/satellites.md) on a synthetic sky whose rises and sets are known in closed
+// form: el(t) = A·sin(2πt/P) − B, az(t) = 360·t/P. The roots are where sin = (B + mask)/A.
 #include "azt/orbit/passes.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// One satellite from a station (issue 13 §3: moved from the app to the core): its look angles
+// One satellite from a station (moved from the app to the core): its look angles
 // are SGP4's state turned by UT1, its element age counts from the epoch, and a decayed orbit is
 // an error naming the satellite, never a position.
 #include "azt/orbit/satellite.hpp"

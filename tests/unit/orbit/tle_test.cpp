@@ -211,7 +211,7 @@ TEST(Tle, Alpha5CatalogueNumbers) {
 }
 
 TEST(Tle, LeadingBlanksInCatalogueNumber) {
-  // python-sgp4 issue 81: "1  4859U …" is number 4859.
+  // python-sgp4 #81: "1  4859U …" is number 4859.
   const auto r = parse_tle(edit(kIss1, 3, " 4859"), edit(kIss2, 3, " 4859"));
   ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->catalog, "4859");

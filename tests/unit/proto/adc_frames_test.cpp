@@ -1,4 +1,4 @@
-// ADC wire formats (issue 6 §2), with the datasheets' own examples.
+// ADC wire formats (docs/hardware.md), with the datasheets' own examples.
 #include "azt/proto/adc_frames.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// FODTRACK parallel-port decoding (issue 6 §4). The sender side follows Hamlib's fodtrack.c:
+// FODTRACK parallel-port decoding (docs/hardware.md). The sender side follows Hamlib's fodtrack.c:
 // data, then AUTOFEED for the axis, then a STROBE pulse; elevation is sent before azimuth.
 #include "azt/proto/fodtrack.hpp"
 

@@ -424,8 +424,8 @@ TEST(HubDecoderRejects, EveryEncBitsValue) {
   EXPECT_EQ(d.counters().bad_nibble, 192U);
 }
 
-// Issue 14: our CRC-8 frames say why an axis has no position (nibble 1, the code as its raw);
-// the other axis still travels. The seed version cannot carry it: the encoder refuses.
+// docs/encoder-hub.md: our CRC-8 frames say why an axis has no position (nibble 1, the code as its
+// raw); the other axis still travels. The seed version cannot carry it: the encoder refuses.
 TEST(HubAxisErrors, TravelInCrcFramesWithTheOtherAxisIntact) {
   for (uint8_t code = 1; code <= kHubAxisErrorLast; ++code) {
     HubReading r{12, 0, 1234, 0};

@@ -1,4 +1,4 @@
-// The one-reading-a-line power feed (issue 16 §3): what an SDR program, a script or
+// The one-reading-a-line power feed (docs/calibration.md): what an SDR program, a script or
 // `echo -42.1 | socat - udp:host:port` sends.
 #include "azt/proto/power_line.hpp"
 

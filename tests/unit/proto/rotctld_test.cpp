@@ -201,7 +201,7 @@ TEST(Rotctld, GetPosWithUnknownPositionIsAnError) {
 
 TEST(Rotctld, GetInfoKeepsTheReplyOnOneLine) {
   EXPECT_EQ(format_get_info(parse_ok("_"), "azeltrack\n0.1"), "azeltrack 0.1\n");
-  // Issue 12: rotctl -m 2 shows 63 characters; a longer info is cut there, not by the client,
+  // rotctl -m 2 shows 63 characters; a longer info is cut there, not by the client,
   // and never inside a UTF-8 sequence (the ° of "12°" below straddles character 63).
   const std::string long_info = "azeltrack 0.1.0 simulated antenna (12/12-bit encoders) at FN06HE";
   EXPECT_EQ(format_get_info(parse_ok("_"), long_info), long_info.substr(0, 63) + "\n");
@@ -251,7 +251,7 @@ TEST(Rotctld, MoveTakesNumbersOrKeywords) {
   EXPECT_EQ(command.speed, azt::proto::kMoveSpeedUnchanged);
   EXPECT_EQ(parse_ok("M 256 100").direction, MoveDirection::DownRight);
   EXPECT_EQ(parse_error("M 3 50").code, -1);
-  EXPECT_EQ(parse_ok("M 16 0").speed, 0);  // issue 12: Hamlib clients send 0; it is ignored
+  EXPECT_EQ(parse_ok("M 16 0").speed, 0);  // Hamlib clients send 0; it is ignored
   EXPECT_EQ(parse_error("M 16 -2").code, -1);
   EXPECT_EQ(parse_error("M 16 101").code, -1);
   EXPECT_EQ(parse_error("M sideways 10").code, -1);

@@ -1,7 +1,7 @@
-// rtl_power's CSV lines (issue 16 §3). The lines have the shape rtl-sdr's rtl_power.c prints in
-// main() and csv_dbm(): strftime "%Y-%m-%d, %H:%M:%S", then "%i, %i, %.2f, %i, " (Hz low, Hz
-// high, Hz step, samples), then "%.2f, " per bin and "%.2f\n" for the last (which repeats the bin
-// before it). The numbers are a 1296 MHz hop of 1953.12 Hz bins (2.048 MS/s over 1024 bins).
+// rtl_power's CSV lines (docs/calibration.md). The lines have the shape rtl-sdr's rtl_power.c
+// prints in main() and csv_dbm(): strftime "%Y-%m-%d, %H:%M:%S", then "%i, %i, %.2f, %i, " (Hz low,
+// Hz high, Hz step, samples), then "%.2f, " per bin and "%.2f\n" for the last (which repeats the
+// bin before it). The numbers are a 1296 MHz hop of 1953.12 Hz bins (2.048 MS/s over 1024 bins).
 #include "azt/proto/rtl_power_csv.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The T/R sequencer (issue 6 §3, reliability notes R17/R18) in virtual time.
+// The T/R sequencer (docs/reliability.md R17, R18) in virtual time.
 #include "azt/sequencer/tr_sequencer.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The outer check of an uploaded package (issue 17 §2): a real .deb made by dpkg-deb passes
+// The outer check of an uploaded package (docs/packaging.md): a real .deb made by dpkg-deb passes
 // with its members named; anything else is refused with the first thing wrong, never read past
 // its end.
 #include "azt/software/deb_archive.hpp"

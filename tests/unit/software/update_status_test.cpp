@@ -1,5 +1,5 @@
-// The root update helper's report (issue 17 §2), as the daemon reads it for the Software page:
-// every phase the helper writes, unknown keys skipped, and a bad value an error, not half a
+// The root update helper's report (docs/packaging.md), as the daemon reads it for the Software
+// page: every phase the helper writes, unknown keys skipped, and a bad value an error, not half a
 // report.
 #include "azt/software/update_status.hpp"
 

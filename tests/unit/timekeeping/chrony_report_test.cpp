@@ -1,4 +1,4 @@
-// chronyc's CSV reports (issue 15 §2): a synchronised GPS server, chronyd just started, the
+// chronyc's CSV reports (docs/time.md): a synchronised GPS server, chronyd just started, the
 // sources table with a refclock and servers, and every way a line can be unreadable.
 #include "azt/timekeeping/chrony_report.hpp"
 

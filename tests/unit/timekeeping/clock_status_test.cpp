@@ -1,4 +1,4 @@
-// When the station's clock is trusted (issue 15 §2): chrony on a real source with the kernel
+// When the station's clock is trusted (docs/time.md): chrony on a real source with the kernel
 // agreeing; every other case is a banner with its reason.
 #include "azt/timekeeping/clock_status.hpp"
 

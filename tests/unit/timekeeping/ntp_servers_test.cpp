@@ -1,4 +1,4 @@
-// The operator's NTP servers (issue 15 §2): names and addresses accepted, anything that could
+// The operator's NTP servers (docs/time.md): names and addresses accepted, anything that could
 // smuggle a chrony directive refused, and the sources file written and read back.
 #include "azt/timekeeping/ntp_servers.hpp"
 

@@ -1,4 +1,4 @@
-// The pass planner (issue 7 §2, issue 16 §4) on synthetic passes of every kind, then the real
+// The pass planner (docs/satellites.md) on synthetic passes of every kind, then the real
 // controller through 200 of them per mount kind on the simulated plant: a 0–360° and a 0–450°
 // rotator and a flip mount, 6°/s in azimuth and 3°/s in elevation.
 #include "azt/track/pass_plan.hpp"
@@ -144,9 +144,9 @@ MountGeometry rotator_360() {
 }
 
 TEST(PassPlan, AHighPassBeyondTheTravelSwingsOnceNearTheTopInsteadOfWaitingAtTheStop) {
-  // Issue 16 §4: an 83° pass crossing north sweeps ~300° → 120°, more than 0–450° holds; waiting
-  // at the stop left it 29° off at LOS. Swinging the azimuth once where cos(el) is small costs
-  // far less.
+  // docs/satellites.md "Measured": an 83° pass crossing north sweeps ~300° → 120°, more than 0–450°
+  // holds; waiting at the stop left it 29° off at LOS. Swinging the azimuth once where cos(el) is
+  // small costs far less.
   const auto sky = pass(offset_for(83.0), 30.0, true);
   auto plan = plan_pass(sky, overlap_450(), 270.0);
   ASSERT_TRUE(plan.ok()) << plan.error().message;
@@ -162,7 +162,8 @@ TEST(PassPlan, AHighPassBeyondTheTravelSwingsOnceNearTheTopInsteadOfWaitingAtThe
 }
 
 TEST(PassPlan, AFlipMountFlipsWhereThatLowersTheErrorAndOnlyThere) {
-  // Issue 16 §4: an 86° pass was flown unflipped through the keyhole, 3.0° off at worst.
+  // docs/satellites.md "Measured": an 86° pass was flown unflipped through the keyhole, 3.0° off at
+  // worst.
   const auto sky = pass(offset_for(86.0), 100.0, true);
   auto plain = plan_pass(sky, overlap_450(), 180.0);
   auto flip = plan_pass(sky, flip_mount(), 180.0);
@@ -220,7 +221,7 @@ TEST(PassPlan, ThePlanStaysInTheTravelAndWithinTheRates) {
   }
 }
 
-/// The controller and the simulated plant through 200 passes per mount kind (issue 16 §4): a
+/// The controller and the simulated plant through 200 passes per mount kind (docs/satellites.md): a
 /// third crossing north, a third near the zenith, a third low; random directions and heights.
 /// Where the rates allow a continuous path (the plan itself on the satellite) the beam stays
 /// within 2°; elsewhere it is no worse than the plan reported before AOS, give or take the

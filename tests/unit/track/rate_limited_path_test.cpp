@@ -1,5 +1,5 @@
-// The reachable sets and the path read back through them (issue 16 §4), on cases small enough
-// to check by hand.
+// The reachable sets and the path read back through them (docs/satellites.md), on cases small
+// enough to check by hand.
 #include "azt/track/rate_limited_path.hpp"
 
 #include <gtest/gtest.h>

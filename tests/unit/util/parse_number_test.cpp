@@ -1,4 +1,5 @@
-// parse_finite_double: whole-string, locale-free, finite-only (DESIGN.md house rule 5).
+// parse_finite_double: whole-string, locale-free, finite-only (docs/architecture.md: codecs pure
+// and strict).
 
 #include "azt/util/parse_number.hpp"
 

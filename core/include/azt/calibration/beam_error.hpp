@@ -1,7 +1,7 @@
 #pragma once
-// How far the beam misses over the sky (issue 16 §3): a mount that really behaves as `actual`,
-// pointed by a controller that believes `model`, sent to a grid of sky directions. With the
-// model equal to the mount, the error is zero everywhere; with no model, it is what the mount's
+// How far the beam misses over the sky (docs/calibration.md): a mount that really behaves as
+// `actual`, pointed by a controller that believes `model`, sent to a grid of sky directions. With
+// the model equal to the mount, the error is zero everywhere; with no model, it is what the mount's
 // errors cost the operator.
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// Levenberg–Marquardt for the small fits of pointing calibration (issue 16 §3): a beam's
+// Levenberg–Marquardt for the small fits of pointing calibration (docs/calibration.md): a beam's
 // Gaussian across a scan (5 parameters) and the pointing model over the sky (7 parameters).
 // Dense normal equations with a numerical Jacobian are the right tool at these sizes (Press et
 // al., Numerical Recipes 3rd ed. §15.5.2; Madsen, Nielsen & Tingleff, "Methods for non-linear

@@ -1,6 +1,6 @@
 #pragma once
-// The pointing model fitted to scans of several sources across the sky (issue 16 §3): each scan
-// says at which mount angles the beam was on a source whose sky position the ephemeris gives;
+// The pointing model fitted to scans of several sources across the sky (docs/calibration.md): each
+// scan says at which mount angles the beam was on a source whose sky position the ephemeris gives;
 // the terms are chosen to minimise the beam's residual offsets (cross-elevation and elevation,
 // degrees on the sky). TPOINT's practice: fit only the terms the data determine.
 

@@ -1,11 +1,11 @@
 #pragma once
-// The pointing model of an alt-azimuth mount (issue 16 §3): where the beam points on the sky for
-// given encoder angles, with the classical geometric terms named as in TPOINT (P. T. Wallace,
-// "TPOINT — A Telescope Pointing Analysis System", Starlink SUN/100; the alt-az terms IA, IE, CA,
-// NPAE, AN, AW and the tube-flexure term, here the elevation sag) and the seven-term Haystack
-// practice of astronomy-and-eme.md §8. The geometry is exact (rotations, not the first-order
-// sums), so a mount that is off by a degree in several terms is still modelled to micro-degrees;
-// to first order the terms act as the sums in the comments below.
+// The pointing model of an alt-azimuth mount (docs/calibration.md): where the beam points on the
+// sky for given encoder angles, with the classical geometric terms named as in TPOINT (P. T.
+// Wallace, "TPOINT — A Telescope Pointing Analysis System", Starlink SUN/100; the alt-az terms IA,
+// IE, CA, NPAE, AN, AW and the tube-flexure term, here the elevation sag) and the seven-term
+// Haystack practice of astronomy-and-eme.md §8. The geometry is exact (rotations, not the
+// first-order sums), so a mount that is off by a degree in several terms is still modelled to
+// micro-degrees; to first order the terms act as the sums in the comments below.
 //
 // The names are TPOINT's; the signs are this file's own, stated term by term below.
 //

@@ -1,9 +1,9 @@
 #pragma once
-// The receiver power readings as they arrive (issue 16 §3: "Malformed or missing readings are
-// counted and shown"), whatever carried them: an rtl_power sweep, a UDP datagram, a line on a
+// The receiver power readings as they arrive (docs/calibration.md: malformed or missing readings
+// are counted and shown), whatever carried them: an rtl_power sweep, a UDP datagram, a line on a
 // pipe. The adapter that reads the feed stamps each reading with the daemon's monotonic clock and
 // hands it here; a scan then asks for the latest reading, or for the readings that fell inside a
-// point's dwell window. Pure: time is a parameter (DESIGN.md rule 2), seconds on one steady
+// point's dwell window. Pure: time is a parameter (docs/architecture.md), seconds on one steady
 // clock; everything is bounded (the recent readings, the last error's text).
 //
 // The three counters:

@@ -1,5 +1,5 @@
 #pragma once
-// What a pointing scan found (issue 16 §3; astronomy-and-eme.md §8): a Gaussian beam plus a
+// What a pointing scan found (docs/calibration.md; astronomy-and-eme.md §8): a Gaussian beam plus a
 // baseline fitted to the measured power, in linear units (the power of a Gaussian beam on a
 // source falls as a Gaussian of the offset; in dB it would not be). The centre is the offset
 // that puts the beam on the source; the width is the beam convolved with the source.

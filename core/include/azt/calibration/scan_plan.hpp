@@ -1,6 +1,6 @@
 #pragma once
-// The offsets of a pointing scan (issue 16 §3; astronomy-and-eme.md §8): where, relative to the
-// source as the ephemeris gives it at each point, the beam is sent to measure the power.
+// The offsets of a pointing scan (docs/calibration.md; astronomy-and-eme.md §8): where, relative to
+// the source as the ephemeris gives it at each point, the beam is sent to measure the power.
 // Offsets are on the sky: cross-elevation (azimuth × cos E) and elevation, in degrees.
 
 #include <cstddef>

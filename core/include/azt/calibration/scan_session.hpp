@@ -1,7 +1,7 @@
 #pragma once
-// One pointing scan as it runs (issue 16 §3), the same in the daemon and in the simulation: which
-// offset to send the beam to, when the antenna has settled on it, which receiver readings count,
-// and the samples the fit gets. Time is a parameter; the caller moves the antenna (source +
+// One pointing scan as it runs (docs/calibration.md), the same in the daemon and in the simulation:
+// which offset to send the beam to, when the antenna has settled on it, which receiver readings
+// count, and the samples the fit gets. Time is a parameter; the caller moves the antenna (source +
 // offset(), the ephemeris read at every tick: the source moves during a scan) and passes on the
 // receiver's readings.
 //

@@ -116,7 +116,7 @@ class TiltTable {
 };
 
 /// Everything the Offset / ± / UP / DWN / tilt screens configure, and the fitted pointing model
-/// ([pointing], issue 16 §3: where the beam really points for what the encoders read).
+/// ([pointing], docs/calibration.md: where the beam really points for what the encoders read).
 struct PositionCorrections {
   AxisOffsets offsets;
   UserCorrections user;

@@ -1,5 +1,5 @@
 #pragma once
-// The station controller over its ports (issue 13 §2, issue 14): each tick reads both axes'
+// The station controller over its ports: each tick reads both axes'
 // sensors, hands the controller a reading when both have a new one, and applies its duties to
 // both drives. The daemon's one station backend and the virtual-time simulations both run it,
 // so a simulated hour exercises exactly the code a station runs; what differs is the ports (the

@@ -19,9 +19,9 @@
 
 namespace azt::control {
 
-/// How an axis is moved (issue 6 §1): a PWM H-bridge (soft start and stop, AxisController), on/off
-/// relays (RelayDrive: hysteresis, minimum on-time, reversal dead time), or a rotator box that
-/// closes its own loop around a setpoint (seed 001's digital pot: we only send the angle).
+/// How an axis is moved (docs/hardware.md): a PWM H-bridge (soft start and stop, AxisController),
+/// on/off relays (RelayDrive: hysteresis, minimum on-time, reversal dead time), or a rotator box
+/// that closes its own loop around a setpoint (seed 001's digital pot: we only send the angle).
 enum class DriveKind : std::uint8_t { Pwm, Relay, Setpoint };
 
 std::string_view to_string(DriveKind kind);
@@ -68,9 +68,9 @@ struct Duties {
   std::optional<double> el_setpoint_deg;
 };
 
-/// The travel-end switches (issue 6 §2): normally closed, so a broken wire reads as tripped. A
-/// tripped switch stops the drive towards it at once, without a soft stop, and still lets the axis
-/// move away from it. Forward (positive duty) is clockwise and up.
+/// The travel-end switches (docs/hardware.md): normally closed, so a broken wire reads as tripped.
+/// A tripped switch stops the drive towards it at once, without a soft stop, and still lets the
+/// axis move away from it. Forward (positive duty) is clockwise and up.
 struct LimitSwitches {
   bool az_ccw = false;  ///< azimuth at its counter-clockwise end (decreasing angle)
   bool az_cw = false;

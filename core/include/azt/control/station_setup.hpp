@@ -1,5 +1,5 @@
 #pragma once
-// What a station is, to its controller, whatever drives and reads it (issue 13 §2): each axis's
+// What a station is, to its controller, whatever drives and reads it: each axis's
 // control and supervisor settings (the mount's rate and encoder step among them), the travel,
 // the tick, the pointing corrections and what to do out of range. The daemon reads it from the
 // configuration ([mount.*], [control], [geometry], [corrections]); every backend, the simulated

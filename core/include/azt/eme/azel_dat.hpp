@@ -1,7 +1,7 @@
 #pragma once
 // azel.dat, the file WSJT-X writes once a second and Doppler and rotator programs read
 // (WSJTX/wsjtx lib/astrosub.f90, format 1010): azeltrack writes the same so those programs get
-// its numbers (issue 16 §1). Four lines:
+// its numbers (docs/eme.md). Four lines:
 //   HH:MM:SS,AAA.A,EE.E,Moon
 //   HH:MM:SS,AAA.A,EE.E,Sun
 //   HH:MM:SS,AAA.A,EE.E,Source

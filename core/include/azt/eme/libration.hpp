@@ -1,5 +1,5 @@
 #pragma once
-// The Moon's apparent libration and the echo spread it causes (issue 16 §1, WSJT-X's "Width"):
+// The Moon's apparent libration and the echo spread it causes (docs/eme.md, WSJT-X's "Width"):
 // as the Moon turns a little relative to the line of sight, its limbs approach and recede, and
 // an echo is smeared over a band of frequencies. WSJT-X takes the change in a minute of the
 // sub-observer point's selenographic longitude l and latitude b (lib/astro0.f90):

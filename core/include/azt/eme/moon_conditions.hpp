@@ -1,5 +1,5 @@
 #pragma once
-// What an EME station reads about the Moon beside its position (issue 16 §1): the polarisation
+// What an EME station reads about the Moon beside its position (docs/eme.md): the polarisation
 // offset to a DX station, the sky behind the Moon and the degradation it brings, how far the
 // Moon is from the Sun (Sun noise) and how much of it is lit. Computed from the places the sky
 // engine already observes (azt/astro/sky.hpp), so every number is for the same instant.

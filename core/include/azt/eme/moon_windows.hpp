@@ -1,5 +1,5 @@
 #pragma once
-// Common Moon windows (issue 16 §2): every interval in which two stations both see the Moon
+// Common Moon windows (docs/eme.md): every interval in which two stations both see the Moon
 // above their elevation limits and horizon masks, with the best minute's conditions (the highest
 // Dgrd) and the Sun's separation. The Moon is sampled every `step_s` (10 min: the Moon's
 // elevation moves ≤ 2.5° in that time, so no window longer than a step is missed) and each edge

@@ -1,5 +1,5 @@
 #pragma once
-// Spatial polarisation of EME paths (issue 16 §1), as WSJT-X's Astronomical Data window shows
+// Spatial polarisation of EME paths (docs/eme.md), as WSJT-X's Astronomical Data window shows
 // it (WSJTX/wsjtx lib/astro.f90, the "spatial polarization offset" block; its user guide,
 // astro_data.adoc). A linearly polarised antenna that is level at each station sees the Moon's
 // reflection turned by the difference of the two stations' parallactic angles; for self echoes

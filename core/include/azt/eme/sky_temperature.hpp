@@ -1,5 +1,5 @@
 #pragma once
-// The sky behind the Moon and what it costs an EME path (issue 16 §1), with WSJT-X's
+// The sky behind the Moon and what it costs an EME path (docs/eme.md), with WSJT-X's
 // definitions so that the numbers match the Astronomical Data window operators know
 // (WSJTX/wsjtx lib/astro.f90):
 //  - Tsky: the sky temperature at 144 MHz along the ecliptic, in 2° steps of the Moon's

@@ -1,8 +1,8 @@
 #pragma once
-// Whether a GPS fix names a place on the Earth (issue 27 §7: from gpsd, longitude 500 had been
-// wrapped to 140 and saved as the station's position). A coordinate out of its range is refused,
-// never wrapped: a receiver or a gpsd that says 500° says nothing trustworthy about the other
-// numbers either.
+// Whether a GPS fix names a place on the Earth (docs/gps.md; a longitude of 500 from gpsd had
+// once been wrapped to 140 and saved as the station's position). A coordinate out of its range is
+// refused, never wrapped: a receiver or a gpsd that says 500° says nothing trustworthy about the
+// other numbers either.
 
 #include <optional>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// What a GPS receiver reports, as gpsd's TPV and SKY reports carry it (issue 15 §1): the types
+// What a GPS receiver reports, as gpsd's TPV and SKY reports carry it (docs/gps.md): the types
 // the gpsd adapter (azt/linux/gpsd_client.hpp) hands the pure monitor and site survey.
 
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// The GPS state the console shows (issue 15 §1): off, no gpsd, no fix, 2D or 3D fix, with the
+// The GPS state the console shows (docs/gps.md): off, no gpsd, no fix, 2D or 3D fix, with the
 // latest position, satellites and receiver time. Pure: the gpsd adapter reports what it hears,
 // with the control loop's monotonic time, and status() ages it. A receiver that stops talking
 // makes gpsd fall silent, so a fix older than stale_after_s is no fix.

@@ -1,5 +1,5 @@
 #pragma once
-// The station's position from its GPS (issue 15 §1): once a 3D fix with enough satellites has
+// The station's position from its GPS (docs/gps.md): once a 3D fix with enough satellites has
 // held for a settable time, the average of the fixes seen is the surveyed site. A fix that drops
 // to 2D, loses satellites, falls silent for more than 5 s or lands more than jump_m from the
 // run's mean restarts the survey: the average is only ever of one unbroken run of good fixes.

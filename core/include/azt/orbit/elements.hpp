@@ -1,5 +1,5 @@
 #pragma once
-// Mean orbital elements as SGP4 takes them (issue 7 §1): what a TLE or a CCSDS OMM carries,
+// Mean orbital elements as SGP4 takes them (docs/satellites.md): what a TLE or a CCSDS OMM carries,
 // in the TLE's own units so that both parsers and the propagator agree on one structure.
 
 #include <cstdint>

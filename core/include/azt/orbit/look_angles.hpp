@@ -1,7 +1,7 @@
 #pragma once
-// Where a satellite is seen from a station (issue 7 §1), by the common convention (Vallado's
-// teme2ecef, also skyfield's and most trackers'): the TEME state from SGP4 is turned to the
-// Earth-fixed frame by GMST 1982 of UT1 (no equation of the equinoxes, no polar motion), then
+// Where a satellite is seen from a station (docs/satellites.md), by the common convention
+// (Vallado's teme2ecef, also skyfield's and most trackers'): the TEME state from SGP4 is turned to
+// the Earth-fixed frame by GMST 1982 of UT1 (no equation of the equinoxes, no polar motion), then
 // seen from a WGS-84 site. Geometric: no light time, no refraction (a satellite's refraction is
 // the caller's choice, as for any target).
 

@@ -1,6 +1,6 @@
 #pragma once
-// Satellite passes (issue 7 §1): AOS, TCA (highest elevation) and LOS above a horizon mask, found
-// by root-finding on the elevation, not by stepping and hoping.
+// Satellite passes (docs/satellites.md): AOS, TCA (highest elevation) and LOS above a horizon mask,
+// found by root-finding on the elevation, not by stepping and hoping.
 //
 // The search steps through the window and brackets every maximum of the elevation, then refines
 // it (golden section) and, where it clears the mask, bisects the rise and the set to a

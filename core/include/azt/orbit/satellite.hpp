@@ -1,9 +1,9 @@
 #pragma once
-// One satellite from a station (issue 7): its element set with the SGP4 propagator made from it,
+// One satellite from a station: its element set with the SGP4 propagator made from it,
 // where it is seen at an instant, and its passes.
 //
 // Times: SGP4 is fed the UTC Julian date; the Earth's rotation uses UT1 = UTC + DUT1 (the
-// convention of issue 7 §1). A satellite whose orbit has decayed is an error naming it.
+// convention of docs/satellites.md). A satellite whose orbit has decayed is an error naming it.
 
 #include <vector>
 

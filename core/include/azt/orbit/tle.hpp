@@ -1,5 +1,5 @@
 #pragma once
-// Two- and three-line element sets (TLE) as NORAD and CelesTrak publish them (issue 7 §1).
+// Two- and three-line element sets (TLE) as NORAD and CelesTrak publish them (docs/satellites.md).
 //
 // Column layout: CelesTrak, "NORAD Two-Line Element Set Format"
 // (https://celestrak.org/NORAD/documentation/tle-fmt.php); the epoch conversion follows Vallado's

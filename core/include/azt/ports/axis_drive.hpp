@@ -1,5 +1,5 @@
 #pragma once
-// What moves one axis, as the station controller sees it (issue 13 §2): an H-bridge, a pair of
+// What moves one axis, as the station controller sees it: an H-bridge, a pair of
 // relays, a rotator box given a setpoint, or the simulated plant's motor. The simulation and the
 // Linux and Hamlib adapters implement it; the station backend drives the one StationController's
 // duties through it ("the simulator is a HAL": one controller, whatever is behind the port).

@@ -1,5 +1,5 @@
 #pragma once
-// What reads one axis, as the station controller sees it (issue 13 §2): an EncoderHub's frames,
+// What reads one axis, as the station controller sees it: an EncoderHub's frames,
 // a potentiometer on an ADC, a rotator box's own position report, or the simulated encoder.
 // Implemented by the simulation and the Linux and Hamlib adapters.
 

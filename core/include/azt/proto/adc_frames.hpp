@@ -1,5 +1,5 @@
 #pragma once
-// The bytes on the wire for the two ADCs that read potentiometers (issue 6 §2), so the Linux
+// The bytes on the wire for the two ADCs that read potentiometers (docs/hardware.md), so the Linux
 // spidev and i2c-dev adapters only move bytes. Checked against the datasheets' figures.
 //
 // MCP3008 (Microchip DS21295, figure 6-1): 3 bytes in SPI mode 0. Out: 0x01 (start bit), then

@@ -30,10 +30,10 @@
 namespace azt {
 namespace proto {
 
-/// Why the hub has no position for an axis at this instant (issue 14). Only the CRC-8 frame
-/// version (ours) carries it: the axis's nibble is kHubErrorNibble (1, which the seed's format
-/// never uses) and its raw field holds this code. The seed version cannot say it; a hub sending
-/// seed frames skips the frame instead.
+/// Why the hub has no position for an axis at this instant (docs/encoder-hub.md). Only the CRC-8
+/// frame version (ours) carries it: the axis's nibble is kHubErrorNibble (1, which the seed's
+/// format never uses) and its raw field holds this code. The seed version cannot say it; a hub
+/// sending seed frames skips the frame instead.
 enum class HubAxisError : uint8_t {
   None = 0,
   NoEncoder = 1,       ///< the data line was not idle-high, or did not drop after the word

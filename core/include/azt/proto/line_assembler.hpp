@@ -3,7 +3,7 @@
 //
 // Bytes go in one at a time; a complete line (without its terminator) comes out when a terminator
 // byte arrives. A line longer than the bound is garbage: it is discarded up to and including the
-// next terminator and counted, so a flood of junk can never grow memory (DESIGN.md rule 5).
+// next terminator and counted, so a flood of junk can never grow memory.
 // Ignored bytes (GS-232 ignores LF) are dropped silently; they neither end nor extend a line.
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 #pragma once
-// The simplest receiver power feed (issue 16 §3): one power reading in dB per line, so any SDR
-// program, script or `echo` can send it, as UDP datagrams or lines on a pipe or file:
+// The simplest receiver power feed (docs/calibration.md): one power reading in dB per line, so any
+// SDR program, script or `echo` can send it, as UDP datagrams or lines on a pipe or file:
 //
 //   -42.1
 //   -41.87 dB

@@ -1,6 +1,6 @@
 #pragma once
 // rtl_power's CSV output (Debian package rtl-sdr), one line at a time: the receiver power input
-// for pointing scans (issue 16 §3). rtl_power.c's csv_dbm() prints, per hop of a sweep,
+// for pointing scans (docs/calibration.md). rtl_power.c's csv_dbm() prints, per hop of a sweep,
 //
 //   2024-01-02, 12:34:56, 1296000000, 1296500000, 1953.12, 10, -42.10, -41.90, ..., -41.95
 //
@@ -14,7 +14,7 @@
 // timestamp; a pointing scan measures one band, so it configures a range that fits one hop
 // (for example `rtl_power -f 1296M:1296.5M:2k -i 1`) and each line is one reading.
 //
-// Strict, as every codec here (DESIGN.md rule 5): numbers are read locale-free with from_chars,
+// Strict, as every codec here (docs/architecture.md): numbers are read locale-free with from_chars,
 // only spaces (and tabs) after a comma and one trailing "\r" are tolerated, and a field that is
 // empty, not a number, or followed by junk makes the whole line malformed. The date and time are
 // not used (the feed stamps each reading when it arrives, on the daemon's clock); they are only

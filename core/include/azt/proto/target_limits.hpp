@@ -26,7 +26,7 @@ struct TargetLimits {
     return el_deg >= el_min_deg && el_deg <= el_max_deg;
   }
   /// Why a value is refused ("az 500° is outside -180° to 450°"), "" when it is accepted: one
-  /// wording for every protocol and the console, so an operator reads one reason (issue 13 §1).
+  /// wording for every protocol and the console, so an operator reads one reason.
   [[nodiscard]] std::string why_not_az(double az_deg) const;
   [[nodiscard]] std::string why_not_el(double el_deg) const;
 };

@@ -1,6 +1,6 @@
 #pragma once
 // The outer shape of a Debian binary package, checked before an upload is handed to the root
-// update helper (issue 17 §2): a .deb is an ar(5) archive whose members are, in this order,
+// update helper (docs/packaging.md): a .deb is an ar(5) archive whose members are, in this order,
 // `debian-binary` ("2.0\n"), `control.tar[.gz|.xz|.zst]` and `data.tar[.gz|.xz|.zst|.bz2]`
 // (deb(5)). This check reads only the ar headers, so the operator learns at once that a file is
 // not a package at all; the helper's dpkg-deb checks the rest (the control fields, every byte of
@@ -24,7 +24,7 @@ struct DebArchive {
 };
 
 /// Up to `n` bytes of the archive from `offset` (fewer at its end): how the check reads a package
-/// it does not hold (an upload streamed to a file, issue 27 §10). It reads the headers and the
+/// it does not hold (an upload streamed to a file). It reads the headers and the
 /// few bytes of debian-binary only.
 using ReadAt = std::function<std::string(std::uint64_t offset, std::size_t n)>;
 

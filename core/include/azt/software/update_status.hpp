@@ -1,7 +1,7 @@
 #pragma once
 // What the root update helper (packaging/azeltrack-update) reports about the package it was
-// handed (issue 17 §2): key=value lines, rewritten whole (by rename) at each step, read by the
-// daemon for the console's Software page. Unknown keys are skipped, so a newer helper may say
+// handed (docs/packaging.md): key=value lines, rewritten whole (by rename) at each step, read by
+// the daemon for the console's Software page. Unknown keys are skipped, so a newer helper may say
 // more; a known key with a bad value makes the whole report an error, never half a report.
 //   phase=installing
 //   percent=40
@@ -35,7 +35,7 @@ struct UpdateStatus {
   std::string from_version;  ///< what was installed when the helper began
   std::string to_version;    ///< the package's version ("" until read from it)
   std::string sha256_hex;    ///< of the package the helper copied: ties it to an upload
-  /// Whose trusted key signed it ("" until the signature is verified): issue 27 §1.
+  /// Whose trusted key signed it ("" until the signature is verified): docs/packaging.md.
   std::string signer;
   std::int64_t at_unix_s = 0;
 };

@@ -1,6 +1,6 @@
 #pragma once
 // What chronyd says about the clock, as `chronyc -c tracking` and `chronyc -c -n sources` print
-// it (issue 15 §2): comma-separated values, one report per line, fields in the order of the
+// it (docs/time.md): comma-separated values, one report per line, fields in the order of the
 // human-readable reports (chronyc(1), "tracking" and "sources"). Pure parsers: the Linux side
 // runs chronyc and hands the text here, so every malformed line is a tested error, not a crash.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Whether the station's clock can be trusted (issue 15 §2): what chronyd says, what the kernel
+// Whether the station's clock can be trusted (docs/time.md): what chronyd says, what the kernel
 // says, and how old the reading is. Pure: the Linux side reads chronyc, adjtimex and /dev/rtc0
 // off the event loop and hands the reading here with the loop's monotonic time. Unsynchronised
 // is a banner, never a stop: the RTC holds time, and pointing with a clock a second off is still

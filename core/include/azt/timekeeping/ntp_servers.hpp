@@ -1,5 +1,5 @@
 #pragma once
-// The seed's "NTP Client Server" setting (issue 15 §2): the upstream NTP servers the operator
+// The seed's "NTP Client Server" setting (docs/time.md): the upstream NTP servers the operator
 // types, checked strictly because they end up as lines of chrony's configuration (a newline or
 // a space in a name would be a directive of the operator's choosing), and the chrony sources
 // file azeltrack writes for them (chrony.conf(5), "sourcedir").

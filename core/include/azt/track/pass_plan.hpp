@@ -1,5 +1,5 @@
 #pragma once
-// Pointing through a satellite pass (issue 7 §2, issue 16 §4). The plan is made once, before
+// Pointing through a satellite pass (docs/satellites.md). The plan is made once, before
 // AOS, for the whole pass, so the antenna never re-plans mid-way:
 //
 //  * the mount azimuth is a path no faster than the mount's rate, found as the one that keeps the

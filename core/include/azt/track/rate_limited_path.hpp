@@ -1,11 +1,11 @@
 #pragma once
-// A path through sets of allowed positions, one set per sample, no faster than a rate (issue 16
-// §4). The pass planner asks "can the azimuth keep the beam within e of the satellite at every
-// moment?": each moment allows a few intervals of azimuth (one per turn of the travel, or per half
-// turn on a flip mount), and the mount can only move so far between moments. Forward
-// reachability answers it exactly (the reachable set stays a union of intervals), and a path is
-// then read backwards through the reachable sets, as close as each moment allows to where the
-// caller would like it.
+// A path through sets of allowed positions, one set per sample, no faster than a rate
+// (docs/satellites.md). The pass planner asks "can the azimuth keep the beam within e of the
+// satellite at every moment?": each moment allows a few intervals of azimuth (one per turn of the
+// travel, or per half turn on a flip mount), and the mount can only move so far between moments.
+// Forward reachability answers it exactly (the reachable set stays a union of intervals), and a
+// path is then read backwards through the reachable sets, as close as each moment allows to where
+// the caller would like it.
 
 #include <functional>
 #include <optional>

@@ -11,7 +11,7 @@ struct Error {
   std::string message;
 };
 
-/// A value or an Error. The core never throws across a module boundary (DESIGN.md rule 4);
+/// A value or an Error. The core never throws across a module boundary;
 /// C++20 has no std::expected, so this is the small subset we need.
 template <typename T>
 class [[nodiscard]] Result {

@@ -1,8 +1,8 @@
 #pragma once
-// The EncoderHub firmware running on a simulated ATmega328P (simavr, issue 14 §2): the real ELF,
-// its jumper pins set as a station would fit them, an encoder model on each axis's SSI pins and
-// the bytes its USART sends, each with its simulated time. Time is the AVR's own: 16 MHz cycles,
-// so byte timing and frame rate are measured, not assumed.
+// The EncoderHub firmware running on a simulated ATmega328P (simavr, docs/encoder-hub.md): the real
+// ELF, its jumper pins set as a station would fit them, an encoder model on each axis's SSI pins
+// and the bytes its USART sends, each with its simulated time. Time is the AVR's own: 16 MHz
+// cycles, so byte timing and frame rate are measured, not assumed.
 
 #include <cstdint>
 #include <functional>

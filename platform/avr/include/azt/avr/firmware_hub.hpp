@@ -1,7 +1,7 @@
 #pragma once
-// The simulated station's EncoderHub as the real firmware (issue 14 §2, "firmware in the loop"):
-// the plants' encoder counts drive the encoder models on the simulated AVR's pins, and the
-// frames its USART sends come back through the daemon's own HubDecoder, each stamped with when
+// The simulated station's EncoderHub as the real firmware (docs/encoder-hub.md, "The firmware in
+// the loop"): the plants' encoder counts drive the encoder models on the simulated AVR's pins, and
+// the frames its USART sends come back through the daemon's own HubDecoder, each stamped with when
 // its last byte left the AVR. The AVR runs alongside the plants in steps of 5 ms.
 
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
-// An absolute encoder as its SSI pins see it (issue 14 §2), for running the hub firmware without
-// hardware: the AVR's clock and chip-select edges in, the data line's level out. Pure: time is
-// the simulated microseconds the caller passes in.
+// An absolute encoder as its SSI pins see it (docs/encoder-hub.md), for running the hub firmware
+// without hardware: the AVR's clock and chip-select edges in, the data line's level out. Pure: time
+// is the simulated microseconds the caller passes in.
 //
 // Generic SSI: the data line idles high; the first falling clock edge after the line has been
 // idle latches the count; each rising edge shifts out one bit, MSB first (Gray or binary); after

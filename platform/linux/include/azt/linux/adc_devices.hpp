@@ -1,5 +1,5 @@
 #pragma once
-// The two potentiometer ADCs of issue 6 §2 on the bus seams: an MCP3008 on SPI and an ADS1115
+// The two potentiometer ADCs (docs/hardware.md) on the bus seams: an MCP3008 on SPI and an ADS1115
 // on I2C. Only the transaction order lives here; the bytes come from proto/adc_frames.hpp and
 // the OS calls from the buses, so tests run them against recording fakes.
 

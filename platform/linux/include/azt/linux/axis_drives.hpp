@@ -1,5 +1,5 @@
 #pragma once
-// The Linux drives behind the core's AxisDrive port (issue 6 §1, issue 13 §2): an IBT-2 bridge on
+// The Linux drives behind the core's AxisDrive port (docs/hardware.md): an IBT-2 bridge on
 // sysfs PWM (its enables on GPIO lines when wired), relays on GPIO lines (forward/reverse, or
 // seed 002's power + polarity pair), and seed 001's MCP41010 in a rotator box that closes its own
 // loop. Each is off when destroyed.

@@ -1,5 +1,5 @@
 #pragma once
-// One look at the station's clock (issue 15 §2): chronyd's tracking and sources through chronyc
+// One look at the station's clock (docs/time.md): chronyd's tracking and sources through chronyc
 // (`-c` for CSV, `-n` so no name lookup can stall it, `-m` for both in one run), the kernel's
 // adjtimex verdict and the RTC. Blocks for as long as chronyc takes (bounded), so it runs on a
 // worker thread; the core's assess_clock judges the reading.

@@ -1,5 +1,5 @@
 #pragma once
-// Runs a well-kept tool and reads what it prints (chronyc, issue 15 §2): no shell, nothing on its
+// Runs a well-kept tool and reads what it prints (chronyc): no shell, nothing on its
 // standard input, its output bounded, and a deadline after which it is killed. It blocks until
 // the program ends, so it runs on a worker thread, never on the event loop.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The GPS receiver through gpsd (issue 15 §1): a TCP client on the daemon's Asio loop that asks
+// The GPS receiver through gpsd (docs/gps.md): a TCP client on the daemon's Asio loop that asks
 // gpsd to stream JSON (?WATCH) and decodes each report with libgps's own parser (gps_unpack), so
 // the protocol stays gpsd's to define. Connecting, reading and reconnecting are all asynchronous:
 // nothing here blocks the loop. When gpsd goes away (it restarts, it is not running yet) the

@@ -1,6 +1,6 @@
 #pragma once
 // A rotator box reached through Hamlib (a GS-232, SPID or EasyComm controller, or another
-// rotctld) behind the core's ports (issue 13 §2): it closes its own loop, so each axis is a
+// rotctld) behind the core's ports (docs/daemon.md): it closes its own loop, so each axis is a
 // setpoint drive, and its position report is each axis's sensor. The station's controller
 // supervises it as it does any other drive: stale reports, stalls, runaways and jumps stop it.
 

@@ -1,8 +1,8 @@
 #pragma once
 // A request as Boost.Beast parsed it, turned into the HttpRequest the console's handlers see:
 // every text field made valid UTF-8, so a Latin-1 or binary byte in a header never reaches JSON
-// or a log line as it is (issue 12 row 1). The server (web_server.cpp) and the request fuzz
-// target (fuzz/web_request_fuzz.cpp) both call this one function.
+// or a log line as it is (docs/reliability.md "Hardening" row 1). The server (web_server.cpp) and
+// the request fuzz target (fuzz/web_request_fuzz.cpp) both call this one function.
 
 #include <boost/beast/http/message.hpp>
 #include <boost/beast/http/string_body.hpp>

@@ -6,12 +6,13 @@
 // 8 KiB headers (431), 30 s idle HTTP connections, one pending frame per slow WebSocket client
 // (older frames are dropped, never queued).
 //
-// The operator can always reach STOP (issue 12): at most kMaxPerAddress connections from one
-// address; at most kMaxConnections in all, and when they are taken a new connection evicts the
-// oldest one that has shown no session, so a logged-in console is never pushed out by strangers;
-// WebSockets without a session share a pool of kMaxAnonymousWebSockets, and WebSockets of any
-// kind take at most kMaxWebSockets, so requests (a STOP) always find room. An exception from a
-// handler closes that one connection with a log line; the server carries on.
+// The operator can always reach STOP (docs/reliability.md "Hardening" row 5): at most
+// kMaxPerAddress connections from one address; at most kMaxConnections in all, and when they are
+// taken a new connection evicts the oldest one that has shown no session, so a logged-in console is
+// never pushed out by strangers; WebSockets without a session share a pool of
+// kMaxAnonymousWebSockets, and WebSockets of any kind take at most kMaxWebSockets, so requests (a
+// STOP) always find room. An exception from a handler closes that one connection with a log line;
+// the server carries on.
 
 #include <cstddef>
 #include <functional>
@@ -34,7 +35,7 @@ struct HttpReply {
 };
 
 /// Takes a request's body as it arrives, for a route whose body is too large to hold whole (a
-/// package upload, issue 27 §10): the transport reads the next chunk only once `write` has
+/// package upload): the transport reads the next chunk only once `write` has
 /// called `next`, so one chunk at a time is in memory. `next` with a reply refuses the rest of
 /// the body: the reply is sent, what the client still sends is dropped, the connection closes.
 class HttpBodySink {
@@ -86,7 +87,7 @@ class HttpServer {
     std::optional<HttpReply> refusal;
     /// Kept by the connection until the request is answered or the connection closes: a
     /// handler's token for "one at a time" decided from the head (a 60 MiB upload's body is
-    /// read only while it holds the one slot; issue 27 §10).
+    /// read only while it holds the one slot).
     std::shared_ptr<const void> hold;
     /// Given: the body goes to it chunk by chunk (never held whole) and the handler gets the
     /// request with HttpRequest::streamed_body set once the last chunk is taken.

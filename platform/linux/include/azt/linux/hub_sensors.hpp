@@ -1,5 +1,5 @@
 #pragma once
-// The EncoderHub's two encoders behind the core's AxisSensor port (issue 13 §2): one serial link
+// The EncoderHub's two encoders behind the core's AxisSensor port: one serial link
 // (HubSerialLink) whose frames both axes' sensors report. The hub sends its jumpers' bit
 // resolution in every frame: a frame whose bits are not the mount's is never read as an angle,
 // and the sensor latches a fault naming both until the operator clears it.

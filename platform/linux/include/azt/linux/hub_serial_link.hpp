@@ -1,7 +1,7 @@
 #pragma once
-// The EncoderHub on RS-485 through a USB adapter (issue 6 §2): a serial device read raw through
-// Asio and fed byte by byte to the core's HubDecoder. When the adapter goes away (a read error
-// or end of file: USB unplugged) the link says so, closes, and tries the path again every
+// The EncoderHub on RS-485 through a USB adapter (docs/hardware.md): a serial device read raw
+// through Asio and fed byte by byte to the core's HubDecoder. When the adapter goes away (a read
+// error or end of file: USB unplugged) the link says so, closes, and tries the path again every
 // retry period until the device is back — the supervisor meanwhile sees stale readings and stops
 // the drives. Nothing here blocks the loop.
 

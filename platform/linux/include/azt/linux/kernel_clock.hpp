@@ -1,5 +1,5 @@
 #pragma once
-// What the kernel says about the system clock (issue 15 §2): adjtimex(2) asked to change nothing
+// What the kernel says about the system clock (docs/time.md): adjtimex(2) asked to change nothing
 // (modes 0, allowed to any user) reports whether an NTP daemon keeps the clock synchronised,
 // and the error bounds it was given. And whether a battery-backed RTC is there to hold time.
 

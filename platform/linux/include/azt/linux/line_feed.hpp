@@ -1,6 +1,6 @@
 #pragma once
-// Text lines from another program, on the daemon's Asio loop (issue 16 §3: the receiver power
-// for pointing scans, rtl_power's CSV or one dB value a line). The path names either
+// Text lines from another program, on the daemon's Asio loop (docs/calibration.md: the receiver
+// power for pointing scans, rtl_power's CSV or one dB value a line). The path names either
 //   - a FIFO (mkfifo; `rtl_power ... > /run/azeltrack/power`): opened non-blocking and waited
 //     on through a stream descriptor until a writer has written (Linux reports a FIFO readable
 //     only once a writer came, so waiting for the first writer costs nothing). EOF means every

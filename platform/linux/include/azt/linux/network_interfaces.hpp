@@ -1,5 +1,5 @@
 #pragma once
-// The station's network links (issue 15 §3), as the seed's Ethernet and WiFi icons show them:
+// The station's network links (docs/network.md), as the seed's Ethernet and WiFi icons show them:
 // each interface's kind, link state, addresses and, for WiFi, the signal. Read from sysfs
 // (/sys/class/net: operstate, carrier, address, speed, type, wireless), getifaddrs(3) for the
 // addresses and /proc/net/wireless for the signal. The SSID is not in any of these: it comes

@@ -1,8 +1,8 @@
 #pragma once
-// The SSID and signal of each WiFi link from NetworkManager over the system D-Bus (issue 15 §3),
-// where NetworkManager runs (Raspberry Pi OS and Debian desktops do; a minimal Debian with
-// ifupdown does not, and then the SSID is simply not known). sd-bus from libsystemd, each call
-// bounded to 2 s; it blocks for that long at worst, so it runs off the event loop.
+// The SSID and signal of each WiFi link from NetworkManager over the system D-Bus
+// (docs/network.md), where NetworkManager runs (Raspberry Pi OS and Debian desktops do; a minimal
+// Debian with ifupdown does not, and then the SSID is simply not known). sd-bus from libsystemd,
+// each call bounded to 2 s; it blocks for that long at worst, so it runs off the event loop.
 
 #include <map>
 #include <optional>

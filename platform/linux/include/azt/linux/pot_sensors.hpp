@@ -1,5 +1,5 @@
 #pragma once
-// Potentiometer position sensors behind the core's AxisSensor port (issue 6 §2, issue 13 §2): a
+// Potentiometer position sensors behind the core's AxisSensor port (docs/hardware.md): a
 // pot on an MCP3008 (spidev) or on an ADS1115 (i2c-dev), read through the core's PotInput
 // (calibration, moving average, broken-wire and out-of-range checks). No read waits for a
 // conversion: the ADS1115 converts across control ticks (Ads1115Chip).

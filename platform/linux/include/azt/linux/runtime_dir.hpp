@@ -1,7 +1,7 @@
 #pragma once
 // Where the daemon puts what lives only while it runs (the pseudo-terminals' links): the
 // runtime directory, never a shared /tmp path that another user could create first and fill
-// with links of their own (issue 12 row 10).
+// with links of their own (docs/reliability.md "Hardening" row 10).
 
 #include <string>
 

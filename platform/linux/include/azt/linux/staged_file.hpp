@@ -1,6 +1,6 @@
 #pragma once
 // A file written in pieces and published whole at a path, or not at all: an upload streamed to
-// disk as it arrives (issue 27 §10), never held whole in memory. Until publish() it is an
+// disk as it arrives, never held whole in memory. Until publish() it is an
 // unnamed file in the target's folder (open(2)'s O_TMPFILE), so an abandoned upload, a kill or a
 // power cut leaves nothing behind, and nobody can open it by a name meanwhile. publish() makes it
 // durable and gives it its name in one rename(2): readers see the old file or the whole new one.

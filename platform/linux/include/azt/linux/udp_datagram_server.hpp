@@ -6,7 +6,7 @@
 //
 // A datagram longer than the buffer is never handed on cut short: the kernel reports its real
 // length (recv(2), MSG_TRUNC on Internet datagram sockets), and such a datagram is dropped whole
-// and reported to `on_oversized` (issue 27 §6: the cut last line of a 1,610-byte datagram had
+// and reported to `on_oversized` (before, the cut last line of a 1,610-byte datagram had
 // been read as a false receiver reading).
 
 #include <array>

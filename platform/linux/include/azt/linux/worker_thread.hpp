@@ -1,6 +1,6 @@
 #pragma once
 // Work that may block (an Argon2id password check, a configuration save that waits for a lock
-// and fsyncs) runs on one background thread, never on the event loop (DESIGN.md: no handler
+// and fsyncs) runs on one background thread, never on the event loop (docs/daemon.md: no handler
 // blocks the loop). A job is two halves: `work` runs on the worker, then `done` is posted back to
 // the io_context and runs on the loop, where it may touch the daemon's state. Jobs run one at a
 // time in the order posted, so saves reach the disk in order.
@@ -33,7 +33,7 @@ class WorkerThread {
   void post(Work work, Done done);  ///< ignored once finish() has begun
   /// Stops taking jobs, finishes every job asked for (a queued E-stop latch write must reach the
   /// disk), then joins; later calls return at once. An owner calls it before destroying anything
-  /// a job may reach (issue 27 §5), as StationDaemon's destructor does first of all. The `done`
+  /// a job may reach, as StationDaemon's destructor does first of all. The `done`
   /// halves of jobs finished after the loop ended never run.
   void finish();
   /// Jobs queued or running (for bounds and tests).

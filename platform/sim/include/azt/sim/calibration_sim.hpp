@@ -1,6 +1,6 @@
 #pragma once
-// Pointing calibration in simulation (issue 16 §3): the daemon's station on the simulated plants,
-// whose beam points wrong the way a real mount's does ([sim.mount_errors]: PlantSetup's
+// Pointing calibration in simulation (docs/calibration.md): the daemon's station on the simulated
+// plants, whose beam points wrong the way a real mount's does ([sim.mount_errors]: PlantSetup's
 // pointing_errors), scans the Sun, the Moon and the radio sources across the sky with the
 // simulated receiver, fits each scan, fits the pointing model to all of them and measures the
 // beam's error over the sky before and after. Each scan point is measured after the antenna

@@ -1,5 +1,5 @@
 #pragma once
-// Satellite passes on the simulated plant (issue 7 §2, §3, §4): synthetic pass geometry for
+// Satellite passes on the simulated plant (docs/satellites.md): synthetic pass geometry for
 // tests that must cover every kind of pass (north-crossing, overhead, grazing) without an
 // orbit library, and the run of the real StationController through a planned pass.
 

@@ -29,8 +29,8 @@ struct PlantSetup {
   LinkFaults link;
   std::vector<ScheduledFault> faults;  ///< any order: injected in time order
   std::uint64_t seed = 1;              ///< for the link faults
-  /// Where the beam really points for the mount's angles ([sim.mount_errors], issue 16 §3): the
-  /// plants turn and the encoders read true, but the beam is off as on a real, imperfect mount.
+  /// Where the beam really points for the mount's angles ([sim.mount_errors], docs/calibration.md):
+  /// the plants turn and the encoders read true, but the beam is off as on a real, imperfect mount.
   calibration::PointingTerms pointing_errors;
 };
 

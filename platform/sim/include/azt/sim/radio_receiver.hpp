@@ -1,5 +1,5 @@
 #pragma once
-// The simulated receiver of pointing calibration (issue 16 §3): the power a total-power
+// The simulated receiver of pointing calibration (docs/calibration.md): the power a total-power
 // radiometer reads through a Gaussian beam of configured width, from the Sun, the Moon and the
 // radio sources, each a Gaussian of its own angular size, over the system's noise; every reading
 // carries Gaussian noise of a configured size in dB (seeded: a run repeats exactly).

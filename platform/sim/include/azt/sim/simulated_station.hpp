@@ -1,5 +1,5 @@
 #pragma once
-// The simulated antenna behind the station's ports (issue 13 §2, issue 14 §2): the drives set
+// The simulated antenna behind the station's ports: the drives set
 // the plants' duties, the sensors report the hub's frames (plant_rig.hpp says how time runs).
 // The hub is the plain model or the firmware on a simulated AVR; the daemon's `sim` backend and
 // the virtual-time simulations (station_sim.hpp) build their station the same way.
