@@ -20,12 +20,12 @@ TMP = tempfile.mkdtemp(prefix="azt-azel-")
 check = Checks()
 
 
-def start(name, azel_path):
+def start(name, azel_path, extra="", export_extra=""):
     web = free_port()
     config = os.path.join(TMP, name + ".toml")
     with open(config, "w", encoding="utf-8") as f:
         f.write(station_toml(web_port=web).replace('name = "stop"', 'name = "moon"'))
-        f.write(f'[sky]\nband = "432"\n[export]\nazel_dat = "{azel_path}"\n')
+        f.write(f'[sky]\nband = "432"\n{extra}[export]\nazel_dat = "{azel_path}"\n{export_extra}')
     log = open(os.path.join(TMP, name + ".log"), "w", encoding="utf-8")
     p = subprocess.Popen([BIN, "serve", "--config", config], stdout=log, stderr=subprocess.STDOUT)
     base = f"http://127.0.0.1:{web}"
@@ -74,6 +74,18 @@ try:
     check(len(seen) >= 3, f"a new second at least every second: {sorted(seen)}")
     check(torn == 0, f"never torn or missing while polled: {torn}")
     check(os.listdir(TMP).count("azel.dat.bak") == 0, "no backup files for a per-second file")
+    daemon.send_signal(signal.SIGTERM)
+    daemon.wait(10)
+
+    # [export] azel_dat_pol_line: WSJT-X's fifth line, its Dpol the state's (DX in Europe).
+    path = os.path.join(TMP, "azel-pol.dat")
+    daemon, base, log = start("pol", path, 'dx_grid = "JO62"\n', "azel_dat_pol_line = true\n")
+    check(wait_until(lambda: os.path.exists(path), 5), "the file with the Pol line appears")
+    lines = open(path, encoding="ascii").read().splitlines()
+    dpol = http_json(base, "GET", "/api/state")[1]["moon"].get("dpol_deg")
+    check(len(lines) == 5 and lines[4].endswith(",Pol") and dpol is not None
+          and abs(float(lines[4].split(",")[0]) - dpol) < 0.15,
+          f"five lines, Dpol {lines[4:]} as the state's {dpol}")
     daemon.send_signal(signal.SIGTERM)
     daemon.wait(10)
 

@@ -13,6 +13,7 @@ ExportConfig export_config_from(const ConfigFile& file) {
            "must be an absolute file path (WSJT-X's is in its data folder, e.g. "
            "\"/home/op/.local/share/WSJT-X/azel.dat\")");
   }
+  c.azel_dat_pol_line = s.boolean("azel_dat_pol_line").value_or(false);
   return c;
 }
 

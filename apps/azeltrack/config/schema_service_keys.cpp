@@ -102,13 +102,18 @@ constexpr std::array<KeySpec, 5> kReceiver{{
      .help = "the receiver is silent after this long without a reading"},
 }};
 
-constexpr std::array<KeySpec, 1> kExport{{
+constexpr std::array<KeySpec, 2> kExport{{
     {.key = "azel_dat",
      .type = KeyType::Text,
      .default_toml = "\"\"",
      .help = "WSJT-X's azel.dat (Moon, Sun, tracked source, echo Doppler at the band), rewritten "
              "every second at this absolute file path for the programs that read it "
              "([eme.md](eme.md)); empty: none"},
+    {.key = "azel_dat_pol_line",
+     .type = KeyType::Boolean,
+     .default_toml = "false",
+     .help = "azel.dat gains WSJT-X's optional fifth line (Dpol, MNR, Dgrd, the self and DX echo "
+             "widths, its AzElExtraLines); off, as WSJT-X writes it by default"},
 }};
 
 constexpr std::array<SectionSpec, 4> kSections{{

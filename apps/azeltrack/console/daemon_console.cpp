@@ -76,8 +76,7 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
   throw ApiError(404, "", "no such action: " + action);
 }
 
-void DaemonConsole::act_direction_test(const json& body, const std::string& source,
-                                       ActDone done) {
+void DaemonConsole::act_direction_test(const json& body, const std::string& source, ActDone done) {
   if (p_.direction_test == nullptr) throw ApiError(404, "", "no direction test here");
   const std::string axis = body_text(body, "axis");
   auto finished = [done = std::move(done)](json result, std::optional<std::string> error) {
@@ -88,8 +87,8 @@ void DaemonConsole::act_direction_test(const json& body, const std::string& sour
     }
   };
   if (auto refused = p_.direction_test->start(axis, source, std::move(finished))) {
-    throw ApiError(axis == "az" || axis == "el" ? 409 : 400, axis == "az" || axis == "el" ? "" : "axis",
-                   *refused);
+    throw ApiError(axis == "az" || axis == "el" ? 409 : 400,
+                   axis == "az" || axis == "el" ? "" : "axis", *refused);
   }
   p_.log(source + ": direction test of the " + (axis == "az" ? "azimuth" : "elevation") + " axis");
 }

@@ -96,12 +96,12 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
           [this](const CommandSource& source, const Refusal& refusal) {
             control_event(source.name + ": refused: " + refusal.reason);
           }}),
-      direction_test_(DirectionTestParts{
-          *antenna_, commands_, modes_,
-          [this] {
-            return sequencer_->motion_hold() || sequencer_->state().value("transmitting", false);
-          },
-          [this] { return now_s(); }}),
+      direction_test_(DirectionTestParts{*antenna_, commands_, modes_,
+                                         [this] {
+                                           return sequencer_->motion_hold() ||
+                                                  sequencer_->state().value("transmitting", false);
+                                         },
+                                         [this] { return now_s(); }}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
           // The locator first: Hamlib shows 63 characters of it (format_get_info).
@@ -166,7 +166,8 @@ std::unique_ptr<AzelDatExport> StationDaemon::make_azel_dat_export() {
             return *t;
           },
           [this] { return sequencer_->state().value("transmitting", false); }, status_off_loop(),
-          linux_os::publish_file, [](const std::string& line) { spdlog::info("{}", line); }});
+          linux_os::publish_file, [](const std::string& line) { spdlog::info("{}", line); },
+          config_.exports.azel_dat_pol_line});
 }
 
 Offload StationDaemon::status_off_loop() {

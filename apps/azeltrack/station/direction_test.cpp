@@ -50,7 +50,8 @@ std::optional<std::string> DirectionTest::start(const std::string& axis, const s
 
 std::optional<control::Demand> DirectionTest::demand(double now_s) const {
   if (!running() || now_s - started_s_ >= kDriveS) return std::nullopt;
-  control::Demand d{std::nullopt, azimuth_ ? "direction test: azimuth" : "direction test: elevation",
+  control::Demand d{std::nullopt,
+                    azimuth_ ? "direction test: azimuth" : "direction test: elevation",
                     std::nullopt};
   d.test = control::AxisTest{azimuth_, 1};
   return d;

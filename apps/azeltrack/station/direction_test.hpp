@@ -28,7 +28,8 @@ struct DirectionTestParts {
 
 /// The test's answer: {axis, commanded, before_deg, after_deg, moved_deg, verdict} with verdict
 /// "ok", "reversed" or "no movement"; or why it did not finish ({"error": …}).
-using DirectionTestDone = std::function<void(nlohmann::json result, std::optional<std::string> error)>;
+using DirectionTestDone =
+    std::function<void(nlohmann::json result, std::optional<std::string> error)>;
 
 class DirectionTest {
  public:

@@ -117,7 +117,9 @@ double AxisController::drive_open(double wanted, double dt_s) {
     halt();
     return 0.0;
   }
-  moving_ = wanted != 0.0;
+  // Not a move towards a goal: when the test ends, the holding tick finds the axis at rest and
+  // ramps the duty down (a soft stop) instead of cutting it as an arrived move would.
+  moving_ = false;
   return slew_duty(std::clamp(wanted, -1.0, 1.0), dt_s);
 }
 

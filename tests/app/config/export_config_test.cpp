@@ -19,6 +19,9 @@ TEST(ExportConfig, AzelDatIsOffUnlessSet) {
   EXPECT_EQ(from("").azel_dat, "");
   EXPECT_EQ(from("[export]\nazel_dat = \"/home/op/.local/share/WSJT-X/azel.dat\"\n").azel_dat,
             "/home/op/.local/share/WSJT-X/azel.dat");
+  EXPECT_FALSE(from("").azel_dat_pol_line);  // four lines, as WSJT-X by default
+  EXPECT_TRUE(from("[export]\nazel_dat_pol_line = true\n").azel_dat_pol_line);
+  EXPECT_THROW(from("[export]\nazel_dat_pol_line = 1\n"), UsageError) << "not a boolean";
 }
 
 TEST(ExportConfig, ARelativePathOrAFolderIsRefused) {

@@ -12,16 +12,22 @@
 
 namespace azt::app::testing {
 
-/// An antenna standing at az 100°, el 20°, with faults the test sets.
+/// An antenna standing at az 100°, el 20°, with faults the test sets. Only a direction test
+/// moves it: the tested axis at `test_rate_deg_s` per tick, the other way when `reversed`.
 class StandingAntenna final : public AntennaBackend {
  public:
-  void tick(double /*now_s*/, const control::Demand& /*demand*/,
-            const control::AzEl& /*rate*/) override {}
+  void tick(double /*now_s*/, const control::Demand& demand,
+            const control::AzEl& /*rate*/) override {
+    if (!demand.test) return;
+    const double step = (reversed ? -1.0 : 1.0) * demand.test->direction * test_step_deg;
+    (demand.test->azimuth ? az_deg : el_deg) += step;
+  }
   [[nodiscard]] std::optional<proto::PositionReport> position(double /*now_s*/) const override {
+    if (lost) return std::nullopt;
     proto::PositionReport r;
-    r.az_deg = 100.0;
-    r.el_deg = 20.0;
-    r.az_mount_deg = 100.0;
+    r.az_deg = az_deg;
+    r.el_deg = el_deg;
+    r.az_mount_deg = az_deg;
     r.fault = !faults_.empty();
     return r;
   }
@@ -35,6 +41,11 @@ class StandingAntenna final : public AntennaBackend {
   [[nodiscard]] std::string describe() const override { return "standing antenna"; }
 
   std::vector<std::string> faults_;
+  double az_deg = 100.0;
+  double el_deg = 20.0;
+  double test_step_deg = 0.0;  ///< how far a direction test's tick moves the tested axis
+  bool reversed = false;
+  bool lost = false;  ///< the position unknown
 };
 
 /// The front door of a station with the Sun and the Moon as targets, on a 0–450° mount with

@@ -319,5 +319,52 @@ TEST(StationController, AReadingJustPastTheOverlapStopStaysOnItsSide) {
   EXPECT_FALSE(station.faulted());
 }
 
+// The direction test (docs/hardware.md): one axis open loop and slow, the other holding.
+Demand direction_test(bool azimuth) {
+  Demand d;
+  d.test = AxisTest{azimuth, 1};
+  return d;
+}
+
+TEST(StationController, TheDirectionTestDrivesOneAxisSlowlyTheOneWay) {
+  Rig rig;
+  rig.run(Demand{}, 1.0);
+  const double az0 = rig.az.shaft_deg();
+  const double el0 = rig.el.shaft_deg();
+  rig.run(direction_test(false), 1.0);
+  EXPECT_GT(rig.el.shaft_deg() - el0, 0.1);
+  EXPECT_NEAR(rig.az.shaft_deg(), az0, 1e-9);
+  EXPECT_GT(rig.station.el().duty, 0.0);
+  EXPECT_LT(rig.station.el().duty, rig.setup.station.el_supervisor.driven_duty);
+  EXPECT_FALSE(rig.station.faulted());
+}
+
+TEST(StationController, AReversedMotorUnderTheDirectionTestIsAnAnswerNotARunaway) {
+  Rig rig;
+  const double az0 = rig.az.shaft_deg();
+  for (double end = rig.t + 1.0; rig.t < end; rig.t += rig.setup.station.tick_s) {
+    rig.station.on_encoder_reading(rig.t, wrap_360(rig.az.shaft_deg()), rig.el.shaft_deg());
+    const Duties d = rig.station.tick(rig.t, direction_test(true), AzEl{});
+    rig.az.step(-d.az, rig.setup.station.tick_s);  // the motor's wires swapped
+    rig.el.step(d.el, rig.setup.station.tick_s);
+  }
+  EXPECT_LT(rig.az.shaft_deg() - az0, -0.1);
+  EXPECT_FALSE(rig.station.faulted());
+  // The test over, the holding axis ramps down (a soft stop) and stays put.
+  rig.run(Demand{}, 1.0);
+  EXPECT_EQ(rig.station.az().duty, 0.0);
+}
+
+TEST(StationController, TheDirectionTestStopsAtATrippedSwitch) {
+  Rig rig;
+  LimitSwitches limits;
+  limits.el_up = true;
+  rig.station.set_limits(limits);
+  const double el0 = rig.el.shaft_deg();
+  rig.run(direction_test(false), 1.0);
+  EXPECT_EQ(rig.station.el().duty, 0.0);
+  EXPECT_NEAR(rig.el.shaft_deg(), el0, 1e-9);
+}
+
 }  // namespace
 }  // namespace azt::control
