@@ -10,13 +10,16 @@ const dgram = require('dgram');
 const fs = require('fs');
 const path = require('path');
 const {
-  setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
-  stopDaemon, scenarioWithShots, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown,
+  DESKTOP, PHONE, setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
+  stopDaemon, scenario: check, scenarioWithShots, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown,
   summarise, run,
 } = require('./harness');
 
 const { outDir, tmp, config } = setup('console_test.js', 'azt-browser-');
 const PASSWORD = 'browser-test-password';
+const WEIGHT_BUDGET = 200 * 1000; // the console's first load, uncompressed (docs/web-api.md)
+// The pages' modules loaded when the page is first opened (navigation.js), not at start.
+const LAZY_MODULES = ['/js/planner.js', '/js/scan.js', '/js/software.js', '/js/settings.js', '/js/settings_account.js'];
 const sourcesFile = path.join(tmp, 'sources.d', 'azeltrack.sources');
 let port = 0;
 let gpsdPort = 0;
@@ -114,7 +117,8 @@ stale_s = 2.0
   setPassword(PASSWORD);
 }
 
-// Every scenario leaves its screenshots (the harness's scenarioWithShots).
+// Every scenario leaves its screenshots (the harness's scenarioWithShots); check() is one that
+// takes its own, or none.
 const scenario = (name, page, body) => scenarioWithShots(name, page, outDir, body);
 
 async function login(page) {
@@ -137,6 +141,67 @@ async function colourIs(page, sel, variable) {
     return getComputedStyle(document.querySelector(s)).color === want;
   }, [sel, variable]);
 }
+
+// The planner's table at this size: every column shown, and either all of it within the card or
+// a scroller whose hint and right-hand fade show while there is more to the right, gone at the
+// end. Returns true, or (with `why`) what is wrong.
+async function plannerCue(page, why = false) {
+  const r = await page.evaluate(async () => {
+    const s = document.getElementById('planner-scroll');
+    const box = document.getElementById('planner-box');
+    const table = document.getElementById('planner-table');
+    const fade = () => getComputedStyle(box.querySelector('.scroll-edge'), '::after').opacity;
+    const hint = () => document.getElementById('planner-more').checkVisibility();
+    const hidden = [...table.querySelectorAll('th')].filter((th) => !th.checkVisibility()).map((th) => th.textContent);
+    const card = box.closest('.card').getBoundingClientRect();
+    const out = { hidden, over: s.scrollWidth - s.clientWidth, right: s.getBoundingClientRect().right, card: card.right };
+    if (hidden.length || out.right > card.right + 0.5 || out.right > window.innerWidth) return { ...out, ok: false };
+    if (out.over <= 1) return { ...out, ok: !hint() && fade() === '0' };
+    s.scrollLeft = 0;
+    await new Promise((res) => setTimeout(res, 250));
+    const start = { hint: hint(), fade: fade() };
+    s.scrollLeft = s.scrollWidth;
+    await new Promise((res) => setTimeout(res, 250));
+    const end = { fade: fade() };
+    s.scrollLeft = 0;
+    return { ...out, start, end, ok: start.hint && start.fade === '1' && end.fade === '0' };
+  });
+  return why ? r : r.ok;
+}
+
+// Notices (toast.js) made as the page makes them, one of them an error and one long.
+const someToasts = (page) => page.evaluate(async () => {
+  const { toast } = await import('/js/toast.js');
+  toast('Station locator saved.');
+  toast('TRACK Taurus A');
+  toast('start the scan: the receiver has no readings (a scan needs them); check [receiver] and the feed', 'err');
+});
+// Where the notices are now: none covers STOP, and a tap on any visible control under one reaches
+// that control. Returns the problems found and how many controls lie under a notice.
+const toastProblems = (page) => page.evaluate(() => {
+  const out = [];
+  const toasts = [...document.querySelectorAll('#toasts > .toast')].map((t) => t.getBoundingClientRect());
+  if (!toasts.length) return { out: ['no notice shown'], under: 0 };
+  const meets = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+  const stop = document.getElementById('btn-stop');
+  const rs = stop.getBoundingClientRect();
+  if (toasts.some((t) => meets(t, rs))) out.push('a notice covers STOP');
+  if (document.elementFromPoint(rs.left + rs.width / 2, rs.top + rs.height / 2) !== stop) out.push('STOP is not what a tap on it reaches');
+  let under = 0;
+  for (const c of document.querySelectorAll('button, a[href], input, select, textarea, summary')) {
+    if (c.closest('#toasts') || !c.checkVisibility({ visibilityProperty: true })) continue;
+    const r = c.getBoundingClientRect();
+    for (const t of toasts) {
+      if (!meets(t, r)) continue;
+      const x = (Math.max(t.left, r.left) + Math.min(t.right, r.right)) / 2;
+      const y = (Math.max(t.top, r.top) + Math.min(t.bottom, r.bottom)) / 2;
+      const hit = document.elementFromPoint(x, y);
+      ++under;
+      if (!hit || !(hit === c || c.contains(hit))) out.push(`a notice stands over ${c.id || c.textContent.trim().slice(0, 20)} (a tap reaches ${hit ? hit.id || hit.className : 'nothing'})`);
+    }
+  }
+  return { out, under };
+});
 
 async function main() {
   port = await freePort();
@@ -425,6 +490,12 @@ async function main() {
       if (api.windows.length < 3) throw new Error(`5 days, ${api.windows.length} windows`);
       const first = await text(page, '#planner-rows tr:first-child td:first-child');
       if (!first.includes(api.windows[0].start.slice(11, 16))) throw new Error(`first window ${first} vs ${api.windows[0].start}`);
+      // Every column at every size: it fits, or it scrolls sideways with the hint and the fade.
+      for (const vp of [PHONE, { width: 320, height: 700 }, DESKTOP]) {
+        await page.setViewportSize(vp);
+        await until(`the table at ${vp.width} px: fits, or scrolls and says so`, () => plannerCue(page), 2000)
+          .catch(async (e) => { throw new Error(`${e.message}: ${JSON.stringify(await plannerCue(page, true))}`); });
+      }
       await page.fill('#planner-dx', 'ZZ99');
       await until('the refusal', async () => (await text(page, '#planner-msg')).startsWith('Not found:'), 10000);
       if ((await page.$$('#planner-rows tr')).length !== 0) throw new Error('rows kept after a refusal');
@@ -587,28 +658,141 @@ async function main() {
       if (shown.includes('lo')) throw new Error('loopback listed');
     });
 
-    await scenario('on a phone the header keeps STOP and the status icons on screen', page, async () => {
+    await scenario('on a phone the header keeps STOP, the status icons and the antenna\'s az/el on screen', page, async () => {
       await page.click('#nav-main');
-      for (const width of [320, 375]) {
-        await page.setViewportSize({ width, height: 740 });
-        const boxes = await page.evaluate(() => ['btn-stop', 'ico-gps', 'ico-eth', 'ico-wifi', 'conn-dot', 'login-state', 'logout-btn']
-          .map((id) => { const r = document.getElementById(id).getBoundingClientRect(); return { id, l: r.left, r: r.right, w: r.width }; }));
-        for (const b of boxes) if (b.w <= 0 || b.l < 0 || b.r > width) throw new Error(`${b.id} is off a ${width} px screen: ${JSON.stringify(b)}`);
+      for (const width of [320, 375, 390]) {
+        await page.setViewportSize({ width, height: 844 });
+        const problems = await page.evaluate((vw) => {
+          const out = [];
+          const ids = ['btn-stop', 'ico-gps', 'ico-eth', 'ico-wifi', 'conn-dot', 'mini-az', 'mini-el', 'login-state', 'logout-btn', 'theme-btn'];
+          const boxes = ids.map((id) => [id, document.getElementById(id).getBoundingClientRect()]);
+          for (const [id, r] of boxes) {
+            const e = document.getElementById(id);
+            if (!e.checkVisibility({ visibilityProperty: true, opacityProperty: true }) || r.width <= 0 || r.left < 0 || r.right > vw || r.top < 0) out.push(`${id} is off the screen (${r.left.toFixed(1)}…${r.right.toFixed(1)})`);
+            // what a tap or an eye reaches there is the control itself, nothing drawn over it
+            const hit = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+            if (!hit || !(hit === e || e.contains(hit))) out.push(`${id} is covered by ${hit ? hit.id || hit.className : 'nothing'}`);
+          }
+          for (const [a, ra] of boxes) {
+            for (const [b, rb] of boxes) {
+              if (a < b && ra.left < rb.right - 0.5 && rb.left < ra.right - 0.5 && ra.top < rb.bottom - 0.5 && rb.top < ra.bottom - 0.5) out.push(`${a} overlaps ${b}`);
+            }
+          }
+          for (const id of ['mini-az', 'mini-el']) if (!/^\d+\.\d\d°$/.test(document.getElementById(id).textContent)) out.push(`${id} reads “${document.getElementById(id).textContent}”`);
+          return out;
+        }, width);
+        if (problems.length) throw new Error(`at ${width} px: ${problems.join('; ')}`);
       }
       for (const s of ['gps', 'time', 'network', 'scan']) {
         await page.evaluate((n) => { location.hash = n; }, s);
         await until(`the ${s} page`, () => page.isVisible(`#screen-${s}`), 3000);
         const w = await page.evaluate(() => document.documentElement.scrollWidth);
-        if (w > 375) throw new Error(`the ${s} page is ${w} px wide on a 375 px phone`);
+        if (w > 390) throw new Error(`the ${s} page is ${w} px wide on a 390 px phone`);
       }
       await page.setViewportSize({ width: 1280, height: 800 });
     });
 
+    await check('notices never cover STOP, a tap goes through them to the control underneath and clears them', async () => {
+      for (const [vp, screen] of [[PHONE, 'main'], [PHONE, 'setup'], [DESKTOP, 'setup']]) {
+        await page.setViewportSize(vp);
+        await page.evaluate((n) => { location.hash = n; window.scrollTo(0, document.documentElement.scrollHeight); }, screen);
+        await until(`the ${screen} page`, () => page.isVisible(`#screen-${screen}`), 3000);
+        await someToasts(page);
+        // On the phone's main screen, TRACK right under the notices: the case to prove.
+        if (vp === PHONE && screen === 'main') {
+          await page.evaluate(() => {
+            const t = document.querySelector('#toasts > .toast:last-child').getBoundingClientRect();
+            const b = document.getElementById('btn-track').getBoundingClientRect();
+            window.scrollBy(0, (b.top + b.bottom) / 2 - (t.top + t.bottom) / 2);
+          });
+        }
+        const { out, under } = await toastProblems(page);
+        if (out.length) throw new Error(`${screen} at ${vp.width} px: ${out.join('; ')}`);
+        if (vp === PHONE && screen === 'main' && !under) throw new Error('no control under the notices: the check saw nothing');
+        if (vp === PHONE && screen === 'main') await page.screenshot({ path: path.join(outDir, 'toasts-phone.png') });
+        // A tap through a notice (where no control is under it: the check above covers those)
+        // reaches the page, and the notices step aside.
+        const spot = await page.evaluate(() => {
+          const r = document.querySelector('#toasts > .toast').getBoundingClientRect();
+          for (const f of [0.5, 0.2, 0.8]) {
+            const x = r.left + r.width * f; const y = r.top + r.height / 2;
+            const hit = document.elementFromPoint(x, y);
+            if (hit && !hit.closest('button, a, input, select, textarea, summary, label, .toast')) return { x, y };
+          }
+          const m = document.getElementById('mini').getBoundingClientRect();
+          return { x: m.left + m.width / 2, y: m.top + m.height / 2 };
+        });
+        await page.mouse.click(spot.x, spot.y);
+        await until('the notices cleared by the tap', async () => (await page.$$('#toasts > .toast')).length === 0, 2000);
+      }
+      await page.setViewportSize(DESKTOP);
+    });
+
+    await check('the Setup page\'s footer stands below its cards, clear of the Software card', async () => {
+      await page.click('#nav-setup');
+      for (const vp of [DESKTOP, PHONE]) {
+        await page.setViewportSize(vp);
+        const bad = await page.evaluate(() => {
+          const foot = document.getElementById('setup-foot');
+          const f = foot.getBoundingClientRect();
+          if (!foot.checkVisibility() || f.height <= 0) return 'the footer is not shown';
+          const cards = [...document.querySelectorAll('#screen-setup > .card')];
+          const hit = cards.find((c) => { const r = c.getBoundingClientRect(); return f.left < r.right && r.left < f.right && f.top < r.bottom && r.top < f.bottom; });
+          if (hit) return `the footer runs into the ${hit.querySelector('h2').textContent} card`;
+          if (cards.some((c) => c.getBoundingClientRect().bottom > f.top)) return 'a card ends below the footer\'s top';
+          return '';
+        });
+        if (bad) throw new Error(`${vp.width} px: ${bad}`);
+      }
+      await page.setViewportSize(DESKTOP);
+    });
+
+    // Every page at both sizes, screenshot and all: a console error or a Content-Security-Policy
+    // violation on any of them fails the test (checkPageErrors), and none is wider than a phone.
+    await login(page);
+    await check('every page is shown, at 1280×800 and 390×844', async () => {
+      const ready = {
+        main: '#ant-az', targets: '#sources .tgt', sky: '#sky-plot circle', manual: '#man-az', antenna: '#tilt-grid input',
+        setup: '#setup-software', gps: '#gps-badge', time: '#time-badge', network: '#net-list [data-iface]',
+        planner: '#planner-msg', scan: '#scan-source option', software: '#sw-version', settings: '#settings-body details',
+        account: '#token-list tr',
+      };
+      const wide = [];
+      for (const [name, sel] of Object.entries(ready)) {
+        await page.evaluate((n) => { location.hash = n; }, name);
+        await until(`the ${name} page`, async () => (await page.isVisible(`#screen-${name}`)) &&
+          page.$eval(sel, (e) => e.textContent.trim() !== '—').catch(() => false), 5000);
+        for (const [size, vp] of [['desktop', DESKTOP], ['phone', PHONE]]) {
+          await page.setViewportSize(vp);
+          await sleep(100);
+          await page.screenshot({ path: path.join(outDir, `page-${name}-${size}.png`), fullPage: name !== 'settings' });
+          if (size === 'phone') {
+            const w = await page.evaluate(() => document.documentElement.scrollWidth);
+            if (w > PHONE.width) wide.push(`${name} ${w} px`);
+          }
+        }
+      }
+      await page.setViewportSize(DESKTOP);
+      if (wide.length) throw new Error(`wider than a ${PHONE.width} px phone: ${wide.join(', ')}`);
+    });
+
     // Measurements (not pass/fail): page weight and state-change -> DOM latency. Sessions live in
     // the daemon's memory, so the restarts above logged the page out (login() is a no-op if not).
-    await login(page);
     await page.click('#nav-main');
-    const { bytes } = await pageWeight(page, '/');
+    // The console's first load, in a page of its own: the page, its style sheet and the modules it
+    // loads at start (the pages' own modules come when they are first opened).
+    const fresh = await browser.ctx.newPage();
+    fresh.on('console', (m) => { if (m.type() === 'error') browser.errors.push(`console (first load): ${m.text()}`); });
+    await fresh.goto(base + '/', { waitUntil: 'load' });
+    await until('live numbers on the first load', async () => /\d/.test(await text(fresh, '#ant-az')));
+    const { bytes, all } = await pageWeight(fresh, '/');
+    await fresh.close();
+    console.log(`measure: page weight ${bytes} bytes (${(bytes / 1000).toFixed(1)} KB) in ${all.length} files`);
+    await check(`the console's first load weighs less than ${WEIGHT_BUDGET / 1000} KB`, async () => {
+      if (bytes >= WEIGHT_BUDGET) throw new Error(`${bytes} bytes: ${all.join(' ')}`);
+      const early = all.filter((f) => LAZY_MODULES.includes(f));
+      if (early.length) throw new Error(`loaded at start: ${early.join(' ')}`);
+    });
     const latencies = await page.evaluate(async () => {
       const csrf = (await (await fetch('/api/session')).json()).csrf;
       const el = document.getElementById('target-name');
@@ -631,7 +815,7 @@ async function main() {
     });
     latencies.sort((a, b) => a - b);
     const seenAll = latencies.every((x) => Number.isFinite(x));
-    console.log(`measure: page weight ${bytes} bytes; state change -> DOM median ${latencies[5].toFixed(1)} ms, max ${latencies[9].toFixed(1)} ms (10 target changes${seenAll ? '' : ', some never shown'})`);
+    console.log(`measure: state change -> DOM median ${latencies[5].toFixed(1)} ms, max ${latencies[9].toFixed(1)} ms (10 target changes${seenAll ? '' : ', some never shown'})`);
     checkPageErrors(browser.errors);
   } finally {
     stopGpsfake();

@@ -16,6 +16,9 @@ let config = '';
 let base = '';
 let daemon = null;
 const results = [];
+// The sizes every page is seen at (docs/web-api.md): a desktop and a phone.
+const DESKTOP = { width: 1280, height: 800 };
+const PHONE = { width: 390, height: 844 };
 
 /// Reads `node SCRIPT AZELTRACK OUT_DIR`, makes OUT_DIR and a temporary directory (TMP_PREFIX…)
 /// for the daemon's settings and log.
@@ -149,28 +152,32 @@ async function scenario(name, body) {
 async function scenarioWithShots(name, page, outDir, body) {
   await scenario(name, body);
   const slug = name.replace(/[^a-z0-9]+/gi, '-').toLowerCase().replace(/-+$/, '');
-  for (const [size, vp] of [['desktop', { width: 1280, height: 800 }], ['phone', { width: 375, height: 740 }]]) {
+  for (const [size, vp] of [['desktop', DESKTOP], ['phone', PHONE]]) {
     try {
       await page.setViewportSize(vp);
       await sleep(150);
       await page.screenshot({ path: path.join(outDir, `${slug}-${size}.png`), fullPage: true });
     } catch (e) { console.log(`     (screenshot ${size}: ${e.message})`); }
   }
-  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.setViewportSize(DESKTOP);
 }
 
 const loggedIn = (page) => page.evaluate(async () => (await (await fetch('/api/session')).json()).logged_in);
 async function text(page, sel) { return (await page.textContent(sel) || '').trim(); }
 
 // Serves web/ from disk in place of the daemon's built-in copy (AZT_WEB_DIR): `pages` maps the
-// page's own paths to its files; the modules under js/ are common to every page.
+// page's own paths to its files; the modules under js/ are common to every page. Each file goes
+// with the daemon's Content-Security-Policy, so that a violation shows here as it would there.
 async function serveWebDir(ctx, dir, pages) {
   const types = { '.html': 'text/html; charset=utf-8', '.css': 'text/css; charset=utf-8', '.js': 'text/javascript; charset=utf-8' };
+  const csp = (await fetch(base + '/')).headers.get('content-security-policy');
+  if (!csp) throw new Error('the daemon sent no Content-Security-Policy');
   await ctx.route(`${base}/**`, (route) => {
     const p = new URL(route.request().url()).pathname;
     const file = pages[p] || (/^\/js\/[a-z_]+\.js$/.test(p) ? p.slice(1) : null);
     if (!file) return route.continue();
-    return route.fulfill({ status: 200, contentType: types[path.extname(file)], body: fs.readFileSync(path.join(dir, file)) });
+    return route.fulfill({ status: 200, contentType: types[path.extname(file)], headers: { 'Content-Security-Policy': csp },
+      body: fs.readFileSync(path.join(dir, file)) });
   });
 }
 
@@ -202,14 +209,17 @@ async function launch(pages, options) {
 }
 
 /// What the page weighs: `first` (its HTML) and every script and style sheet it loaded, each
-/// counted once, fetched again for its size uncompressed.
+/// counted once, fetched again by the page for its size uncompressed (so that AZT_WEB_DIR's files
+/// are the ones measured).
 async function pageWeight(page, first) {
-  let bytes = 0;
-  const files = await page.evaluate(() => performance.getEntriesByType('resource')
-    .map((e) => new URL(e.name).pathname).filter((p) => p.endsWith('.js') || p.endsWith('.css')));
-  const all = [first, ...new Set(files)];
-  for (const f of all) bytes += (await (await fetch(base + f)).arrayBuffer()).byteLength;
-  return { bytes, all };
+  return page.evaluate(async (html) => {
+    const files = performance.getEntriesByType('resource')
+      .map((e) => new URL(e.name).pathname).filter((p) => p.endsWith('.js') || p.endsWith('.css'));
+    const all = [html, ...new Set(files)];
+    let bytes = 0;
+    for (const f of all) bytes += (await (await fetch(f, { cache: 'no-store' })).arrayBuffer()).byteLength;
+    return { bytes, all };
+  }, first);
 }
 
 // An uncaught error on the page fails the test even when every scenario passed.
@@ -248,6 +258,7 @@ function run(main, cleanUp = () => {}) {
 }
 
 module.exports = {
+  DESKTOP, PHONE,
   setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
   stopDaemon, scenario, scenarioWithShots, skip, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown, summarise, run,
 };

@@ -9,7 +9,6 @@ import { drawTrend, TREND_S } from './trend.js';
 import { drawSky } from './sky.js';
 import { markActiveTarget } from './targets.js';
 import { renderStation } from './station.js';
-import { renderScan } from './scan.js';
 import { renderCorrectionsAndPosition } from './position.js';
 
 // "AOS 12:34 · max 83° · 8 s beyond 10° from 12:40:05", or the tracker's phase.
@@ -110,7 +109,6 @@ export function onState(st) {
     setText('man-cur-mode', `${mode}${st.who ? ` (${st.who})` : ''}`);
   }
   if (S.screen === 'targets') markActiveTarget();
-  if (S.screen === 'scan') renderScan();
 }
 
 function renderFaults(list) {

@@ -4,7 +4,7 @@
 import { S } from './state.js';
 import { $, setText } from './dom.js';
 import { refreshSession, setLoggedIn } from './session.js';
-import { show } from './navigation.js';
+import { renderPage, show } from './navigation.js';
 import { connect, setConnected, useSocket, watchSocket } from './socket.js';
 import { onState } from './live.js';
 import { drawTrend } from './trend.js';
@@ -12,13 +12,12 @@ import { loadSky } from './sky.js';
 import { loadTargets } from './targets.js';
 import { buildPark, buildTilt, drawTilt, loadConfig } from './setup.js';
 import { applyTheme, wire } from './wire.js';
-import { renderScan } from './scan.js';
-import { renderForm as renderSoftwareForm } from './software.js';
 
 function start() {
-  // The software page's form follows the login, which any screen can change: each state message
-  // brings it up to date (its own polling is slower).
-  const state = (st) => { onState(st); if (S.screen === 'software') renderSoftwareForm(); };
+  // The pages loaded on demand that follow the live state (the pointing scan; the software page's
+  // form, which follows the login that any screen can change) are brought up to date by each
+  // state message.
+  const state = (st) => { onState(st); renderPage(); };
   useSocket({ state, connected: () => { if (!S.config) loadConfig(); if (!S.targets) loadTargets(); } });
   applyTheme(localStorage.getItem('azt.theme') || 'dark');
   buildPark();
@@ -41,6 +40,6 @@ function start() {
   setInterval(() => { if (!document.hidden && S.screen === 'sky') loadSky(); }, 60000);
   setInterval(() => { if (S.screen === 'main' && !S.connected) drawTrend(true); }, 1000);
   let rt = 0;
-  window.addEventListener('resize', () => { clearTimeout(rt); rt = setTimeout(() => { if (S.screen === 'main') drawTrend(true); if (S.screen === 'antenna') drawTilt(); if (S.screen === 'scan') renderScan(true); }, 150); });
+  window.addEventListener('resize', () => { clearTimeout(rt); rt = setTimeout(() => { if (S.screen === 'main') drawTrend(true); if (S.screen === 'antenna') drawTilt(); if (S.screen === 'scan') renderPage(true); }, 150); });
 }
 if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start); else start();

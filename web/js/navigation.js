@@ -5,11 +5,8 @@ import { $ } from './dom.js';
 import { drawTrend } from './trend.js';
 import { drawSky, loadSky } from './sky.js';
 import { loadTargets } from './targets.js';
-import { drawTilt, loadConfig } from './setup.js';
+import { drawTilt, loadConfig, softwareLine } from './setup.js';
 import { renderStationPage } from './station.js';
-import { openPlanner } from './planner.js';
-import { openScan } from './scan.js';
-import { openSoftware, softwareSummary } from './software.js';
 import { toast } from './toast.js';
 
 export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
@@ -20,15 +17,31 @@ export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
 export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets', software: 'setup',
   settings: 'setup', account: 'setup' };
 
-// The settings and account pages' modules are loaded when first opened: the console's first
-// load stays light.
+// The pages whose modules are loaded when first opened, so that the console's first load stays
+// light (docs/web-api.md "Measured"): each module's open() and, for those that follow the live
+// state, its render(force), called with every state message while the page is shown.
+const LAZY = {
+  planner: [() => import('./planner.js'), 'openPlanner'],
+  scan: [() => import('./scan.js'), 'openScan', 'renderScan'],
+  software: [() => import('./software.js'), 'openSoftware', 'renderForm'],
+  settings: [() => import('./settings.js'), 'openSettings'],
+  account: [() => import('./settings_account.js'), 'openAccount'],
+};
+const loaded = {};
 async function openLazy(name) {
+  const [load, open] = LAZY[name];
   try {
-    if (name === 'settings') await (await import('./settings.js')).openSettings();
-    else await (await import('./settings_account.js')).openAccount();
+    loaded[name] = loaded[name] || await load();
+    if (S.screen === name) await loaded[name][open]();
   } catch (e) {
     toast(`The ${name} page could not be loaded: ${e.message}`, 'err');
   }
+}
+// The shown page's render(force), if it has one and its module is loaded.
+export function renderPage(force) {
+  const m = loaded[S.screen];
+  const render = m && LAZY[S.screen][2];
+  if (render) m[render](force);
 }
 
 export function show(name) {
@@ -44,12 +57,9 @@ export function show(name) {
   if (name === 'targets') loadTargets();
   if (name === 'sky') { loadSky(); drawSky(true); }
   if (name === 'setup' || name === 'antenna' || name === 'manual') loadConfig();
-  if (name === 'setup') softwareSummary();
+  if (name === 'setup') softwareLine();
   if (name === 'antenna') drawTilt();
-  if (name === 'planner') openPlanner();
-  else if (name === 'scan') openScan();
-  else if (name === 'software') openSoftware();
-  else if (name === 'settings' || name === 'account') openLazy(name);
+  if (LAZY[name]) openLazy(name);
   else if (SUBSCREENS[name]) renderStationPage(name, true);
 }
 export function go(name) { if (location.hash === `#${name}`) show(name); else location.hash = name; }

@@ -7,6 +7,7 @@ import { request } from './api.js';
 
 let timer = null;
 let asked = '';
+let wired = false; // the form is wired when the page is first opened (navigation.js)
 
 function query() {
   const q = new URLSearchParams();
@@ -43,13 +44,25 @@ async function find() {
   }
   if (!r.ok) {
     $('planner-rows').replaceChildren();
+    cue();
     setText('planner-msg', `Not found: ${r.data.error || `HTTP ${r.status}`}`);
     asked = '';
     return;
   }
   const d = r.data;
   $('planner-rows').replaceChildren(...d.windows.map(row));
+  cue();
   setText('planner-msg', `${d.windows.length} windows for ${d.grid} and ${d.dx_grid} in ${d.days} days from ${String(d.from).slice(0, 16)} UTC, ${d.band} MHz (best: the minute with the highest Dgrd).`);
+}
+
+// The table scrolls sideways on a narrow screen; the hint above it and the fade at its right edge
+// say so while there are columns beyond the edge.
+function cue() {
+  const s = $('planner-scroll');
+  const over = s.scrollWidth - s.clientWidth;
+  const box = $('planner-box');
+  box.classList.toggle('overflows', over > 1);
+  box.classList.toggle('more-right', s.scrollLeft < over - 1);
 }
 
 function later() {
@@ -57,12 +70,16 @@ function later() {
   timer = setTimeout(find, 500);
 }
 
-export function wirePlanner() {
+function wire() {
+  wired = true;
   $('planner-form').addEventListener('submit', (e) => { e.preventDefault(); asked = ''; find(); });
+  $('planner-scroll').addEventListener('scroll', cue, { passive: true });
+  new ResizeObserver(cue).observe($('planner-scroll'));
   for (const id of ['planner-dx', 'planner-days', 'planner-min-el', 'planner-dx-min-el']) $(id).addEventListener('input', later);
 }
 
 export function openPlanner() {
+  if (!wired) wire();
   const dx = S.config && S.config.dx_grid;
   if (!$('planner-dx').value && dx) $('planner-dx').value = dx;
   if ($('planner-dx').value) find();

@@ -22,6 +22,7 @@ const KINDS = { cross: 'cross', 'five-point': 'five-point', raster: 'raster' };
 
 let drawnKey = '';
 let resultKey = '';
+let wired = false; // the page's controls are wired when it is first opened (navigation.js)
 let started = '';  // the start's message stands until that scan has run and ended: '', 'asked', 'seen'
 
 // The page's message line: what the last action did, or why it was refused.
@@ -351,7 +352,8 @@ async function apply() {
   toast(msg);
 }
 
-export function wireScan() {
+function wire() {
+  wired = true;
   $('scan-form').addEventListener('submit', start);
   $('scan-stop').addEventListener('click', stop);
   $('scan-apply').addEventListener('click', apply);
@@ -362,6 +364,7 @@ export function wireScan() {
 }
 
 export async function openScan() {
+  if (!wired) wire();
   fillSources();
   renderScan(true);
   await loadTargets();

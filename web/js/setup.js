@@ -4,7 +4,7 @@ import { S } from './state.js';
 import { $, h, setText, sv } from './dom.js';
 import { deg, fix, fmtLatLon, isNum, pad, parseNum } from './format.js';
 import { toast } from './toast.js';
-import { loadJSON } from './api.js';
+import { loadJSON, request } from './api.js';
 import { act } from './actions.js';
 import { fillBands } from './bands.js';
 import { fitWidth, niceScale } from './trend.js';
@@ -15,6 +15,11 @@ export async function loadConfig(force) {
   if (!j) return;
   S.config = j;
   fillConfig(force);
+}
+// Setup's Software line (the Software page, loaded when opened, keeps it up to date there).
+export async function softwareLine() {
+  const r = await request('GET', '/api/software');
+  if (r.ok && typeof r.data.version === 'string') setText('setup-software', [`version ${r.data.version}`, r.data.architecture].filter(Boolean).join(' · '));
 }
 export function field(id, value, force) {
   const i = $(id);

@@ -24,6 +24,7 @@ let timer = 0;
 let epoch = 0;         // bumped when a package has been sent: readings asked for before then are old
 let watched = sessionStorage.getItem(WATCH) || '';
 let ended = '';        // the package whose outcome was announced: its result stays on the bar
+let wired = false;      // the page's controls are wired when it is first opened
 
 function watch(sha) {
   watched = sha || '';
@@ -100,13 +101,8 @@ async function poll() {
   if (!document.hidden) await load();
   schedule();
 }
-export function openSoftware() { clearTimeout(timer); poll(); }
+export function openSoftware() { if (!wired) wire(); clearTimeout(timer); poll(); }
 
-// Setup's Software line.
-export async function softwareSummary() {
-  const r = await request('GET', '/api/software');
-  if (r.ok && typeof r.data.version === 'string') { sw = r.data; summary(); }
-}
 function summary() {
   if (sw) setText('setup-software', [`version ${sw.version}`, sw.architecture].filter(Boolean).join(' · '));
 }
@@ -272,7 +268,8 @@ async function update(ev) {
   await poll();
 }
 
-export function wireSoftware() {
+function wire() {
+  wired = true;
   $('sw-form').addEventListener('submit', update);
   $('sw-file').addEventListener('change', () => { setText('sw-error', ''); renderForm(); });
   $('sw-login').addEventListener('click', () => showLogin(''));

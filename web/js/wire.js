@@ -12,9 +12,6 @@ import { loadSky } from './sky.js';
 import { radecHint, radecTarget, track } from './targets.js';
 import { clean, loadConfig, showOther } from './setup.js';
 import { wireStation } from './station.js';
-import { wirePlanner } from './planner.js';
-import { wireScan } from './scan.js';
-import { wireSoftware } from './software.js';
 
 function confirmTwice(btn, label, fn) { // a second press within 4 s confirms
   if (btn.dataset.armed) { delete btn.dataset.armed; setText(btn, btn.dataset.label); fn(); return; }
@@ -28,9 +25,6 @@ export function wire() {
   $('target-pick').addEventListener('click', () => go('targets'));
   $('offset-btn').addEventListener('click', () => go('antenna'));
   wireStation(go);
-  wirePlanner();
-  wireScan();
-  wireSoftware();
 
   // login
   $('login-form').addEventListener('submit', login);
