@@ -150,6 +150,7 @@ async function plannerCue(page, why = false) {
     const s = document.getElementById('planner-scroll');
     const box = document.getElementById('planner-box');
     const table = document.getElementById('planner-table');
+    if (!s || !box) return { ok: false, missing: 'the scroller #planner-scroll in #planner-box' };
     const fade = () => getComputedStyle(box.querySelector('.scroll-edge'), '::after').opacity;
     const hint = () => document.getElementById('planner-more').checkVisibility();
     const hidden = [...table.querySelectorAll('th')].filter((th) => !th.checkVisibility()).map((th) => th.textContent);
@@ -157,11 +158,12 @@ async function plannerCue(page, why = false) {
     const out = { hidden, over: s.scrollWidth - s.clientWidth, right: s.getBoundingClientRect().right, card: card.right };
     if (hidden.length || out.right > card.right + 0.5 || out.right > window.innerWidth) return { ...out, ok: false };
     if (out.over <= 1) return { ...out, ok: !hint() && fade() === '0' };
+    const frames = () => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(res)));
     s.scrollLeft = 0;
-    await new Promise((res) => setTimeout(res, 250));
+    await frames();
     const start = { hint: hint(), fade: fade() };
     s.scrollLeft = s.scrollWidth;
-    await new Promise((res) => setTimeout(res, 250));
+    await frames();
     const end = { fade: fade() };
     s.scrollLeft = 0;
     return { ...out, start, end, ok: start.hint && start.fade === '1' && end.fade === '0' };
@@ -197,7 +199,7 @@ const toastProblems = (page) => page.evaluate(() => {
       const y = (Math.max(t.top, r.top) + Math.min(t.bottom, r.bottom)) / 2;
       const hit = document.elementFromPoint(x, y);
       ++under;
-      if (!hit || !(hit === c || c.contains(hit))) out.push(`a notice stands over ${c.id || c.textContent.trim().slice(0, 20)} (a tap reaches ${hit ? hit.id || hit.className : 'nothing'})`);
+      if (!hit || !(hit === c || c.contains(hit))) out.push(`a notice stands over ${c.id || c.textContent.trim().slice(0, 20)} (a tap reaches ${!hit ? 'nothing' : hit.closest('.toast') ? 'the notice' : hit.id || hit.className})`);
     }
   }
   return { out, under };
@@ -734,6 +736,7 @@ async function main() {
         await page.setViewportSize(vp);
         const bad = await page.evaluate(() => {
           const foot = document.getElementById('setup-foot');
+          if (!foot) return 'no footer (#setup-foot)';
           const f = foot.getBoundingClientRect();
           if (!foot.checkVisibility() || f.height <= 0) return 'the footer is not shown';
           const cards = [...document.querySelectorAll('#screen-setup > .card')];
@@ -757,6 +760,7 @@ async function main() {
         planner: '#planner-msg', scan: '#scan-source option', software: '#sw-version', settings: '#settings-body details',
         account: '#token-list tr',
       };
+      const REDRAWN = { main: true, antenna: true, scan: true };
       const wide = [];
       for (const [name, sel] of Object.entries(ready)) {
         await page.evaluate((n) => { location.hash = n; }, name);
@@ -764,7 +768,7 @@ async function main() {
           page.$eval(sel, (e) => e.textContent.trim() !== '—').catch(() => false), 5000);
         for (const [size, vp] of [['desktop', DESKTOP], ['phone', PHONE]]) {
           await page.setViewportSize(vp);
-          await sleep(100);
+          await sleep(REDRAWN[name] ? 200 : 30); // main.js redraws these charts 150 ms after a resize
           await page.screenshot({ path: path.join(outDir, `page-${name}-${size}.png`), fullPage: name !== 'settings' });
           if (size === 'phone') {
             const w = await page.evaluate(() => document.documentElement.scrollWidth);
