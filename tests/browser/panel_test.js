@@ -63,6 +63,12 @@ async function screenProblems(page) {
       if (r.width < minPx || r.height < minPx) out.push(`${name(e)} is ${r.width.toFixed(1)}×${r.height.toFixed(1)} px`);
       if (r.left < 0 || r.top < 0 || r.right > vw + 0.5 || r.bottom > vh + 0.5) out.push(`${name(e)} is off the screen`);
     }
+    // Text held on one line must fit its box: a line running off the 480 px screen is cut off.
+    for (const e of document.querySelectorAll('body *')) {
+      if (!e.checkVisibility() || getComputedStyle(e).whiteSpace !== 'nowrap' || !e.textContent.trim()) continue;
+      const r = e.getBoundingClientRect();
+      if (e.scrollWidth > e.clientWidth + 1 || r.right > vw + 0.5 || r.left < -0.5) out.push(`${name(e)} runs out of its box`);
+    }
     const stop = document.getElementById('btn-stop');
     const r = stop.getBoundingClientRect();
     const hit = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
@@ -274,6 +280,50 @@ async function main() {
       await page.tap('#btn-stop');
       await until('STOP without a login, in one tap', async () => (await state()).mode === 'STOP', 3000);
       if (await visible(page, '#login-form')) throw new Error('STOP asked for the password');
+    });
+
+    await scenario('the kiosk\'s token: target, park, corrections and STOP with no keyboard', async () => {
+      // What azeltrack-panel-token makes at install (docs/panel.md), and the address the kiosk opens.
+      const made = await api('POST', '/api/tokens', { label: 'panel' }, TOKEN);
+      if (made.status !== 200 || !/^[0-9a-f]{64}$/.test(made.json.token || '')) throw new Error(`token: ${made.status} ${JSON.stringify(made.json)}`);
+      await page.goto('about:blank');  // a load, not a move within the page: the token is read at load
+      await page.goto(`${base}/panel#token=${made.json.token}`, { waitUntil: 'load' });
+      await until('acting with the token', async () => (await text(page, '#login-state')) === 'Kiosk', 5000);
+      const keyboard = () => visible(page, '#login-form').then((v) => { if (v) throw new Error('the keyboard was asked for'); });
+      await tapTo(page, '#target-pick', 'targets');
+      await page.tap('#tgt-moon');
+      await until('the Moon tracked', async () => (await state()).target.name === 'Moon', 5000);
+      await keyboard();
+      await tapTo(page, '#target-pick', 'targets');
+      await tapTo(page, '#go-park', 'park');
+      await page.tap('#park-2');
+      await until('PARK', async () => (await state()).mode === 'PARK', 5000);
+      await keyboard();
+      const was = (await state()).corrections.az_user_deg;
+      await page.tap('#az-plus');
+      await until('the correction', async () => Math.abs((await state()).corrections.az_user_deg - (was + 0.01)) < 1e-9, 3000);
+      await page.tap('#btn-stop');
+      await until('STOP', async () => (await state()).mode === 'STOP', 3000);
+      await keyboard();
+      if (page.url().includes(made.json.token)) throw new Error('the token stays in the address bar');
+      // Revoked from the console: the panel is read-only again, and says so.
+      const gone = await api('DELETE', '/api/tokens/panel', undefined, TOKEN);
+      if (gone.status !== 200) throw new Error(`revoke: ${gone.status}`);
+      await page.tap('#az-plus');
+      await until('read-only after the revoke', async () => (await text(page, '#login-state')) === 'Read-only', 5000);
+      await until('the keyboard, saying why', async () => (await visible(page, '#login-form')) && /token was revoked/.test(await text(page, '#login-error')), 3000);
+      await checkScreen(page, 'login-revoked');
+      await page.tap('#login-cancel');
+    });
+
+    await scenario('a target that never rises is shown waiting, in words that fit the screen', async () => {
+      // Dec −89° never rises at 46° N: the wait line is the "not within two days" form, whatever the hour.
+      const r = await api('POST', '/api/target', { ra_deg: 0, dec_deg: -89 }, TOKEN);
+      if (r.status !== 200) throw new Error(`RA/Dec: ${r.status} ${JSON.stringify(r.json)}`);
+      await toMain(page);
+      await until('the wait line', async () => (await visible(page, '#wait-row')) && (await text(page, '#wait-line')) === 'not up in 2 days', 8000);
+      await checkScreen(page, 'main-waiting');
+      await api('POST', '/api/stop', {}, TOKEN);
     });
 
     // Measured: the panel's weight (the page, its CSS and every module it loaded).

@@ -23,9 +23,12 @@ export async function act(label, method, path, body, opts = {}) {
   }
   if (btn) btn.classList.remove('busy');
   if (r.status === 401 && !(opts.passwordCheck && !/login required/i.test(r.data.error || ''))) {
+    const hadToken = !!S.token;
     forgetToken(); // revoked in the console: from now on the password, as anywhere else
     setLoggedIn(false, null);
-    showLogin(`Log in to ${label.toLowerCase()} — the controller answered: “${r.data.error || 'login required'}”.`);
+    // Short first: the panel shows one line of it.
+    showLogin(hadToken ? `This screen's token was revoked: log in to ${label.toLowerCase()}.`
+      : `Log in to ${label.toLowerCase()} — the controller answered: “${r.data.error || 'login required'}”.`);
     if (opts.errEl) setText(opts.errEl, 'Not saved: log in first.');
     return r;
   }

@@ -32,6 +32,15 @@ export function ago(s) {
   return `${Math.round(s / 86400)} d`;
 }
 // target.waiting as one line: "up at 00:47 UTC, in 2 h 13 min", or why it will not be.
+// The panel's narrow form (480 px, beside the target's numbers; the clock beside it is UTC):
+// "↑12:38 · 5h51m" (rises at, in), or why not in a few words. The console's waitLine has the whole sentence.
+export function waitShort(w) {
+  if (!w.until) return /within two days/.test(w.reason || '') ? 'not up in 2 days' : 'below the limit';
+  const s = Math.max(0, isNum(w.in_s) ? w.in_s : 0);
+  const h = Math.floor(s / 3600); const m = Math.floor((s % 3600) / 60);
+  return `↑${String(w.until).slice(11, 16)} · ${h ? `${h}h` : ''}${String(m).padStart(h ? 2 : 1, '0')}m`;
+}
+
 export function waitLine(w) {
   if (!w.until) return w.reason || 'waiting';
   const s = Math.max(0, isNum(w.in_s) ? w.in_s : 0);

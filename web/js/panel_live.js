@@ -5,7 +5,7 @@
 
 import { S, targetLabel } from './state.js';
 import { $, setText } from './dom.js';
-import { deg, hz, pad, sameName, sdeg, waitLine } from './format.js';
+import { deg, hz, pad, sameName, sdeg, waitLine, waitShort } from './format.js';
 import { gpsLevel, gpsSummary } from './gps.js';
 import { linkOf, netSummary } from './network.js';
 import { timeLine } from './time.js';
@@ -63,7 +63,10 @@ export function renderPanel(st) {
   if (onMoon) setText('doppler', hz(st.moon ? st.moon.echo_doppler_hz : null));
   const wait = st.mode === 'TRACK' ? t.waiting : null;
   $('wait-row').hidden = !wait;
-  if (wait) setText('wait-line', waitLine(wait));
+  if (wait) {
+    setText('wait-line', waitShort(wait));
+    $('wait-row').title = `Waiting: ${waitLine(wait)}. The antenna holds until the target is up.`;
+  }
   renderIndicators(st);
   // B: the operator's corrections; C: where the antenna points
   const known = renderCorrectionsAndPosition(st);
