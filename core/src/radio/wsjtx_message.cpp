@@ -74,22 +74,23 @@ bool Reader::big_endian(std::uint64_t& out, std::size_t size, std::string_view f
 }
 
 bool Reader::utf8(std::string& out, std::string_view field, bool null_allowed) {
+  const std::string at = where(field);  // messages name the field's first byte, its length
   std::uint32_t length = 0;
   if (!u32(length, field)) return false;
   if (length == kNullLength) {
     out.clear();
-    return null_allowed || refuse("null " + where(field));
+    return null_allowed || refuse("null " + at);
   }
   if (length > kMaxStringBytes) {
-    return refuse(where(field) + ": " + std::to_string(length) + " bytes, over the " +
+    return refuse(at + ": " + std::to_string(length) + " bytes, over the " +
                   std::to_string(kMaxStringBytes) + " allowed");
   }
   if (bytes_.size() - at_ < length) {
-    return refuse("truncated: " + where(field) + " says " + std::to_string(length) + " bytes, " +
+    return refuse("truncated: " + at + " says " + std::to_string(length) + " bytes, " +
                   std::to_string(bytes_.size() - at_) + " left");
   }
   const std::string_view text = bytes_.substr(at_, length);
-  if (!is_valid_utf8(text)) return refuse(where(field) + " is not UTF-8");
+  if (!is_valid_utf8(text)) return refuse(at + " is not UTF-8");
   out.assign(text);
   at_ += length;
   return true;
