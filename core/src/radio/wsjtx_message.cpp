@@ -2,7 +2,6 @@
 #include "azt/radio/wsjtx_message.hpp"
 
 #include <array>
-#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -195,9 +194,12 @@ Result<WsjtxMessage> read_heartbeat(Reader& r, std::string id) {
 }
 
 std::string hex(std::uint32_t value) {
-  std::array<char, 11> text{};
-  std::snprintf(text.data(), text.size(), "0x%08x", static_cast<unsigned>(value));
-  return text.data();
+  constexpr std::string_view kDigits = "0123456789abcdef";
+  std::string text = "0x";
+  for (int shift = 28; shift >= 0; shift -= 4) {
+    text += kDigits[(value >> static_cast<unsigned>(shift)) & 0xfU];
+  }
+  return text;
 }
 
 bool read_header(Reader& r, std::uint32_t& type) {
