@@ -1,0 +1,39 @@
+#include "azt/radio/satellite_doppler.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace azt::radio {
+
+double downlink_rx_hz(double satellite_hz, double range_rate_km_s) {
+  return satellite_hz * (1.0 - range_rate_km_s / kSpeedOfLightKmS);
+}
+
+double uplink_tx_hz(double satellite_hz, double range_rate_km_s) {
+  return satellite_hz * (1.0 + range_rate_km_s / kSpeedOfLightKmS);
+}
+
+double satellite_downlink_hz(double rig_rx_hz, double range_rate_km_s) {
+  return rig_rx_hz / (1.0 - range_rate_km_s / kSpeedOfLightKmS);
+}
+
+std::optional<double> paired_uplink_hz(const SatelliteTransmitter& transmitter,
+                                       double satellite_downlink_hz) {
+  if (!transmitter.uplink_hz) return std::nullopt;
+  const double moved_hz = satellite_downlink_hz - transmitter.downlink_hz;
+  switch (transmitter.mode) {
+    case TransponderMode::Fm:
+      return *transmitter.uplink_hz;
+    case TransponderMode::Linear:
+      return *transmitter.uplink_hz + moved_hz;
+    case TransponderMode::LinearInverting:
+      return *transmitter.uplink_hz - moved_hz;
+  }
+  return std::nullopt;
+}
+
+double scaled_step_hz(double step_hz_at_435_mhz, double freq_hz) {
+  return std::max(1.0, step_hz_at_435_mhz * std::abs(freq_hz) / kStepReferenceHz);
+}
+
+}  // namespace azt::radio
