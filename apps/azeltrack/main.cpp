@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   const azt::app::Runner sat = azt::app::add_sat_command(app);
   const azt::app::Runner passes = azt::app::add_passes_command(app);
   const azt::app::Runner moon_windows = azt::app::add_moon_windows_command(app);
+  const azt::app::Runner schedule = azt::app::add_schedule_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
@@ -73,6 +74,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("sat")) return sat();
     if (app.got_subcommand("passes")) return passes();
     if (app.got_subcommand("moon-windows")) return moon_windows();
+    if (app.got_subcommand("schedule")) return schedule();
   } catch (const azt::app::UsageError& e) {
     azt::app::print_error(e.what());
     return azt::app::kExitUsage;

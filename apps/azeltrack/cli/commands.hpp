@@ -24,5 +24,6 @@ Runner add_seq_sim_command(CLI::App& app);
 Runner add_sat_command(CLI::App& app);
 Runner add_passes_command(CLI::App& app);
 Runner add_moon_windows_command(CLI::App& app);
+Runner add_schedule_command(CLI::App& app);
 
 }  // namespace azt::app

@@ -359,6 +359,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
     sats.fail("mask", std::string(e.what()).substr(6));
   }
   c.satellites.beamwidth_deg = sats.number("beamwidth_deg").value_or(20.0);
+  c.schedule = schedule_config_from(file);
   c.web = read_web(file.section("web"));
   c.web.tokens = read_tokens(file);
   c.park = read_park(file, c.station);

@@ -20,6 +20,7 @@
 #include "config/hardware_config.hpp"
 #include "config/mount_config.hpp"
 #include "config/receiver_config.hpp"
+#include "config/schedule_config.hpp"
 #include "config/sim_config.hpp"
 #include "config/sky_config.hpp"
 #include "config/time_config.hpp"
@@ -127,10 +128,11 @@ struct DaemonConfig {
   GpioConfig gpio;
   HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
   SatellitesConfig satellites;
-  GpsConfig gps;            ///< [gps]: the receiver through gpsd
-  ReceiverConfig receiver;  ///< [receiver]: the power readings of pointing scans
-  TimeConfig time;          ///< [time]: chrony watched, its servers set from the console
-  ExportConfig exports;     ///< [export]: files for other programs (azel.dat)
+  std::vector<ScheduleEntryConfig> schedule;  ///< [[schedule]], highest priority first
+  GpsConfig gps;                              ///< [gps]: the receiver through gpsd
+  ReceiverConfig receiver;                    ///< [receiver]: the power readings of pointing scans
+  TimeConfig time;       ///< [time]: chrony watched, its servers set from the console
+  ExportConfig exports;  ///< [export]: files for other programs (azel.dat)
   NetServerConfig rotctld{"127.0.0.1", 4533};
   /// A rotctld client silent this long is disconnected (0: never); Gpredict polls every second.
   double rotctld_idle_timeout_s = 600.0;

@@ -50,6 +50,7 @@ std::string context_of(const SectionSpec& s, std::string_view key) {
     needed = {{"grid", "\"FN06HE\""}};
   }
   if (s.name == "serial") needed = {{"protocol", "\"gs232b\""}, {"device", "\"pty:azt-test\""}};
+  if (s.name == "schedule") needed = {{"sat", "\"ISS\""}};
   if (s.name == "spacecraft") {
     needed = {{"name", "\"Probe\""},
               {"file", "\"" + kDataDir + "/horizons/moon_vectors_csv_kms.txt\""}};

@@ -19,7 +19,7 @@ ScheduledPass pass(std::size_t priority, double aos_s, double los_s, double max_
 std::vector<Priority> list(std::vector<Preempt> rules) {
   std::vector<Priority> out;
   for (std::size_t i = 0; i < rules.size(); ++i) {
-    out.push_back({"sat" + std::to_string(i), static_cast<int>(25544 + i), 0.0, rules[i]});
+    out.push_back({"sat" + std::to_string(i), std::to_string(25544 + i), 0.0, rules[i]});
   }
   return out;
 }

@@ -24,8 +24,8 @@ std::string_view to_string(Preempt preempt);
 
 /// One entry of the priority list, highest priority first.
 struct Priority {
-  std::string sat;  ///< the satellite's name as the operator wrote it
-  int norad = 0;
+  std::string sat;          ///< the satellite's name as the operator wrote it
+  std::string norad;        ///< the NORAD catalogue number as the elements give it ("25544")
   double min_el_deg = 0.0;  ///< a pass whose highest point is lower is not worked
   Preempt preempt = Preempt::TakeOver;
 };
