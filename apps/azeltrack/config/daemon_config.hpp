@@ -19,10 +19,12 @@
 #include "config/gps_config.hpp"
 #include "config/hardware_config.hpp"
 #include "config/mount_config.hpp"
+#include "config/radio_config.hpp"
 #include "config/receiver_config.hpp"
 #include "config/sim_config.hpp"
 #include "config/sky_config.hpp"
 #include "config/time_config.hpp"
+#include "config/wsjtx_config.hpp"
 
 namespace azt::app {
 
@@ -128,6 +130,8 @@ struct DaemonConfig {
   HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
   SatellitesConfig satellites;
   GpsConfig gps;            ///< [gps]: the receiver through gpsd
+  RadioConfig radio;        ///< [radio], [[satellites.transmitter]]: the rig
+  WsjtxConfig wsjtx;        ///< [wsjtx]: WSJT-X's UDP messages
   ReceiverConfig receiver;  ///< [receiver]: the power readings of pointing scans
   TimeConfig time;          ///< [time]: chrony watched, its servers set from the console
   ExportConfig exports;     ///< [export]: files for other programs (azel.dat)

@@ -33,6 +33,9 @@ struct GuardParts {
   /// Where the latch file is written (an fsync): the daemon's worker, never the loop. Writes and
   /// removals run in the order asked, so a clear after a latch leaves no file.
   Offload offload = run_inline;
+  /// Another program's transmit hold (WSJT-X transmitting, docs/radio.md): held as the
+  /// sequencer's motion hold is. Null: none.
+  std::function<bool()> other_hold;
 };
 
 class GuardedAntenna final : public AntennaBackend {
