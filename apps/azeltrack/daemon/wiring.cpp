@@ -293,8 +293,8 @@ std::unique_ptr<AntennaBackend> StationDaemon::make_guarded(std::unique_ptr<Ante
       std::move(inner), config_.gpio,
       GuardParts{gpio_.get(), sequencer_.get(), latch, [this] { return now_s(); },
                  [this] { modes_.stop(); },
-                 [](const std::string& line) { spdlog::warn("{}", line); }, off_loop(),
-                 [this] { return radio_ && radio_->motion_hold(); }});
+                 [](const std::string& line) { spdlog::warn("{}", line); }, off_loop()});
+  guarded->set_other_hold([this] { return radio_ && radio_->motion_hold(); });
   guard_ = guarded.get();
   return guarded;
 }

@@ -33,9 +33,6 @@ struct GuardParts {
   /// Where the latch file is written (an fsync): the daemon's worker, never the loop. Writes and
   /// removals run in the order asked, so a clear after a latch leaves no file.
   Offload offload = run_inline;
-  /// Another program's transmit hold (WSJT-X transmitting, docs/radio.md): held as the
-  /// sequencer's motion hold is. Null: none.
-  std::function<bool()> other_hold;
 };
 
 class GuardedAntenna final : public AntennaBackend {
@@ -56,6 +53,9 @@ class GuardedAntenna final : public AntennaBackend {
   [[nodiscard]] std::string describe() const override;
   void set_limits(double now_s, const control::LimitSwitches& limits) override;
 
+  /// Another program's transmit hold (WSJT-X transmitting, docs/radio.md): held as the
+  /// sequencer's motion hold is.
+  void set_other_hold(std::function<bool()> hold) { other_hold_ = std::move(hold); }
   [[nodiscard]] bool estop_latched() const { return latched_; }
   [[nodiscard]] const control::LimitSwitches& limits() const { return limits_; }
   /// {"estop": {"wired","input","latched"}, "limits": {...} | null}
@@ -76,6 +76,7 @@ class GuardedAntenna final : public AntennaBackend {
   std::unique_ptr<linux_os::GpioInput> el_down_;
   std::unique_ptr<linux_os::GpioInput> el_up_;
   control::LimitSwitches limits_;
+  std::function<bool()> other_hold_;
   bool latched_ = false;
   std::string latch_reason_;
 };
