@@ -44,8 +44,14 @@ void ConfigSection::check_keys() const {
     const std::string_view k = key.str();
     if (const KeySpec* spec = find_key(*spec_, k)) {
       if (auto why = key_violation(*spec, value)) fail(k, *why);
-    } else if (find_child(*spec_, k) == nullptr) {
+    } else if (const SectionSpec* child = find_child(*spec_, k); child == nullptr) {
       file_.fail(line_of(value) + "unknown key [" + name_ + "]." + std::string(k));
+    } else if (child->array_of_tables) {
+      // [[satellites.transmitter]]: each item is checked when child_array() reads it.
+      if (!value.is_array()) {
+        file_.fail(line_of(value) + "[[" + name_ + "." + std::string(k) +
+                   "]] must be an array of tables");
+      }
     } else if (!value.is_table()) {
       file_.fail(line_of(value) + "[" + name_ + "." + std::string(k) + "] must be a table");
     }
@@ -61,6 +67,23 @@ const KeySpec& ConfigSection::key_spec(std::string_view key,
                            " as this reader reads it");
   }
   return *spec;
+}
+
+std::vector<ConfigSection> ConfigSection::child_array(std::string_view key) const {
+  const SectionSpec* spec = find_child(*spec_, key);
+  if (spec == nullptr || !spec->array_of_tables) {
+    throw std::logic_error("the configuration schema has no [[" + name_ + "." + std::string(key) +
+                           "]]");
+  }
+  std::vector<ConfigSection> out;
+  const toml::node* n = node(key);
+  if (n == nullptr) return out;
+  const toml::array* a = n->as_array();
+  for (std::size_t i = 0; a != nullptr && i < a->size(); ++i) {
+    const std::string item = name_ + "." + std::string(key) + "#" + std::to_string(i + 1);
+    out.push_back(checked(file_, a->get(i), item, *spec));
+  }
+  return out;
 }
 
 const toml::node* ConfigSection::node(std::string_view key) const {

@@ -52,6 +52,9 @@ class ConfigSection {
   }
   /// A sub-table ("az" of [mount]: [mount.az]), checked (absent: present() is false).
   [[nodiscard]] ConfigSection child(std::string_view key) const;
+  /// A child array of tables ("transmitter" of [satellites]: [[satellites.transmitter]]), each
+  /// item checked; items are named "satellites.transmitter#1" … in errors.
+  [[nodiscard]] std::vector<ConfigSection> child_array(std::string_view key) const;
 
   /// Throws UsageError "config FILE: [name].key: what".
   [[noreturn]] void fail(std::string_view key, const std::string& what) const;

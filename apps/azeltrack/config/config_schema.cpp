@@ -29,9 +29,9 @@ constexpr SectionSpec kFileSection{
 
 std::vector<SectionSpec> all_sections() {
   std::vector<SectionSpec> out{kFileSection};
-  for (const auto group :
-       {sky_sections(), control_sections(), target_sections(), schedule_sections(), antenna_sections(),
-        station_io_sections(), server_sections(), service_sections(), sim_sections()}) {
+  for (const auto group : {sky_sections(), control_sections(), target_sections(),
+                           schedule_sections(), antenna_sections(), station_io_sections(),
+                           server_sections(), service_sections(), radio_sections(), sim_sections()}) {
     out.insert(out.end(), group.begin(), group.end());
   }
   return out;
@@ -128,6 +128,8 @@ std::string_view chapter_title(Chapter chapter) {
       return "Servers for PC programs and the console";
     case Chapter::Services:
       return "GPS, time, the scan receiver and exports";
+    case Chapter::Radio:
+      return "The radio: Doppler to the rig, WSJT-X";
     case Chapter::Simulation:
       return "The simulated antenna";
   }

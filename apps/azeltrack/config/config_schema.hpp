@@ -7,7 +7,7 @@
 //
 // The key tables are split by concern: schema_sky_keys.cpp, schema_control_keys.cpp,
 // schema_target_keys.cpp, schema_antenna_keys.cpp, schema_station_io_keys.cpp,
-// schema_server_keys.cpp, schema_service_keys.cpp and schema_sim_keys.cpp.
+// schema_server_keys.cpp, schema_service_keys.cpp, schema_radio_keys.cpp and schema_sim_keys.cpp.
 
 #include <toml++/toml.h>
 
@@ -52,6 +52,7 @@ enum class Chapter {
   StationIo,
   Servers,
   Services,
+  Radio,
   Simulation
 };
 

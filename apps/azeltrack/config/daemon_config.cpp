@@ -344,6 +344,8 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   read_servers(file, c);
   const ConfigSection sats = file.section("satellites");
   c.gps = gps_config_from(file);
+  c.radio = radio_config_from(file);
+  c.wsjtx = wsjtx_config_from(file);
   c.receiver = receiver_config_from(file);
   if (c.receiver.source == ReceiverConfig::Source::Sim && c.backend != BackendKind::Sim) {
     file.section("receiver")

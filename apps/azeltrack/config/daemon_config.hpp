@@ -19,11 +19,13 @@
 #include "config/gps_config.hpp"
 #include "config/hardware_config.hpp"
 #include "config/mount_config.hpp"
+#include "config/radio_config.hpp"
 #include "config/receiver_config.hpp"
 #include "config/schedule_config.hpp"
 #include "config/sim_config.hpp"
 #include "config/sky_config.hpp"
 #include "config/time_config.hpp"
+#include "config/wsjtx_config.hpp"
 
 namespace azt::app {
 
@@ -130,9 +132,11 @@ struct DaemonConfig {
   SatellitesConfig satellites;
   std::vector<ScheduleEntryConfig> schedule;  ///< [[schedule]], highest priority first
   GpsConfig gps;                              ///< [gps]: the receiver through gpsd
-  ReceiverConfig receiver;                    ///< [receiver]: the power readings of pointing scans
-  TimeConfig time;       ///< [time]: chrony watched, its servers set from the console
-  ExportConfig exports;  ///< [export]: files for other programs (azel.dat)
+  RadioConfig radio;        ///< [radio], [[satellites.transmitter]]: the rig
+  WsjtxConfig wsjtx;        ///< [wsjtx]: WSJT-X's UDP messages
+  ReceiverConfig receiver;  ///< [receiver]: the power readings of pointing scans
+  TimeConfig time;          ///< [time]: chrony watched, its servers set from the console
+  ExportConfig exports;     ///< [export]: files for other programs (azel.dat)
   NetServerConfig rotctld{"127.0.0.1", 4533};
   /// A rotctld client silent this long is disconnected (0: never); Gpredict polls every second.
   double rotctld_idle_timeout_s = 600.0;

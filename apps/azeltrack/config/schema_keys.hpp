@@ -17,5 +17,6 @@ std::span<const SectionSpec> station_io_sections();  ///< [gpio], [sequencer]
 std::span<const SectionSpec> server_sections();      ///< [rotctld], [[serial]], [web], …
 std::span<const SectionSpec> service_sections();     ///< [gps], [time], [receiver], [export]
 std::span<const SectionSpec> sim_sections();         ///< [sim] and its tables
+std::span<const SectionSpec> radio_sections();  ///< [radio], [[satellites.transmitter]], [wsjtx]
 
 }  // namespace azt::app

@@ -199,6 +199,8 @@ json DaemonConsole::state() {
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
           {"commands", p_.motions != nullptr ? p_.motions->to_json() : json::array()},
           {"station_io", p_.station_io ? p_.station_io() : json(nullptr)},
+          {"radio", p_.radio ? p_.radio() : json{{"doppler", "off"}, {"link", "off"}}},
+          {"wsjtx", p_.wsjtx ? p_.wsjtx() : json{{"listening", false}}},
           {"servers", p_.servers}};
 }
 

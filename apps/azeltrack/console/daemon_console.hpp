@@ -65,6 +65,9 @@ struct ConsoleParts {
   std::function<void(const std::string& who)> restart;
   /// POST /api/hardware/direction-test (null: none here, 404).
   DirectionTest* direction_test = nullptr;
+  /// The rig's Doppler and link (`radio`) and WSJT-X (`wsjtx`); null: off.
+  std::function<nlohmann::json()> radio;
+  std::function<nlohmann::json()> wsjtx;
 };
 
 class DaemonConsole final : public ConsoleModel {

@@ -178,6 +178,7 @@ void StationDaemon::shutdown(const std::string& why) {
   if (rotctld_) rotctld_->close();
   for (auto& s : serial_) s->close();
   if (pstrotator_) pstrotator_->close();
+  if (radio_) radio_->close();
   if (console_) console_->close();
   boost::system::error_code ignored;
   timer_.cancel();

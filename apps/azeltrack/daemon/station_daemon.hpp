@@ -23,8 +23,10 @@
 #include "daemon/daemon.hpp"
 #include "daemon/rate_limited_log.hpp"
 #include "daemon/tick_stats.hpp"
+#include "radio/station_radio.hpp"
 #include "station/azel_dat_export.hpp"
 #include "station/clock_watch.hpp"
+#include "station/direction_test.hpp"
 #include "station/gps_receiver.hpp"
 #include "station/guarded_antenna.hpp"
 #include "station/network_watch.hpp"
@@ -35,7 +37,6 @@
 #include "station/sequencer_runner.hpp"
 #include "station/simulated_power.hpp"
 #include "station/sky_follower.hpp"
-#include "station/direction_test.hpp"
 #include "station/station_commands.hpp"
 #include "station/station_service.hpp"
 
@@ -82,6 +83,10 @@ class StationDaemon {
   std::unique_ptr<AzelDatExport> make_azel_dat_export();
   /// [receiver] source = "sim": the simulated receiver, hearing the sim backend's true beam.
   void simulate_receiver();
+  /// [radio], [wsjtx]: the rig kept on frequency and WSJT-X heard (radio/station_radio.hpp).
+  std::unique_ptr<StationRadio> make_radio();
+  /// WSJT-X's DX grid as the running DX (not saved).
+  void follow_dx_grid(const std::string& grid);
   void open_servers();
   void open_console();
   /// A refusal a client was given: in the journal (at most 10 lines a minute per client) and in
@@ -141,6 +146,7 @@ class StationDaemon {
   std::unique_ptr<AzelDatExport> azel_dat_;   ///< [export] azel_dat; none when not set
   std::unique_ptr<PowerReceiver> receiver_;   ///< [receiver]: the power readings of scans
   std::unique_ptr<PointingScanner> scanner_;  ///< a pointing scan, while one runs
+  std::unique_ptr<StationRadio> radio_;       ///< [radio] and [wsjtx]: the rig and WSJT-X
   StationCommands commands_;
   DirectionTest direction_test_;  ///< the console's direction test of one axis, while one runs
   StationService service_;

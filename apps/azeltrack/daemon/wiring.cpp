@@ -96,12 +96,13 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
           [this](const CommandSource& source, const Refusal& refusal) {
             control_event(source.name + ": refused: " + refusal.reason);
           }}),
-      direction_test_(DirectionTestParts{*antenna_, commands_, modes_,
-                                         [this] {
-                                           return sequencer_->motion_hold() ||
-                                                  sequencer_->state().value("transmitting", false);
-                                         },
-                                         [this] { return now_s(); }}),
+      direction_test_(DirectionTestParts{
+          *antenna_, commands_, modes_,
+          [this] {
+            return sequencer_->motion_hold() || sequencer_->state().value("transmitting", false) ||
+                   (radio_ && radio_->motion_hold());
+          },
+          [this] { return now_s(); }}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
           // The locator first: Hamlib shows 63 characters of it (format_get_info).
@@ -131,6 +132,34 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   if (config_.receiver.source == ReceiverConfig::Source::Sim) simulate_receiver();
   scanner_ = std::make_unique<PointingScanner>(
       config_.receiver.source == ReceiverConfig::Source::None ? nullptr : &receiver_->feed());
+  radio_ = make_radio();
+}
+
+std::unique_ptr<StationRadio> StationDaemon::make_radio() {
+  if (!config_.radio.rigctld && !config_.wsjtx.listen) return nullptr;
+  return std::make_unique<StationRadio>(
+      io_, StationRadioParts{
+               config_.radio, config_.wsjtx, *ephemeris_, config_.sky, [this] { return now_s(); },
+               [this] { return unix_now_s(); },
+               [this]() -> std::optional<SatelliteNow> {
+                 if (!commands_.tracking_satellite()) return std::nullopt;
+                 const auto s = satellites_.status(unix_now_s());
+                 if (!s.is_object() || !s.contains("range_rate_km_s")) return std::nullopt;
+                 return SatelliteNow{s.value("norad", ""), s["range_rate_km_s"].get<double>()};
+               },
+               [this](const std::string& grid) { follow_dx_grid(grid); },
+               [](const std::string& line) { spdlog::info("{}", line); }});
+}
+
+void StationDaemon::follow_dx_grid(const std::string& grid) {
+  if (grid == config_.sky.settings.dx_grid) return;
+  try {
+    config_.sky.settings.dx = observer_from_grid(grid, 0.0);
+    config_.sky.settings.dx_grid = grid;
+    spdlog::info("wsjtx: DX grid {} (from WSJT-X, not saved)", grid);
+  } catch (const UsageError& e) {
+    log_.info("wsjtx dx", "wsjtx: DX grid '" + log_safe(grid) + "' not used: " + e.what(), now_s());
+  }
 }
 
 void StationDaemon::simulate_receiver() {
@@ -265,6 +294,7 @@ std::unique_ptr<AntennaBackend> StationDaemon::make_guarded(std::unique_ptr<Ante
       GuardParts{gpio_.get(), sequencer_.get(), latch, [this] { return now_s(); },
                  [this] { modes_.stop(); },
                  [](const std::string& line) { spdlog::warn("{}", line); }, off_loop()});
+  guarded->set_other_hold([this] { return radio_ && radio_->motion_hold(); });
   guard_ = guarded.get();
   return guarded;
 }
@@ -397,7 +427,11 @@ void StationDaemon::open_console() {
                    [this] { return receiver_->to_json(); },
                    scanner_.get(),
                    [this](const std::string& who) { restart_soon(who); },
-                   &direction_test_},
+                   &direction_test_,
+                   radio_ ? std::function<nlohmann::json()>([this] { return radio_->radio_json(); })
+                          : nullptr,
+                   radio_ ? std::function<nlohmann::json()>([this] { return radio_->wsjtx_json(); })
+                          : nullptr},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});

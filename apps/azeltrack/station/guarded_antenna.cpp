@@ -95,7 +95,8 @@ void GuardedAntenna::latch(const std::string& why) {
 }
 
 void GuardedAntenna::tick(double now_s, const control::Demand& demand, const control::AzEl& rate) {
-  const bool hold = latched_ || (parts_.sequencer != nullptr && parts_.sequencer->motion_hold());
+  const bool hold = latched_ || (parts_.sequencer != nullptr && parts_.sequencer->motion_hold()) ||
+                    (other_hold_ && other_hold_());
   // Held: no position and no jog, so the backend lets any move finish its soft stop (a latched
   // E-stop has already stopped the drives hard).
   inner_->tick(now_s, hold ? control::Demand{} : demand, hold ? control::AzEl{} : rate);

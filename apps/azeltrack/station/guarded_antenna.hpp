@@ -53,6 +53,9 @@ class GuardedAntenna final : public AntennaBackend {
   [[nodiscard]] std::string describe() const override;
   void set_limits(double now_s, const control::LimitSwitches& limits) override;
 
+  /// Another program's transmit hold (WSJT-X transmitting, docs/radio.md): held as the
+  /// sequencer's motion hold is.
+  void set_other_hold(std::function<bool()> hold) { other_hold_ = std::move(hold); }
   [[nodiscard]] bool estop_latched() const { return latched_; }
   [[nodiscard]] const control::LimitSwitches& limits() const { return limits_; }
   /// {"estop": {"wired","input","latched"}, "limits": {...} | null}
@@ -73,6 +76,7 @@ class GuardedAntenna final : public AntennaBackend {
   std::unique_ptr<linux_os::GpioInput> el_down_;
   std::unique_ptr<linux_os::GpioInput> el_up_;
   control::LimitSwitches limits_;
+  std::function<bool()> other_hold_;
   bool latched_ = false;
   std::string latch_reason_;
 };

@@ -51,6 +51,10 @@ std::string context_of(const SectionSpec& s, std::string_view key) {
   }
   if (s.name == "serial") needed = {{"protocol", "\"gs232b\""}, {"device", "\"pty:azt-test\""}};
   if (s.name == "schedule") needed = {{"sat", "\"ISS\""}};
+  if (s.name == "satellites.transmitter") {
+    needed = {{"norad", "\"25544\""}, {"downlink_mhz", "437.8"}, {"uplink_mhz", "145.99"}};
+  }
+  if (s.name == "radio") needed = {{"rigctld", "\"127.0.0.1:4532\""}, {"dial_mhz", "1296.1"}};
   if (s.name == "spacecraft") {
     needed = {{"name", "\"Probe\""},
               {"file", "\"" + kDataDir + "/horizons/moon_vectors_csv_kms.txt\""}};

@@ -76,7 +76,9 @@ struct ConsoleRig {
                                      nullptr,
                                      nullptr,
                                      nullptr,
-                                     &test}};
+                                     &test,
+                                     nullptr,
+                                     nullptr}};
 
   ~ConsoleRig() { fs::remove_all(file.parent_path()); }
 

@@ -1,0 +1,46 @@
+#pragma once
+// [radio] and [[satellites.transmitter]] (docs/radio.md): which rig azeltrack keeps on frequency
+// through Hamlib's rigctld, and for which Doppler. One writer per rig: with doppler = "off" no
+// frequency is ever written.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "azt/radio/eme_doppler_modes.hpp"
+#include "azt/radio/satellite_doppler.hpp"
+#include "config/host_port.hpp"
+
+namespace azt::app {
+
+class ConfigFile;
+
+enum class DopplerSource { Off, Satellite, Eme };
+
+/// One `[[satellites.transmitter]]`: the frequencies of a satellite's transmitter (satellite
+/// frame) that the rig follows while that satellite is tracked.
+struct TransmitterConfig {
+  std::string norad;  ///< the catalogue number as text ("25544"), as the element sets spell it
+  radio::SatelliteTransmitter transmitter;
+};
+
+struct RadioConfig {
+  std::optional<HostPort> rigctld;     ///< none: no rig
+  std::optional<HostPort> tx_rigctld;  ///< a second rig for the uplink; none: split on rigctld
+  DopplerSource doppler = DopplerSource::Off;
+  radio::EmeDopplerMode eme_mode = radio::EmeDopplerMode::FullDx;
+  double dial_mhz = 0.0;  ///< EME: the nominal dial frequency
+  double step_hz = 10.0;  ///< the satellite update step, quoted at 435 MHz
+  bool no_tx_qsy = false;
+  std::vector<TransmitterConfig> transmitters;
+
+  /// The transmitter of the satellite `norad`, or null.
+  [[nodiscard]] const TransmitterConfig* transmitter_of(const std::string& norad) const;
+};
+
+std::string_view doppler_source_name(DopplerSource source);
+
+/// Throws UsageError naming the key on any invalid value or combination.
+RadioConfig radio_config_from(const ConfigFile& file);
+
+}  // namespace azt::app

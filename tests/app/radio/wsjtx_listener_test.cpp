@@ -1,0 +1,102 @@
+// WSJT-X's messages as the station keeps them (radio/wsjtx_listener.hpp): the DX grid followed,
+// the transmit hold and its end by a Status, a Close or silence, malformed datagrams counted.
+#include "radio/wsjtx_listener.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace azt::app {
+namespace {
+
+void u32(std::string& out, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8)
+    out.push_back(static_cast<char>((v >> shift) & 0xff));
+}
+
+void utf8(std::string& out, const std::string& s) {
+  u32(out, static_cast<std::uint32_t>(s.size()));
+  out += s;
+}
+
+std::string header(std::uint32_t type) {
+  std::string out;
+  u32(out, 0xadbccbda);
+  u32(out, 2);
+  u32(out, type);
+  utf8(out, "WSJT-X");
+  return out;
+}
+
+/// A Status ending after its DX grid (NetworkMessage.hpp's field order).
+std::string status(const std::string& dx_grid, bool transmitting) {
+  std::string out = header(1);
+  u32(out, 0);
+  u32(out, 1296100000);  // quint64 dial
+  utf8(out, "Q65");
+  utf8(out, "OZ1ABC");
+  utf8(out, "-20");
+  utf8(out, "Q65");
+  out.push_back(1);  // tx enabled
+  out.push_back(transmitting ? 1 : 0);
+  out.push_back(0);  // decoding
+  u32(out, 1500);
+  u32(out, 1500);
+  utf8(out, "W1AW");
+  utf8(out, "FN31");
+  utf8(out, dx_grid);
+  return out;
+}
+
+struct Rig {
+  double now_s = 100.0;
+  std::vector<std::string> grids;
+  std::vector<std::string> lines;
+  WsjtxListener listener{WsjtxParts{WsjtxConfig{}, [this] { return now_s; },
+                                    [this] { return 1.7e9 + now_s; },
+                                    [this](const std::string& g) { grids.push_back(g); },
+                                    [this](const std::string& l) { lines.push_back(l); }}};
+};
+
+TEST(WsjtxListener, TheDxGridIsFollowedOncePerChange) {
+  Rig r;
+  r.listener.on_datagram(status("JO65MR", false));
+  r.listener.on_datagram(status("JO65MR", false));
+  ASSERT_EQ(r.grids.size(), 1U);
+  EXPECT_EQ(r.grids[0], "JO65MR");
+  EXPECT_EQ(r.listener.to_json()["dx_call"], "OZ1ABC");
+}
+
+TEST(WsjtxListener, TransmittingHoldsUntilAStatusACloseOrSilence) {
+  Rig r;
+  r.listener.on_datagram(status("", true));
+  EXPECT_TRUE(r.listener.motion_hold());
+  r.listener.on_datagram(status("", false));
+  EXPECT_FALSE(r.listener.motion_hold());
+
+  r.listener.on_datagram(status("", true));
+  r.listener.on_datagram(header(6));  // Close
+  EXPECT_FALSE(r.listener.transmitting());
+
+  r.listener.on_datagram(status("", true));
+  r.now_s += WsjtxListener::kStaleS - 1.0;
+  EXPECT_TRUE(r.listener.transmitting());
+  r.now_s += 2.0;  // WSJT-X died mid-transmission: no heartbeat for kStaleS
+  EXPECT_FALSE(r.listener.transmitting());
+  EXPECT_FALSE(r.listener.motion_hold());
+}
+
+TEST(WsjtxListener, MalformedDatagramsAreCountedAndLoggedOnceAMinute) {
+  Rig r;
+  r.listener.on_datagram("garbage");
+  r.listener.on_datagram(status("JO65", false).substr(0, 40));
+  r.listener.on_oversized(9000);
+  EXPECT_EQ(r.listener.malformed(), 3U);
+  EXPECT_EQ(r.lines.size(), 1U);
+  EXPECT_TRUE(r.grids.empty());
+}
+
+}  // namespace
+}  // namespace azt::app
