@@ -4,6 +4,7 @@
 // wiring.cpp builds and connects the parts; control_loop.cpp runs the tick, the signals and the
 // ways out. Private to the daemon room: the rest of the program sees daemon.hpp.
 
+#include <atomic>
 #include <chrono>
 #include <memory>
 #include <string>
@@ -23,6 +24,7 @@
 #include "daemon/daemon.hpp"
 #include "daemon/rate_limited_log.hpp"
 #include "daemon/tick_stats.hpp"
+#include "elements/element_feed.hpp"
 #include "station/azel_dat_export.hpp"
 #include "station/clock_watch.hpp"
 #include "station/gps_receiver.hpp"
@@ -62,6 +64,11 @@ class StationDaemon {
   /// The backend behind the E-stop, the limit switches and the latch file.
   std::unique_ptr<AntennaBackend> make_guarded(std::unique_ptr<AntennaBackend> inner);
   SatelliteSettings satellite_settings() const;
+  /// [satellites] sources and file: the element feed over libcurl, the cache beside the
+  /// configuration (the state directory).
+  std::unique_ptr<ElementFeed> make_element_feed();
+  /// A path of the configuration relative to its directory, absolute.
+  std::string beside_config(const std::string& path) const;
   /// Where the mount's azimuth is (for choosing a pass's wrap side), or the configured start.
   double mount_az() const;
   /// UTC seconds since 1970, from the system clock.
@@ -119,6 +126,10 @@ class StationDaemon {
   /// chronyc and D-Bus may take seconds: the looks at the clock and the network queue here, not
   /// ahead of a save or a login.
   linux_os::WorkerThread status_worker_{io_};
+  /// Element downloads may stall for their whole timeout: on a worker of their own, so a login
+  /// or a save never waits behind one. Set, a running download is abandoned (a stop).
+  std::atomic<bool> downloads_cancelled_{false};
+  linux_os::WorkerThread download_worker_{io_};
   std::unique_ptr<astro::Ephemeris> ephemeris_;
   SkyFollower sky_;
   control::ModeController modes_;
@@ -131,6 +142,7 @@ class StationDaemon {
   std::shared_ptr<const sim::PlantRig> sim_truth_;
   std::unique_ptr<AntennaBackend> antenna_;
   SatelliteTracker satellites_;
+  std::unique_ptr<ElementFeed> elements_;
   RateLimitedLog log_;
   RecentEvents events_;
   RecentEvents motions_;                      ///< accepted motion commands, with their sources

@@ -1,6 +1,8 @@
 // The daemon's wiring: each part built from the configuration and connected to the others, the
 // station's front door shared by the console and every protocol server (docs/architecture.md).
 #include <spdlog/spdlog.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -9,6 +11,7 @@
 #include "azt/astro/maidenhead.hpp"
 #include "azt/linux/atomic_file.hpp"
 #include "azt/linux/clock_probe.hpp"
+#include "azt/linux/http_download.hpp"
 #include "azt/linux/libgpiod_lines.hpp"
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
@@ -114,6 +117,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
                               adopt_site(site, std::move(done));
                             },
                             [](const std::string& line) { spdlog::info("{}", line); }});
+  elements_ = make_element_feed();
   clock_ = make_clock_watch();
   network_ = std::make_unique<NetworkWatch>(
       io_, NetworkWatchParts{5.0, status_off_loop(), [] { return read_network_reading(); },
@@ -262,14 +266,47 @@ std::unique_ptr<AntennaBackend> StationDaemon::make_guarded(std::unique_ptr<Ante
   return guarded;
 }
 
+std::string StationDaemon::beside_config(const std::string& path) const {
+  const std::filesystem::path p(path);
+  return p.is_absolute() ? p.string()
+                         : (std::filesystem::path(options_.config_path).parent_path() / p).string();
+}
+
+std::unique_ptr<ElementFeed> StationDaemon::make_element_feed() {
+  const SatellitesConfig& c = config_.satellites;
+  ElementFeedSettings settings;
+  if (!c.file.empty()) settings.file = beside_config(c.file);
+  settings.sources = c.sources;
+  settings.refresh_s = c.refresh_h * 3600.0;
+  settings.cache_path = beside_config("elements-cache.json");
+  linux_os::DownloadOptions download;
+  download.ca_file = c.ca_file.empty() ? "" : beside_config(c.ca_file);
+  download.proxy = c.proxy;
+  download.max_redirects = c.max_redirects;
+  download.connect_timeout_s = c.connect_timeout_s;
+  download.total_timeout_s = c.timeout_s;
+  download.max_bytes = static_cast<std::size_t>(c.max_mb * 1e6);
+  download.user_agent = "azeltrack/" + std::string(program_version());
+  download.cancel = &downloads_cancelled_;
+  // The downloads' TLS and the parsing of megabytes compete with the control loop for two cores:
+  // their thread yields (nice 10, setpriority(2) on the thread's own id, which Linux allows).
+  download_worker_.post(
+      [] { (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 10); }, [] {});
+  return std::make_unique<ElementFeed>(ElementFeedParts{
+      settings, [download](const std::string& url) { return linux_os::download(url, download); },
+      [this](std::function<void()> work, std::function<void()> done) {
+        download_worker_.post(std::move(work), std::move(done));
+      },
+      off_loop(), [this] { return unix_now_s(); },
+      [this](SatelliteCatalogue catalogue, double unix_s) {
+        satellites_.adopt(std::move(catalogue), unix_s);
+      },
+      [](const std::string& line) { spdlog::info("{}", line); }});
+}
+
 SatelliteSettings StationDaemon::satellite_settings() const {
   SatelliteSettings s;
-  if (!config_.satellites.file.empty()) {
-    const std::filesystem::path file(config_.satellites.file);
-    s.file = file.is_absolute()
-                 ? file.string()
-                 : (std::filesystem::path(options_.config_path).parent_path() / file).string();
-  }
+  s.age = orbit::ElementAgeLimits{config_.satellites.stale_days, config_.satellites.refuse_days};
   s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
   s.dut1_s = config_.sky.settings.dut1_s;
   s.site = config_.sky.settings.observer;
@@ -389,7 +426,8 @@ void StationDaemon::open_console() {
                    [this] { return network_->to_json(); },
                    [this] { return receiver_->to_json(); },
                    scanner_.get(),
-                   [this](const std::string& who) { restart_soon(who); }},
+                   [this](const std::string& who) { restart_soon(who); },
+                   elements_.get()},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});
