@@ -11,6 +11,8 @@ the daemon as `[satellites] ca_file`. The server's sources:
   sets stay in use;
 - an upload (POST /api/satellites/elements): garbage refused (400), without a login refused
   (401), a good file merged in;
+- `[target] name` a satellite that only the first download brings: the daemon starts without it
+  and follows it once it is published;
 - a restart with the server gone: the cache under the state directory brings the catalogue back
   at once;
 - no download blocks the control loop: the latest tick over the whole run (with a stall of 4 s
@@ -192,6 +194,9 @@ def first_round():
     # The merge runs off the loop after the round's results are in: published a moment later.
     check(wait_until(lambda: sources_state()["count"] == 60, 5),
           f"the catalogue holds the three good sources' 60: {sources_state()['count']}")
+    check(wait_until(lambda: "TEST 40000" in (http_json(BASE, "GET", "/api/state")[1]["target"]
+                                               or {}).get("name", ""), 5),
+          "the start target, a satellite of the first download, is followed once it is there")
     names = [s["name"] for s in http_json(BASE, "GET", "/api/targets")[1]["satellites"]]
     check("TEST 40000" in names and "TEST 42019" in names, f"in /api/targets: {names[:5]}…")
 
@@ -240,7 +245,7 @@ try:
     server = serve_tls(cert, key)
     paths = ["good", "missing", "stall", "truncated", "garbage", "older", "tenth", "loop"]
     with open(CONFIG, "w", encoding="utf-8") as f:
-        f.write(station_toml(PORT))
+        f.write(station_toml(PORT).replace('name = "stop"', 'name = "sat:TEST 40000"'))
         urls = ", ".join(f'"{ORIGIN}/{p}"' for p in paths)
         f.write(f'[satellites]\nsources = [{urls}]\nca_file = "{ca}"\n'
                 'connect_timeout_s = 2.0\ntimeout_s = 1.5\nmax_redirects = 3\n')

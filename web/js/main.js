@@ -10,6 +10,7 @@ import { onState } from './live.js';
 import { drawTrend } from './trend.js';
 import { loadSky } from './sky.js';
 import { loadTargets } from './targets.js';
+import { renderElementSources, wireElements } from './elements.js';
 import { buildPark, buildTilt, drawTilt, loadConfig } from './setup.js';
 import { applyTheme, wire } from './wire.js';
 import { renderScan } from './scan.js';
@@ -18,12 +19,17 @@ import { renderForm as renderSoftwareForm } from './software.js';
 function start() {
   // The software page's form follows the login, which any screen can change: each state message
   // brings it up to date (its own polling is slower).
-  const state = (st) => { onState(st); if (S.screen === 'software') renderSoftwareForm(); };
+  const state = (st) => {
+    onState(st);
+    if (S.screen === 'software') renderSoftwareForm();
+    if (S.screen === 'targets') renderElementSources();
+  };
   useSocket({ state, connected: () => { if (!S.config) loadConfig(); if (!S.targets) loadTargets(); } });
   applyTheme(localStorage.getItem('azt.theme') || 'dark');
   buildPark();
   buildTilt();
   wire();
+  wireElements();
   setLoggedIn(false, null);
   $('login-form').hidden = true; // until /api/session has answered
   setConnected(false);

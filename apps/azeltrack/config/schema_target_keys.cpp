@@ -75,8 +75,8 @@ constexpr std::array<KeySpec, 13> kSatellites{{
      .unit = "MB",
      .range = closed(0.01, 256.0),
      .default_toml = "32.0",
-     .help = "a download larger than this fails (CelesTrak's `active` group as JSON is about 10 "
-             "MB)"},
+     .help = "a download larger than this fails (a whole CelesTrak group such as `active` is "
+             "megabytes)"},
     {.key = "max_redirects",
      .type = KeyType::Integer,
      .range = closed(0.0, 20.0),

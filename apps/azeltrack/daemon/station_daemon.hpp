@@ -168,6 +168,9 @@ class StationDaemon {
   std::string last_summary_;  ///< mode, owner and fault count at the last tick
   bool stopping_ = false;
   bool restart_requested_ = false;
+  /// [target] name is a satellite the catalogue does not hold yet (or whose elements are too
+  /// old): tried again at each publish until it is followed or another command is given.
+  bool start_waits_for_elements_ = false;
 };
 
 }  // namespace azt::app

@@ -300,6 +300,7 @@ std::unique_ptr<ElementFeed> StationDaemon::make_element_feed() {
       off_loop(), [this] { return unix_now_s(); },
       [this](SatelliteCatalogue catalogue, double unix_s) {
         satellites_.adopt(std::move(catalogue), unix_s);
+        if (start_waits_for_elements_) start_target();
       },
       [](const std::string& line) { spdlog::info("{}", line); }});
 }
@@ -331,14 +332,22 @@ double StationDaemon::now_s() const {
 }
 
 void StationDaemon::start_target() {
+  start_waits_for_elements_ = false;
   if (config_.start_target == "stop" || guard_->estop_latched()) return;
+  const TargetRequest request = target_from_name(config_.start_target);
   const auto outcome =
-      commands_.point(CommandSource{CommandSource::Kind::Configuration, "configuration"},
-                      target_from_name(config_.start_target));
-  // A name the station does not know is a mistake in the file; a latched fault is "not now".
-  if (!outcome.accepted() && outcome.refusal->status == proto::ServiceStatus::Invalid) {
-    throw UsageError("[target].name: " + outcome.refusal->reason);
+      commands_.point(CommandSource{CommandSource::Kind::Configuration, "configuration"}, request);
+  if (outcome.accepted() || outcome.refusal->status != proto::ServiceStatus::Invalid) return;
+  // A satellite may be missing or too old only until the sources' first download (a first start
+  // has no cache): the daemon runs and follows it once fresh elements are published.
+  if (std::holds_alternative<SatelliteTarget>(request)) {
+    start_waits_for_elements_ = true;
+    spdlog::warn("[target].name: {}; it is followed once the element sets hold it",
+                 outcome.refusal->reason);
+    return;
   }
+  // A name the station does not know is a mistake in the file; a latched fault is "not now".
+  throw UsageError("[target].name: " + outcome.refusal->reason);
 }
 
 void StationDaemon::open_servers() {
@@ -441,6 +450,7 @@ void StationDaemon::control_event(const std::string& text) {
 }
 
 void StationDaemon::motion_event(const CommandSource& source, const CommandRecord& record) {
+  start_waits_for_elements_ = false;  // someone chose: the start target no longer applies
   const std::string line = log_safe(source.name + ": " + record.words);
   log_.info("motion " + source.name, line, now_s());
   // A program's stream of positions is one entry; a new target or a STOP is a new one.
