@@ -46,6 +46,7 @@ orbit::ElementDownload fetch_and_read(const FetchElements& fetch, const std::str
 nlohmann::json upload_summary(const std::vector<orbit::Elements>& sets,
                               const std::vector<ElementSets>& in_use) {
   std::vector<const std::vector<orbit::Elements>*> pointers;
+  pointers.reserve(in_use.size());
   for (const ElementSets& s : in_use) pointers.push_back(s.get());
   std::unordered_map<std::string, double> newest;
   for (const orbit::Elements& e : orbit::merge_newest(pointers)) {
@@ -243,6 +244,7 @@ void ElementFeed::publish(double unix_s, bool at_once) {
     bool cached;  ///< downloads and uploads; the file is on disk already
   };
   std::vector<Input> inputs;
+  inputs.reserve(sources_.size());
   for (const ElementSource& s : sources_) {
     inputs.push_back({s.sets, s.url, s.last_ok_unix_s, s.kind != SourceKind::File});
   }
@@ -252,6 +254,7 @@ void ElementFeed::publish(double unix_s, bool at_once) {
   const bool write_cache = !at_once && !p_.settings.cache_path.empty();
   auto work = [inputs, catalogue, cache_error, write_cache, path = p_.settings.cache_path] {
     std::vector<const std::vector<orbit::Elements>*> pointers;
+    pointers.reserve(inputs.size());
     std::vector<CachedSource> cache;
     for (const Input& in : inputs) {
       pointers.push_back(in.sets.get());
@@ -288,6 +291,7 @@ void ElementFeed::publish(double unix_s, bool at_once) {
 void ElementFeed::upload(std::string text, double unix_s,
                          std::function<void(Result<nlohmann::json>)> done) {
   std::vector<ElementSets> in_use;
+  in_use.reserve(sources_.size());
   for (const ElementSource& s : sources_) in_use.push_back(s.sets);
   auto body = std::make_shared<std::string>(std::move(text));
   auto merged = std::make_shared<ElementSets>();

@@ -87,8 +87,7 @@ std::string failure(CURLcode code, const Transfer& t, const DownloadOptions& o,
   if (code == CURLE_TOO_MANY_REDIRECTS) {
     return "more than " + std::to_string(o.max_redirects) + " redirects (a redirect loop?)";
   }
-  const std::string detail = error_text[0] != '\0' ? error_text : curl_easy_strerror(code);
-  return detail;
+  return error_text[0] != '\0' ? std::string(error_text) : std::string(curl_easy_strerror(code));
 }
 
 }  // namespace
