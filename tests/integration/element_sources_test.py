@@ -3,7 +3,8 @@
 test's own HTTPS server on the loopback, with a throw-away CA made here by openssl and given to
 the daemon as `[satellites] ca_file`. The server's sources:
 - a good set (published: its satellites are in the catalogue and in /api/targets);
-- a 404; a stall past the configured timeout; a body cut short of its Content-Length; garbage
+- a local file:// source (published too);
+- a 404; a stall past the configured timeout; a body over `max_mb`; a body cut short of its Content-Length; garbage
   with status 200; a redirect loop: each fails with its reason in /api/state
   `satellites.sources`, and the daemon keeps running;
 - a source that first serves 20 good sets, then the same satellites at older epochs; another
@@ -98,6 +99,8 @@ class Sources(http.server.BaseHTTPRequestHandler):
             self.send_text(200, catalogue(41000, 20, 3.0 if second else 1.0))
         elif self.path == "/tenth":
             self.send_text(200, catalogue(42000, 1 if second else 20, 1.0))
+        elif self.path == "/huge":
+            self.send_text(200, catalogue(46000, 5, 1.0) + "#" * 700000)
         elif self.path == "/loop":
             self.send_response(302)
             self.send_header("Location", "/loop")
@@ -177,7 +180,7 @@ def stop_daemon(daemon):
 def first_round():
     t0 = time.monotonic()
     check(wait_until(lambda: round_done(None), 20), "every source tried once")
-    print(f"first round of 8 sources: {time.monotonic() - t0:.1f} s")
+    print(f"first round of 10 sources: {time.monotonic() - t0:.1f} s")
     state = sources_state()
     sources = by_path(state)
     for name in ("good", "older", "tenth"):
@@ -188,12 +191,14 @@ def first_round():
     expect_error(sources, "truncated", r"(?i)transfer closed|partial|remaining")
     expect_error(sources, "garbage", r"^does not parse")
     expect_error(sources, "loop", r"redirects")
-    for name in ("missing", "stall", "truncated", "garbage", "loop"):
+    expect_error(sources, "huge", r"over the 500000-byte limit")
+    check(sources["local.tle"]["count"] == 5, f"the file:// source: {sources['local.tle']}")
+    for name in ("missing", "stall", "truncated", "garbage", "loop", "huge"):
         check(sources[name]["count"] == 0 and sources[name]["last_ok"] is None,
               f"{name}: nothing taken: {sources[name]}")
     # The merge runs off the loop after the round's results are in: published a moment later.
-    check(wait_until(lambda: sources_state()["count"] == 60, 5),
-          f"the catalogue holds the three good sources' 60: {sources_state()['count']}")
+    check(wait_until(lambda: sources_state()["count"] == 65, 5),
+          f"the catalogue holds the good sources' 65: {sources_state()['count']}")
     check(wait_until(lambda: "TEST 40000" in (http_json(BASE, "GET", "/api/state")[1]["target"]
                                                or {}).get("name", ""), 5),
           "the start target, a satellite of the first download, is followed once it is there")
@@ -216,7 +221,7 @@ def second_round():
         check(sources[name]["count"] == 20 and sources[name]["last_ok"] is not None,
               f"{name}: its previous 20 stay in use: {sources[name]}")
     check(sources["good"]["last_error"] is None, f"good again: {sources['good']}")
-    check(state["count"] == 60, f"still 60 in the catalogue: {state['count']}")
+    check(state["count"] == 65, f"still 65 in the catalogue: {state['count']}")
 
 
 def uploads():
@@ -230,7 +235,7 @@ def uploads():
     status, reply = http_upload(BASE, route, tle(44000, 0.2, "UPLOADED").encode(), token=TOKEN,
                                 content_type="text/plain")
     check(status == 200 and reply["count"] == 1 and reply["newer"] == 1, f"upload: {status} {reply}")
-    check(wait_until(lambda: sources_state()["count"] == 61, 5), "the upload is in the catalogue")
+    check(wait_until(lambda: sources_state()["count"] == 66, 5), "the upload is in the catalogue")
 
 
 def tick_lateness_ms(log_name):
@@ -243,12 +248,15 @@ def tick_lateness_ms(log_name):
 try:
     ca, cert, key = make_ca_and_certificate()
     server = serve_tls(cert, key)
-    paths = ["good", "missing", "stall", "truncated", "garbage", "older", "tenth", "loop"]
+    paths = ["good", "missing", "stall", "truncated", "garbage", "older", "tenth", "loop", "huge"]
+    local = os.path.join(TMP, "local.tle")
+    with open(local, "w", encoding="utf-8") as f:
+        f.write(catalogue(45000, 5, 1.0))
     with open(CONFIG, "w", encoding="utf-8") as f:
         f.write(station_toml(PORT).replace('name = "stop"', 'name = "sat:TEST 40000"'))
-        urls = ", ".join(f'"{ORIGIN}/{p}"' for p in paths)
+        urls = ", ".join([f'"{ORIGIN}/{p}"' for p in paths] + [f'"file://{local}"'])
         f.write(f'[satellites]\nsources = [{urls}]\nca_file = "{ca}"\n'
-                'connect_timeout_s = 2.0\ntimeout_s = 1.5\nmax_redirects = 3\n')
+                'connect_timeout_s = 2.0\ntimeout_s = 1.5\nmax_redirects = 3\nmax_mb = 0.5\n')
     subprocess.run([BIN, "web", "password", "--config", CONFIG], input=b"a-long-password\n",
                    check=True, capture_output=True)
     TOKEN = subprocess.run([BIN, "web", "token", "--config", CONFIG], check=True,
@@ -267,7 +275,7 @@ try:
     daemon = start_daemon("restart.log")
     try:
         state = sources_state()
-        check(state["count"] == 61, f"after a restart without the server, from the cache: {state}")
+        check(state["count"] == 66, f"after a restart without the server, from the cache: {state}")
         check(by_path(state)["good"]["last_ok"] is not None, f"the cache's times: {state}")
         time.sleep(4.0)  # the baseline's ticks: the same daemon, no download due
         check(sources_state()["fetching"] is False, "no download within CelesTrak's 2 hours")
