@@ -15,8 +15,8 @@ const hm = (iso) => (iso ? iso.replace('T', ' ').replace(/:\d\d(\.\d+)?Z$/, ' UT
 function sourceRow(s) {
   const failed = !!s.last_error;
   return h('li', { class: failed ? 'src-failed' : '' },
-    h('span', { class: 'tn', text: s.kind === 'download' ? s.url : `${s.kind}: ${s.url}` }),
-    h('span', { class: 'tp', text: `${s.count} sets · last good ${hm(s.last_ok)}` }),
+    h('span', { class: 'tn', text: s.kind === 'download' ? s.url : s.kind === 'file' ? `file: ${s.url}` : 'uploaded in the console' }),
+    h('span', { class: 'tp', text: `${s.count} ${s.count === 1 ? 'set' : 'sets'} · last good ${hm(s.last_ok)}` }),
     failed ? h('span', { class: 'error', text: `failed ${hm(s.last_error_at)}: ${s.last_error} (the previous sets stay in use)` }) : '');
 }
 

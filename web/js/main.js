@@ -9,7 +9,7 @@ import { connect, setConnected, useSocket, watchSocket } from './socket.js';
 import { onState } from './live.js';
 import { drawTrend } from './trend.js';
 import { loadSky } from './sky.js';
-import { loadTargets } from './targets.js';
+import { loadTargets, wireSatelliteSearch } from './targets.js';
 import { renderElementSources, wireElements } from './elements.js';
 import { buildPark, buildTilt, drawTilt, loadConfig } from './setup.js';
 import { applyTheme, wire } from './wire.js';
@@ -30,6 +30,7 @@ function start() {
   buildTilt();
   wire();
   wireElements();
+  wireSatelliteSearch();
   setLoggedIn(false, null);
   $('login-form').hidden = true; // until /api/session has answered
   setConnected(false);

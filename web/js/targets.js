@@ -75,14 +75,26 @@ function renderPasses(sats) {
     h('td', { text: r.stale ? `${r.name} (stale elements)` : r.name }), h('td', { text: hm(r.aos) }), h('td', { text: deg(r.aos_az_deg, 0) }),
     h('td', { text: deg(r.max_el_deg, 0) }), h('td', { text: hm(r.los) }), h('td', { text: deg(r.los_az_deg, 0) }))));
 }
+// The search box's words: a name's part (any case) or a NORAD number (leading zeros or not).
+function matches(o, query) {
+  const q = query.trim().toLowerCase();
+  if (!q) return true;
+  if (/^\d+$/.test(q)) return String(o.norad).replace(/^0+/, '') === q.replace(/^0+/, '') || String(o.name).toLowerCase().includes(q);
+  return String(o.name).toLowerCase().includes(q);
+}
 function renderSatellites() {
-  const sats = (S.targets && Array.isArray(S.targets.satellites)) ? S.targets.satellites : [];
+  const all = (S.targets && Array.isArray(S.targets.satellites)) ? S.targets.satellites : [];
+  const query = $('sat-search') ? $('sat-search').value : '';
+  const sats = all.filter((o) => matches(o, query));
   const box = $('satellites');
-  const key = JSON.stringify(sats.map((o) => [o.norad, o.name, o.next_pass, o.el_deg && Math.round(o.el_deg), o.stale, o.refused]));
+  const key = JSON.stringify([query, sats.map((o) => [o.norad, o.name, o.next_pass, o.el_deg && Math.round(o.el_deg), o.stale, o.refused])]);
   if (box.dataset.key === key) return;
   box.dataset.key = key;
   renderPasses(sats);
-  if (!sats.length) { box.replaceChildren(h('p', { class: 'dimtxt', text: 'No satellite catalogue ([satellites] sources or file).' })); return; }
+  if (!sats.length) {
+    box.replaceChildren(h('p', { class: 'dimtxt', text: all.length ? `No satellite matches “${query}”.` : 'No satellite catalogue ([satellites] sources or file).' }));
+    return;
+  }
   box.replaceChildren(...sats.map((o) => {
     const np = o.next_pass;
     const t = np ? new Date(np.aos) : null;
@@ -98,6 +110,9 @@ function renderSatellites() {
       h('span', { class: 'tn', text: o.name }),
       h('span', { class: `tp${stale ? ' stale' : ''}`, text: info }));
   }));
+}
+export function wireSatelliteSearch() {
+  $('sat-search').addEventListener('input', renderSatellites);
 }
 export function markActiveTarget() {
   const st = S.state || {};
