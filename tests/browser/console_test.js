@@ -82,15 +82,15 @@ async function stopFeeder() {
 const hasProgram = (name) => spawnSync('sh', ['-c', `command -v ${name}`], { stdio: 'ignore' }).status === 0;
 
 // An ISS element set whose epoch is now, so that its next pass is within hours.
-function tleWithEpochNow() {
+function tleWithEpochNow(norad = '25544', name = 'ISS (ZARYA)') {
   const checksum = (l) => l.slice(0, 68) + String([...l.slice(0, 68)].reduce((a, c) =>
     a + (c >= '0' && c <= '9' ? Number(c) : c === '-' ? 1 : 0), 0) % 10);
   const now = new Date();
   const day = (now - Date.UTC(now.getUTCFullYear(), 0, 1)) / 86400000 + 1;
   const epoch = `${String(now.getUTCFullYear() % 100).padStart(2, '0')}${day.toFixed(8).padStart(12, '0')}`;
-  const l1 = `1 25544U 98067A   ${epoch}  .00016717  00000-0  30119-3 0  999`;
-  const l2 = '2 25544  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110';
-  return `ISS (ZARYA)\n${checksum(l1)}\n${checksum(l2)}\n`;
+  const l1 = `1 ${norad}U 98067A   ${epoch}  .00016717  00000-0  30119-3 0  999`;
+  const l2 = `2 ${norad}  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110`;
+  return `${name}\n${checksum(l1)}\n${checksum(l2)}\n`;
 }
 
 function writeConfig() {
@@ -335,6 +335,27 @@ async function main() {
       await page.click('#nav-sky');
       await until('the planned pass on the sky plot', async () => (await page.$('#sky-pass-path')) !== null, 8000);
       await page.click('#nav-main');
+    });
+
+    await scenario('the satellites: a search, where their elements come from, an upload', page, async () => {
+      await page.click('#nav-targets');
+      await page.fill('#sat-search', '25544');
+      await until('the ISS found by its number', () => page.isVisible('#satellites button[data-norad="25544"]'), 3000);
+      await page.fill('#sat-search', 'no such satellite');
+      await until('nothing found, said so', async () => (await text(page, '#satellites')).includes('No satellite matches'), 3000);
+      await page.fill('#sat-search', '');
+      await until('the file as a source', async () => (await text(page, '#sat-sources')).includes('sats.tle'), 5000);
+      await login(page);
+      await page.click('#nav-targets');
+      const upload = async (name, body) => {
+        await page.setInputFiles('#elements-file', { name, mimeType: 'text/plain', buffer: Buffer.from(body) });
+        await page.click('#elements-upload');
+      };
+      await upload('junk.tle', 'not an element set\n');
+      await until('the refusal beside the form', async () => (await text(page, '#elements-error')).includes('does not parse'), 5000);
+      await upload('mine.tle', tleWithEpochNow('43017', 'AO-91 TEST'));
+      await until('the uploaded satellite listed', async () => page.isVisible('#satellites button[data-norad="43017"]'), 8000);
+      await until('the upload as a source', async () => (await text(page, '#sat-sources')).includes('uploaded in the console'), 5000);
     });
 
     await scenario('+0.01° changes the running total and the antenna follows', page, async () => {

@@ -11,8 +11,15 @@ import { markActiveTarget } from './targets.js';
 import { renderStation } from './station.js';
 import { renderCorrectionsAndPosition } from './position.js';
 
-// "AOS 12:34 · max 83° · 8 s beyond 10° from 12:40:05", or the tracker's phase.
-function passLine(sat) {
+// "in 1 h 05 min", "in 4 min 12 s": the time to AOS.
+function countdown(s) {
+  const t = Math.max(0, Math.round(s));
+  if (t >= 3600) return `in ${Math.floor(t / 3600)} h ${pad(Math.floor((t % 3600) / 60))} min`;
+  return `in ${Math.floor(t / 60)} min ${pad(t % 60)} s`;
+}
+
+// "AOS 12:34 · max 83° · 8 s beyond 10° from 12:40:05 · in 4 min 12 s", or the tracker's phase.
+function passLine(sat, utc) {
   if (!sat.aos) return sat.problem || sat.phase || '—';
   const hhmm = (iso, secs) => String(iso).slice(11, secs ? 19 : 16);
   const when = sat.phase === 'tracking' ? `LOS ${hhmm(sat.los)}` : `AOS ${hhmm(sat.aos)}`;
@@ -20,7 +27,10 @@ function passLine(sat) {
   const lost = loss.seconds > 0
     ? `${Math.round(loss.seconds)} s beyond ${fix(loss.beyond_deg, 0)}° from ${hhmm(loss.from, true)}`
     : 'no loss planned';
-  return `${when} · max ${deg(sat.max_el_deg, 0)}${sat.flip ? ' · flipped' : ''} · ${lost}`;
+  // The countdown from the daemon's clock (the state's utc), not the browser's.
+  const toAos = (Date.parse(sat.aos) - Date.parse(utc)) / 1000;
+  const soon = sat.phase !== 'tracking' && Number.isFinite(toAos) && toAos > 0 ? ` · ${countdown(toAos)}` : '';
+  return `${when} · max ${deg(sat.max_el_deg, 0)}${sat.flip ? ' · flipped' : ''} · ${lost}${soon}`;
 }
 
 export function onState(st) {
@@ -49,7 +59,7 @@ export function onState(st) {
   // A satellite: its pass and the loss planned before AOS (docs/satellites.md).
   const sat = st.mode === 'TRACK' ? t.satellite : null;
   $('sat-row').hidden = !sat;
-  if (sat) setText('sat-pass', passLine(sat));
+  if (sat) setText('sat-pass', passLine(sat, st.utc));
   // Below the horizon limit: when it rises, instead of a pointing error that means nothing.
   const wait = st.mode === 'TRACK' ? t.waiting : null;
   $('wait-row').hidden = !wait;

@@ -9,20 +9,27 @@ import { connect, setConnected, useSocket, watchSocket } from './socket.js';
 import { onState } from './live.js';
 import { drawTrend } from './trend.js';
 import { loadSky } from './sky.js';
-import { loadTargets } from './targets.js';
+import { loadTargets, wireSatelliteSearch } from './targets.js';
+import { renderElementSources, wireElements } from './elements.js';
 import { buildPark, buildTilt, drawTilt, loadConfig } from './setup.js';
 import { applyTheme, wire } from './wire.js';
 
 function start() {
   // The pages loaded on demand that follow the live state (the pointing scan; the software page's
-  // form, which follows the login that any screen can change) are brought up to date by each
-  // state message.
-  const state = (st) => { onState(st); renderPage(); };
+  // form, which follows the login that any screen can change) and the Targets page's element
+  // sources are brought up to date by each state message.
+  const state = (st) => {
+    onState(st);
+    renderPage();
+    if (S.screen === 'targets') renderElementSources();
+  };
   useSocket({ state, connected: () => { if (!S.config) loadConfig(); if (!S.targets) loadTargets(); } });
   applyTheme(localStorage.getItem('azt.theme') || 'dark');
   buildPark();
   buildTilt();
   wire();
+  wireElements();
+  wireSatelliteSearch();
   setLoggedIn(false, null);
   $('login-form').hidden = true; // until /api/session has answered
   setConnected(false);

@@ -21,7 +21,8 @@ export function parkSlotAt(az, el) {
 export function targetLabel(st) {
   const t = st.target || {};
   switch (st.mode) {
-    case 'TRACK': return t.name || '—';
+    // A satellite by its catalogue name, not the request's "sat:" form.
+    case 'TRACK': return (t.satellite && t.satellite.sat) || t.name || '—';
     case 'PARK': { const p = parkSlotAt(t.az_deg, t.el_deg); return p ? `Park ${p.slot} · ${p.name}` : 'Park'; }
     case 'MAN': return 'Manual position';
     case 'EXT': return 'PC program';

@@ -71,29 +71,48 @@ function renderPasses(sats) {
   const hm = (iso) => { const t = new Date(iso); return Number.isNaN(t.getTime()) ? '—' : `${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())}`; };
   const table = $('sat-passes');
   table.hidden = rows.length === 0;
-  table.tBodies[0].replaceChildren(...rows.slice(0, 15).map((r) => h('tr', {},
-    h('td', { text: r.name }), h('td', { text: hm(r.aos) }), h('td', { text: deg(r.aos_az_deg, 0) }),
+  table.tBodies[0].replaceChildren(...rows.slice(0, 15).map((r) => h('tr', { class: r.stale ? 'stale' : '' },
+    h('td', { text: r.stale ? `${r.name} (stale elements)` : r.name }), h('td', { text: hm(r.aos) }), h('td', { text: deg(r.aos_az_deg, 0) }),
     h('td', { text: deg(r.max_el_deg, 0) }), h('td', { text: hm(r.los) }), h('td', { text: deg(r.los_az_deg, 0) }))));
 }
+// The search box's words: a name's part (any case) or a NORAD number (leading zeros or not).
+function matches(o, query) {
+  const q = query.trim().toLowerCase();
+  if (!q) return true;
+  if (/^\d+$/.test(q)) return String(o.norad).replace(/^0+/, '') === q.replace(/^0+/, '') || String(o.name).toLowerCase().includes(q);
+  return String(o.name).toLowerCase().includes(q);
+}
 function renderSatellites() {
-  const sats = (S.targets && Array.isArray(S.targets.satellites)) ? S.targets.satellites : [];
+  const all = (S.targets && Array.isArray(S.targets.satellites)) ? S.targets.satellites : [];
+  const query = $('sat-search') ? $('sat-search').value : '';
+  const sats = all.filter((o) => matches(o, query));
   const box = $('satellites');
-  const key = JSON.stringify(sats.map((o) => [o.norad, o.name, o.next_pass, o.el_deg && Math.round(o.el_deg)]));
+  const key = JSON.stringify([query, sats.map((o) => [o.norad, o.name, o.next_pass, o.el_deg && Math.round(o.el_deg), o.stale, o.refused])]);
   if (box.dataset.key === key) return;
   box.dataset.key = key;
   renderPasses(sats);
-  if (!sats.length) { box.replaceChildren(h('p', { class: 'dimtxt', text: 'No satellite catalogue ([satellites] file).' })); return; }
+  if (!sats.length) {
+    box.replaceChildren(h('p', { class: 'dimtxt', text: all.length ? `No satellite matches “${query}”.` : 'No satellite catalogue ([satellites] sources or file).' }));
+    return;
+  }
   box.replaceChildren(...sats.map((o) => {
     const np = o.next_pass;
     const t = np ? new Date(np.aos) : null;
     let info = np && t && !Number.isNaN(t.getTime())
       ? `AOS ${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())} · max ${deg(np.max_el_deg, 0)}` : 'no pass in 24 h';
     if (isNum(o.el_deg) && o.el_deg >= 0) info = `up now · el ${deg(o.el_deg, 1)}`;
-    const stale = isNum(o.element_age_days) && Math.abs(o.element_age_days) > 7;
-    return h('button', { type: 'button', class: 'tgt sat', 'data-name': `sat:${o.name}`, 'data-norad': o.norad },
+    // The daemon's verdict ([satellites] stale_days, refuse_days): stale passes are marked, and
+    // a refused satellite says why it will not be tracked.
+    const stale = !!o.stale || !!o.refused;
+    if (o.refused) info = `not tracked: elements ${Math.round(o.element_age_days)} d old`;
+    else if (stale) info = `${info} · elements ${Math.round(o.element_age_days)} d old`;
+    return h('button', { type: 'button', class: 'tgt sat', 'data-name': `sat:${o.name}`, 'data-norad': o.norad, title: o.refused || '' },
       h('span', { class: 'tn', text: o.name }),
-      h('span', { class: `tp${stale ? ' stale' : ''}`, text: stale ? `${info} · elements ${Math.round(o.element_age_days)} d old` : info }));
+      h('span', { class: `tp${stale ? ' stale' : ''}`, text: info }));
   }));
+}
+export function wireSatelliteSearch() {
+  $('sat-search').addEventListener('input', renderSatellites);
 }
 export function markActiveTarget() {
   const st = S.state || {};

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "azt/orbit/element_age.hpp"
 #include "cli/commands.hpp"
 #include "common/horizon_mask_option.hpp"
 #include "common/sky_setup.hpp"
@@ -56,12 +57,23 @@ std::optional<double> frequency(const std::string& option, const std::string& te
   return f;
 }
 
+/// The daemon's default limits ([satellites] stale_days, refuse_days; docs/satellites.md).
+const orbit::ElementAgeLimits kAgeLimits{};
+
+bool stale(const orbit::Satellite& sat, const astro::UtcInstant& utc) {
+  return orbit::judge_element_age(element_age_days(sat.elements, utc), kAgeLimits) !=
+         orbit::ElementAge::Fresh;
+}
+
 void warn_age(const orbit::Satellite& sat, const astro::UtcInstant& utc) {
   const double age = element_age_days(sat.elements, utc);
-  if (std::fabs(age) > orbit::kStaleElementDays) {
+  if (const std::string refusal = orbit::element_age_refusal(sat.elements.label(), age, kAgeLimits);
+      !refusal.empty()) {
+    std::cerr << "azeltrack: warning: " << refusal << " (the daemon would not track it)\n";
+  } else if (stale(sat, utc)) {
     std::cerr << "azeltrack: warning: the elements of " << sat.elements.label() << " are "
               << std::fixed << std::setprecision(1) << age
-              << " days from their epoch: predictions drift; fetch fresh ones\n";
+              << " days from their epoch: passes are stale; fetch fresh ones\n";
   }
 }
 
@@ -86,7 +98,8 @@ int run_sat(const SatOptions& o) {
                    {"el_deg", l->el_deg},
                    {"range_km", l->range_km},
                    {"range_rate_km_s", l->range_rate_km_s},
-                   {"element_age_days", element_age_days(sat.elements, utc)}};
+                   {"element_age_days", element_age_days(sat.elements, utc)},
+                   {"stale", stale(sat, utc)}};
   if (const auto f = frequency("--downlink-mhz", o.downlink_mhz)) {
     j["downlink_mhz"] = *f;
     j["downlink_hz"] = orbit::downlink_hz(*f * 1e6, l->range_rate_km_s);
@@ -140,14 +153,16 @@ int run_passes(const SatOptions& o) {
                            {"los_az_deg", p.los_az_deg},
                            {"duration_s", p.los_s - p.aos_s},
                            {"starts_before_window", p.starts_before_window},
-                           {"ends_after_window", p.ends_after_window}};
+                           {"ends_after_window", p.ends_after_window},
+                           {"stale", stale(sat, utc_plus(from, p.aos_s))}};
     if (o.json) {
       std::cout << j.dump() << '\n';
     } else {
       std::cout << std::fixed << std::setprecision(1) << j["aos"].get<std::string>() << "  AOS az "
                 << std::setw(5) << p.aos_az_deg << "  TCA " << j["tca"].get<std::string>() << " el "
                 << std::setw(4) << p.max_el_deg << "  LOS " << j["los"].get<std::string>() << " az "
-                << std::setw(5) << p.los_az_deg << '\n';
+                << std::setw(5) << p.los_az_deg << (j["stale"].get<bool>() ? "  (stale)" : "")
+                << '\n';
     }
   }
   if (!o.json && passes.value().empty()) std::cout << "no passes\n";

@@ -328,6 +328,42 @@ void read_servers(const ConfigFile& file, DaemonConfig& c) {
 
 }  // namespace
 
+namespace {
+
+/// [satellites]: the catalogue, its horizon and the pass planner's beamwidth, the network
+/// sources and how they are fetched, and the element-age limits.
+SatellitesConfig read_satellites(const ConfigSection& sats) {
+  SatellitesConfig c;
+  c.file = sats.text("file").value_or("");
+  c.mask = sats.text("mask").value_or("0");
+  try {
+    (void)parse_horizon_mask("mask", c.mask);
+  } catch (const UsageError& e) {
+    sats.fail("mask", std::string(e.what()).substr(6));
+  }
+  c.beamwidth_deg = sats.number("beamwidth_deg").value_or(c.beamwidth_deg);
+  if (const toml::array* urls = sats.array("sources")) {
+    for (const auto& item : *urls) {
+      const auto url = item.value<std::string>();
+      if (!url || url->empty()) sats.fail("sources", "must hold URLs");
+      c.sources.push_back(*url);
+    }
+  }
+  c.refresh_h = sats.number("refresh_h").value_or(c.refresh_h);
+  c.stale_days = sats.number("stale_days").value_or(c.stale_days);
+  c.refuse_days = sats.number("refuse_days").value_or(c.refuse_days);
+  if (c.refuse_days < c.stale_days) sats.fail("refuse_days", "must not be below stale_days");
+  c.ca_file = sats.text("ca_file").value_or("");
+  c.proxy = sats.text("proxy").value_or("");
+  c.connect_timeout_s = sats.number("connect_timeout_s").value_or(c.connect_timeout_s);
+  c.timeout_s = sats.number("timeout_s").value_or(c.timeout_s);
+  c.max_mb = sats.number("max_mb").value_or(c.max_mb);
+  c.max_redirects = static_cast<long>(sats.integer("max_redirects").value_or(c.max_redirects));
+  return c;
+}
+
+}  // namespace
+
 DaemonConfig daemon_config_from(const ConfigFile& file) {
   DaemonConfig c;
   const SimConfig sim = sim_config_from(file);
@@ -353,14 +389,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   }
   c.time = time_config_from(file);
   c.exports = export_config_from(file);
-  c.satellites.file = sats.text("file").value_or("");
-  c.satellites.mask = sats.text("mask").value_or("0");
-  try {
-    (void)parse_horizon_mask("mask", c.satellites.mask);
-  } catch (const UsageError& e) {
-    sats.fail("mask", std::string(e.what()).substr(6));
-  }
-  c.satellites.beamwidth_deg = sats.number("beamwidth_deg").value_or(20.0);
+  c.satellites = read_satellites(sats);
   c.schedule = schedule_config_from(file);
   c.web = read_web(file.section("web"));
   c.web.tokens = read_tokens(file);

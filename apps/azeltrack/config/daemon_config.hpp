@@ -95,6 +95,18 @@ struct SatellitesConfig {
   /// The satellite antenna's half-power beamwidth: a moment of a pass beyond half of it from the
   /// satellite counts as lost (the pass planner's loss, docs/satellites.md).
   double beamwidth_deg = 20.0;
+  /// Element sets from the network (docs/satellites.md): the URLs in order and how they are
+  /// fetched.
+  std::vector<std::string> sources;
+  double refresh_h = 12.0;
+  double stale_days = 14.0;   ///< passes marked stale beyond this element age
+  double refuse_days = 60.0;  ///< not tracked beyond this element age
+  std::string ca_file;        ///< empty: the system's CAs
+  std::string proxy;          ///< empty: the environment's, or none
+  double connect_timeout_s = 20.0;
+  double timeout_s = 120.0;
+  double max_mb = 32.0;
+  long max_redirects = 5;
 };
 
 /// [web]: the console's HTTP server and who may act through it (docs/web-api.md).

@@ -76,6 +76,14 @@ class ConsoleModel {
     const ActDone answer = std::move(done);
     answer(ActResult{{}, ApiError(404, "", "no settings file here")});
   }
+  /// POST /api/satellites/elements: an operator's element file (TLE or OMM), checked as a
+  /// download is and merged into the catalogue (docs/satellites.md). A model without an element
+  /// feed refuses with 404. The text is taken by value: the daemon's moves it on to the worker.
+  // NOLINTNEXTLINE(performance-unnecessary-value-param): this default only refuses
+  virtual void upload_elements(std::string /*text*/, const std::string& /*source*/, ActDone done) {
+    const ActDone answer = std::move(done);
+    answer(ActResult{{}, ApiError(404, "", "no element feed here")});
+  }
   /// The time now as ISO 8601 UTC, for records that say when they were made ("" unknown).
   virtual std::string utc_now_text() { return ""; }
   /// GET /api/config/file: the settings file's text; PUT: a whole file to take instead.

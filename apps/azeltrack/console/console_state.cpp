@@ -201,7 +201,16 @@ json DaemonConsole::state() {
           {"station_io", p_.station_io ? p_.station_io() : json(nullptr)},
           {"radio", p_.radio ? p_.radio() : json{{"doppler", "off"}, {"link", "off"}}},
           {"wsjtx", p_.wsjtx ? p_.wsjtx() : json{{"listening", false}}},
+          {"satellites", satellites_json()},
           {"servers", p_.servers}};
+}
+
+json DaemonConsole::satellites_json() const {
+  // Where the elements come from and how each source last went (docs/satellites.md): a failed
+  // source shows its reason while its previous sets stay in use.
+  return {{"count", p_.satellites != nullptr ? p_.satellites->catalogue().satellites().size() : 0},
+          {"fetching", p_.elements != nullptr && p_.elements->fetching()},
+          {"sources", p_.elements != nullptr ? p_.elements->to_json() : json::array()}};
 }
 
 json DaemonConsole::config() {

@@ -48,6 +48,15 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     act_direction_test(body, source, std::move(done));
     return;
   }
+  if (action == "satellites/refresh") {
+    if (p_.elements == nullptr) throw ApiError(404, "", "no element feed here");
+    if (!p_.elements->refresh_now(p_.unix_s())) {
+      throw ApiError(409, "", "the sources are being fetched: try again when that is done");
+    }
+    p_.log(source + ": element sources fetched now");
+    done(ActResult{});
+    return;
+  }
   if (action == "faults/clear") {
     p_.antenna.clear_faults();
     p_.log(source + ": latched faults cleared");
@@ -91,6 +100,18 @@ void DaemonConsole::act_direction_test(const json& body, const std::string& sour
                    axis == "az" || axis == "el" ? "" : "axis", *refused);
   }
   p_.log(source + ": direction test of the " + (axis == "az" ? "azimuth" : "elevation") + " axis");
+}
+
+void DaemonConsole::upload_elements(std::string text, const std::string& source, ActDone done) {
+  if (p_.elements == nullptr) throw ApiError(404, "", "no element feed here");
+  p_.log(source + ": uploads element sets (" + std::to_string(text.size()) + " bytes)");
+  p_.elements->upload(std::move(text), p_.unix_s(), [done = std::move(done)](Result<json> outcome) {
+    if (!outcome) {
+      done(ActResult{{}, ApiError(400, "", outcome.error().message)});
+      return;
+    }
+    done(ActResult{std::move(outcome).value(), std::nullopt});
+  });
 }
 
 TargetRequest DaemonConsole::target_request(const json& body) {

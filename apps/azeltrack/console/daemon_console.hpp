@@ -20,6 +20,7 @@
 #include "console/console_model.hpp"
 #include "console/moon_planner.hpp"
 #include "console/settings_change.hpp"
+#include "elements/element_feed.hpp"
 #include "station/clock_watch.hpp"
 #include "station/direction_test.hpp"
 #include "station/pointing_scanner.hpp"
@@ -68,6 +69,8 @@ struct ConsoleParts {
   /// The rig's Doppler and link (`radio`) and WSJT-X (`wsjtx`); null: off.
   std::function<nlohmann::json()> radio;
   std::function<nlohmann::json()> wsjtx;
+  /// Where the element sets come from (null: no sources, no uploads; `satellites.sources` empty).
+  ElementFeed* elements = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -83,6 +86,7 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json config_schema() override;
   nlohmann::json targets() override;
   nlohmann::json sky(double hours) override;
+  void upload_elements(std::string text, const std::string& source, ActDone done) override;
   void act(const std::string& action, const nlohmann::json& body, const std::string& source,
            ActDone done) override;
   void moon_windows(const std::string& query, ActDone done) override {
@@ -106,6 +110,7 @@ class DaemonConsole final : public ConsoleModel {
   /// The Moon panel: position, distance, echo delay and Doppler for the band (and DX).
   nlohmann::json moon_json(const astro::TargetReport& r, const astro::SkySnapshot& sky) const;
   nlohmann::json target_json();
+  [[nodiscard]] nlohmann::json satellites_json() const;
   [[nodiscard]] nlohmann::json control_json() const;
 
   /// The console's target body, parsed into the one request type (a malformed field: ApiError).

@@ -188,6 +188,21 @@ std::optional<linux_os::HttpReply> WebApi::authorize(const linux_os::HttpRequest
 
 linux_os::HttpServer::BodyAllowance WebApi::body_allowance(const linux_os::HttpRequest& head) {
   linux_os::HttpServer::BodyAllowance allowance{linux_os::HttpServer::kMaxBodyBytes, {}, {}, {}};
+  if (head.method == "POST" && head.path == "/api/satellites/elements") {
+    // An element file is held whole (it is parsed whole): read only with a login, one at a time,
+    // up to the size of CelesTrak's largest groups as TLE.
+    if (!has_session(head)) {
+      allowance.refusal = error_reply(401, "login required to upload element sets");
+    } else if (!elements_slot_.expired()) {
+      allowance.refusal = error_reply(409, "another element file is being uploaded");
+    } else {
+      auto slot = std::make_shared<const int>(0);
+      elements_slot_ = slot;
+      allowance.hold = std::move(slot);
+      allowance.max_bytes = kMaxElementUploadBytes;
+    }
+    return allowance;
+  }
   const bool upload = software_ != nullptr && software_->enabled() && head.method == "POST" &&
                       head.path == "/api/software/update";
   if (!upload) return allowance;
@@ -307,6 +322,10 @@ void WebApi::handle_action(linux_os::HttpRequest& request, const Respond& respon
       return;
     }
     software_->receive(*upload, answer(respond));
+    return;
+  }
+  if (request.path == "/api/satellites/elements" && request.method == "POST") {
+    model_.upload_elements(std::move(request.body), "console " + request.client, answer(respond));
     return;
   }
   const bool is_config = request.path.rfind("/api/config/", 0) == 0;

@@ -15,15 +15,17 @@ namespace azt::app {
 namespace asio = boost::asio;
 
 StationDaemon::~StationDaemon() {
-  // Members are destroyed after this body, in reverse order; the workers' jobs finish first.
+  // Members are destroyed after this body, in reverse order; the workers' jobs finish first (a
+  // download under way is abandoned rather than waited for).
+  downloads_cancelled_ = true;
+  download_worker_.finish();
   worker_.finish();
   status_worker_.finish();
 }
 
 int StationDaemon::run() {
   linux_os::install_crash_handlers();
-  satellites_.poll_file(unix_now_s());  // at once: the start target may be a satellite
-  satellites_.set_offload(off_loop());
+  elements_->start(unix_now_s());  // at once: the start target may be a satellite
   start_target();
   open_servers();
   signals_.async_wait([this](boost::system::error_code ec, int signal) {
@@ -94,7 +96,7 @@ void StationDaemon::arm_tick() {
 void StationDaemon::tick() {
   const double now = now_s();
   modes_.update(now);
-  satellites_.poll_file(unix_now_s());
+  elements_->tick(unix_now_s());
   satellites_.refresh_passes(unix_now_s());
   if (commands_.tracking_satellite()) {
     control::AzEl rate;

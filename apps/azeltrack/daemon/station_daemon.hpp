@@ -4,6 +4,7 @@
 // wiring.cpp builds and connects the parts; control_loop.cpp runs the tick, the signals and the
 // ways out. Private to the daemon room: the rest of the program sees daemon.hpp.
 
+#include <atomic>
 #include <chrono>
 #include <memory>
 #include <string>
@@ -23,6 +24,7 @@
 #include "daemon/daemon.hpp"
 #include "daemon/rate_limited_log.hpp"
 #include "daemon/tick_stats.hpp"
+#include "elements/element_feed.hpp"
 #include "radio/station_radio.hpp"
 #include "station/azel_dat_export.hpp"
 #include "station/clock_watch.hpp"
@@ -64,6 +66,11 @@ class StationDaemon {
   /// The backend behind the E-stop, the limit switches and the latch file.
   std::unique_ptr<AntennaBackend> make_guarded(std::unique_ptr<AntennaBackend> inner);
   SatelliteSettings satellite_settings() const;
+  /// [satellites] sources and file: the element feed over libcurl, the cache beside the
+  /// configuration (the state directory).
+  std::unique_ptr<ElementFeed> make_element_feed();
+  /// A path of the configuration relative to its directory, absolute.
+  std::string beside_config(const std::string& path) const;
   /// Where the mount's azimuth is (for choosing a pass's wrap side), or the configured start.
   double mount_az() const;
   /// UTC seconds since 1970, from the system clock.
@@ -125,6 +132,10 @@ class StationDaemon {
   /// chronyc and D-Bus may take seconds: the looks at the clock and the network queue here, not
   /// ahead of a save or a login.
   linux_os::WorkerThread status_worker_{io_};
+  /// Element downloads may stall for their whole timeout: on a worker of their own, so a login
+  /// or a save never waits behind one. Set, a running download is abandoned (a stop).
+  std::atomic<bool> downloads_cancelled_{false};
+  linux_os::WorkerThread download_worker_{io_};
   std::unique_ptr<astro::Ephemeris> ephemeris_;
   SkyFollower sky_;
   control::ModeController modes_;
@@ -137,6 +148,7 @@ class StationDaemon {
   std::shared_ptr<const sim::PlantRig> sim_truth_;
   std::unique_ptr<AntennaBackend> antenna_;
   SatelliteTracker satellites_;
+  std::unique_ptr<ElementFeed> elements_;
   RateLimitedLog log_;
   RecentEvents events_;
   RecentEvents motions_;                      ///< accepted motion commands, with their sources
@@ -164,6 +176,9 @@ class StationDaemon {
   std::string last_summary_;  ///< mode, owner and fault count at the last tick
   bool stopping_ = false;
   bool restart_requested_ = false;
+  /// [target] name is a satellite the catalogue does not hold yet (or whose elements are too
+  /// old): tried again at each publish until it is followed or another command is given.
+  bool start_waits_for_elements_ = false;
 };
 
 }  // namespace azt::app

@@ -1,6 +1,8 @@
 // The daemon's wiring: each part built from the configuration and connected to the others, the
 // station's front door shared by the console and every protocol server (docs/architecture.md).
 #include <spdlog/spdlog.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -9,6 +11,7 @@
 #include "azt/astro/maidenhead.hpp"
 #include "azt/linux/atomic_file.hpp"
 #include "azt/linux/clock_probe.hpp"
+#include "azt/linux/http_download.hpp"
 #include "azt/linux/libgpiod_lines.hpp"
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
@@ -121,6 +124,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
                               adopt_site(site, std::move(done));
                             },
                             [](const std::string& line) { spdlog::info("{}", line); }});
+  elements_ = make_element_feed();
   clock_ = make_clock_watch();
   network_ = std::make_unique<NetworkWatch>(
       io_, NetworkWatchParts{5.0, status_off_loop(), [] { return read_network_reading(); },
@@ -299,14 +303,48 @@ std::unique_ptr<AntennaBackend> StationDaemon::make_guarded(std::unique_ptr<Ante
   return guarded;
 }
 
+std::string StationDaemon::beside_config(const std::string& path) const {
+  const std::filesystem::path p(path);
+  return p.is_absolute() ? p.string()
+                         : (std::filesystem::path(options_.config_path).parent_path() / p).string();
+}
+
+std::unique_ptr<ElementFeed> StationDaemon::make_element_feed() {
+  const SatellitesConfig& c = config_.satellites;
+  ElementFeedSettings settings;
+  if (!c.file.empty()) settings.file = beside_config(c.file);
+  settings.sources = c.sources;
+  settings.refresh_s = c.refresh_h * 3600.0;
+  settings.cache_path = beside_config("elements-cache.json");
+  linux_os::DownloadOptions download;
+  download.ca_file = c.ca_file.empty() ? "" : beside_config(c.ca_file);
+  download.proxy = c.proxy;
+  download.max_redirects = c.max_redirects;
+  download.connect_timeout_s = c.connect_timeout_s;
+  download.total_timeout_s = c.timeout_s;
+  download.max_bytes = static_cast<std::size_t>(c.max_mb * 1e6);
+  download.user_agent = "azeltrack/" + std::string(program_version());
+  download.cancel = &downloads_cancelled_;
+  // The downloads' TLS and the parsing of megabytes compete with the control loop for two cores:
+  // their thread yields (nice 10, setpriority(2) on the thread's own id, which Linux allows).
+  download_worker_.post(
+      [] { (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 10); }, [] {});
+  return std::make_unique<ElementFeed>(ElementFeedParts{
+      settings, [download](const std::string& url) { return linux_os::download(url, download); },
+      [this](std::function<void()> work, std::function<void()> done) {
+        download_worker_.post(std::move(work), std::move(done));
+      },
+      off_loop(), [this] { return unix_now_s(); },
+      [this](SatelliteCatalogue catalogue, double unix_s) {
+        satellites_.adopt(std::move(catalogue), unix_s);
+        if (start_waits_for_elements_) start_target();
+      },
+      [](const std::string& line) { spdlog::info("{}", line); }});
+}
+
 SatelliteSettings StationDaemon::satellite_settings() const {
   SatelliteSettings s;
-  if (!config_.satellites.file.empty()) {
-    const std::filesystem::path file(config_.satellites.file);
-    s.file = file.is_absolute()
-                 ? file.string()
-                 : (std::filesystem::path(options_.config_path).parent_path() / file).string();
-  }
+  s.age = orbit::ElementAgeLimits{config_.satellites.stale_days, config_.satellites.refuse_days};
   s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
   s.dut1_s = config_.sky.settings.dut1_s;
   s.site = config_.sky.settings.observer;
@@ -331,14 +369,22 @@ double StationDaemon::now_s() const {
 }
 
 void StationDaemon::start_target() {
+  start_waits_for_elements_ = false;
   if (config_.start_target == "stop" || guard_->estop_latched()) return;
+  const TargetRequest request = target_from_name(config_.start_target);
   const auto outcome =
-      commands_.point(CommandSource{CommandSource::Kind::Configuration, "configuration"},
-                      target_from_name(config_.start_target));
-  // A name the station does not know is a mistake in the file; a latched fault is "not now".
-  if (!outcome.accepted() && outcome.refusal->status == proto::ServiceStatus::Invalid) {
-    throw UsageError("[target].name: " + outcome.refusal->reason);
+      commands_.point(CommandSource{CommandSource::Kind::Configuration, "configuration"}, request);
+  if (outcome.accepted() || outcome.refusal->status != proto::ServiceStatus::Invalid) return;
+  // A satellite may be missing or too old only until the sources' first download (a first start
+  // has no cache): the daemon runs and follows it once fresh elements are published.
+  if (std::holds_alternative<SatelliteTarget>(request)) {
+    start_waits_for_elements_ = true;
+    spdlog::warn("[target].name: {}; it is followed once the element sets hold it",
+                 outcome.refusal->reason);
+    return;
   }
+  // A name the station does not know is a mistake in the file; a latched fault is "not now".
+  throw UsageError("[target].name: " + outcome.refusal->reason);
 }
 
 void StationDaemon::open_servers() {
@@ -431,7 +477,8 @@ void StationDaemon::open_console() {
                    radio_ ? std::function<nlohmann::json()>([this] { return radio_->radio_json(); })
                           : nullptr,
                    radio_ ? std::function<nlohmann::json()>([this] { return radio_->wsjtx_json(); })
-                          : nullptr},
+                          : nullptr,
+                   elements_.get()},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});
@@ -445,6 +492,7 @@ void StationDaemon::control_event(const std::string& text) {
 }
 
 void StationDaemon::motion_event(const CommandSource& source, const CommandRecord& record) {
+  start_waits_for_elements_ = false;  // someone chose: the start target no longer applies
   const std::string line = log_safe(source.name + ": " + record.words);
   log_.info("motion " + source.name, line, now_s());
   direction_test_.interrupt(source.name + ": " + record.words);

@@ -5,6 +5,7 @@
 #include "satellites/element_sets.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "azt/orbit/tle.hpp"
 #include "azt/util/valid_utf8.hpp"
 #include "satellites/omm_library_readers.hpp"
+#include "satellites/satnogs_tle_json.hpp"
 
 namespace azt::app {
 
@@ -116,8 +118,12 @@ ElementSetFile parse_element_sets(std::string_view text, const std::string& sour
     file.errors.push_back(from_source(source_name, "empty: no element sets in it"));
     return file;
   }
-  if (format == Format::Tle) {
-    orbit::TleParse tles = orbit::parse_tle_catalogue(text);
+  // SatNOGS DB's JSON carries TLE lines, not OMM keywords: read as the TLEs it holds.
+  std::optional<std::string> satnogs;
+  if (format == Format::Json) satnogs = satnogs_tle_text(text);
+  if (satnogs) file.format = "satnogs-json";
+  if (format == Format::Tle || satnogs) {
+    orbit::TleParse tles = orbit::parse_tle_catalogue(satnogs ? std::string_view(*satnogs) : text);
     file.sets = std::move(tles.sets);
     for (const std::string& error : tles.errors) {
       file.errors.push_back(from_source(source_name, error));

@@ -15,7 +15,8 @@
 namespace azt::app {
 
 /// What one file gave: the good element sets in file order, one message per bad entry, and the
-/// format the content was read as: "xml", "json", "kvn", "csv", "tle", or "empty".
+/// format the content was read as: "xml", "json", "kvn", "csv", "tle", "satnogs-json" (SatNOGS
+/// DB's TLE lines in JSON), or "empty".
 struct ElementSetFile {
   std::vector<orbit::Elements> sets;
   std::vector<std::string> errors;
@@ -23,7 +24,8 @@ struct ElementSetFile {
 };
 
 /// Reads a whole element-set file, detecting its format from the content (a leading '<' is
-/// XML, '[' or '{' JSON, a line starting CCSDS_OMM_VERS KVN, a first line naming OBJECT_NAME and
+/// XML, '[' or '{' JSON (SatNOGS DB's array of "tle0/tle1/tle2" objects, else OMM), a line starting
+/// CCSDS_OMM_VERS KVN, a first line naming OBJECT_NAME and
 /// MEAN_MOTION a CSV header, anything else TLE through the core parser).
 ///
 /// A malformed entry is an error for that entry alone: the message names the source, the entry

@@ -25,18 +25,25 @@ bool all_digits(const std::string& s) {
 }  // namespace
 
 SatelliteCatalogue SatelliteCatalogue::parse(std::string_view text, const std::string& source) {
-  SatelliteCatalogue c;
-  c.source_ = source;
   // TLE or OMM (XML, JSON, KVN, CSV): errors already name the source and the entry.
   ElementSetFile parsed = parse_element_sets(text, source);
-  c.errors_ = std::move(parsed.errors);
-  for (auto& e : parsed.sets) {
+  SatelliteCatalogue c = from_sets(std::move(parsed.sets), source);
+  c.errors_.insert(c.errors_.begin(), parsed.errors.begin(), parsed.errors.end());
+  return c;
+}
+
+SatelliteCatalogue SatelliteCatalogue::from_sets(std::vector<orbit::Elements> sets,
+                                                 const std::string& source) {
+  SatelliteCatalogue c;
+  c.source_ = source;
+  c.satellites_.reserve(sets.size());
+  for (auto& e : sets) {
     auto sgp4 = orbit::Sgp4::make(e);
     if (!sgp4) {
       c.errors_.push_back(source + ": " + e.label() + ": " + sgp4.error().message);
       continue;
     }
-    c.satellites_.push_back(orbit::Satellite{e, std::move(sgp4).value()});
+    c.satellites_.push_back(orbit::Satellite{std::move(e), std::move(sgp4).value()});
   }
   return c;
 }

@@ -17,6 +17,9 @@ class SatelliteCatalogue {
   /// Parses a catalogue file's text (TLE, or OMM in XML / JSON / KVN / CSV). Entries that do not
   /// parse or initialise are kept as named errors; the others are usable.
   static SatelliteCatalogue parse(std::string_view text, const std::string& source);
+  /// A catalogue of sets already read (a merge of several sources, docs/satellites.md): each
+  /// gets its propagator; one that does not initialise (a decayed orbit) is a named error.
+  static SatelliteCatalogue from_sets(std::vector<orbit::Elements> sets, const std::string& source);
   /// Reads and parses `path`; throws UsageError when it cannot be read.
   static SatelliteCatalogue load(const std::string& path);
 

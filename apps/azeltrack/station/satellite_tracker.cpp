@@ -1,7 +1,5 @@
 #include "station/satellite_tracker.hpp"
 
-#include <sys/stat.h>
-
 #include <cmath>
 #include <memory>
 
@@ -12,12 +10,6 @@ namespace {
 
 constexpr double kSearchHours = 48.0;
 constexpr double kRetryS = 600.0;
-
-std::optional<double> modification_time(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) return std::nullopt;
-  return static_cast<double>(st.st_mtim.tv_sec) + static_cast<double>(st.st_mtim.tv_nsec) * 1e-9;
-}
 
 /// The log's word on a pass the mount cannot fly on the satellite throughout.
 std::string loss_note(const track::PassPlan& plan) {
@@ -33,61 +25,9 @@ SatelliteTracker::SatelliteTracker(SatelliteSettings settings,
                                    std::function<void(const std::string&)> log)
     : s_(std::move(settings)), log_(std::move(log)) {}
 
-void SatelliteTracker::poll_file(double unix_s) {
-  if (s_.file.empty() || unix_s - last_poll_s_ < 10.0) return;
-  last_poll_s_ = unix_s;
-  const auto mtime = modification_time(s_.file);
-  if (!mtime || mtime == file_mtime_) {
-    if (!mtime && !file_mtime_) {
-      file_mtime_ = -1.0;  // said once
-      log_("satellites: cannot read " + s_.file + " (no satellites until it appears)");
-    }
-    return;
-  }
-  file_mtime_ = mtime;
-  // The first load is at once (the start target may be a satellite); a reload of a changed file
-  // (a CelesTrak catalogue is megabytes) is read and parsed off the loop when it can be.
-  if (!offload_ || !loaded_once_) {
-    adopt(load_catalogue(s_.file), unix_s);
-    return;
-  }
-  if (loading_) {
-    file_mtime_.reset();  // look again at the next poll
-    return;
-  }
-  loading_ = true;
-  auto fresh = std::make_shared<Loaded>();
-  offload_([fresh, file = s_.file] { *fresh = load_catalogue(file); },
-           [this, fresh, unix_s] {
-             loading_ = false;
-             adopt(std::move(*fresh), unix_s);
-           });
-}
-
-SatelliteTracker::Loaded SatelliteTracker::load_catalogue(const std::string& file) {
-  try {
-    return Loaded{SatelliteCatalogue::load(file), {}};
-  } catch (const std::exception& e) {
-    return Loaded{{}, e.what()};
-  }
-}
-
-void SatelliteTracker::adopt(Loaded loaded, double unix_s) {
-  loaded_once_ = true;
-  if (!loaded.error.empty()) {
-    log_("satellites: " + loaded.error + "; keeping the previous catalogue");
-    return;
-  }
-  SatelliteCatalogue& fresh = loaded.catalogue;
-  for (const auto& e : fresh.errors()) log_("satellites: " + e);
-  if (fresh.satellites().empty() && !catalogue_.satellites().empty()) {
-    log_("satellites: " + s_.file + " holds no usable element set; keeping the previous catalogue");
-    return;
-  }
-  catalogue_ = std::move(fresh);
+void SatelliteTracker::adopt(SatelliteCatalogue catalogue, double unix_s) {
+  catalogue_ = std::move(catalogue);
   upcoming_.clear();
-  log_("satellites: " + std::to_string(catalogue_.satellites().size()) + " element sets from " +
-       s_.file);
   // The followed satellite's new elements give a new plan (not mid-pass: the old one finishes).
   if (planned_ && unix_s >= planned_->pass.aos_s) return;
   planned_.reset();
@@ -110,6 +50,11 @@ Result<std::string> SatelliteTracker::follow(const std::string& name_or_norad, d
   } catch (const std::exception& e) {
     return fail(e.what());
   }
+  const double age = element_age_days(sat->elements, astro::UtcInstant::from_unix_seconds(unix_s));
+  if (std::string why = orbit::element_age_refusal(sat->elements.label(), age, s_.age);
+      !why.empty()) {
+    return fail(why);
+  }
   following_ = sat->elements.catalog;
   planned_.reset();
   next_plan_s_ = -1e9;
@@ -122,6 +67,14 @@ void SatelliteTracker::plan_next(double unix_s, double mount_az_deg) {
   const orbit::Satellite* sat = current();
   if (sat == nullptr || unix_s < next_plan_s_) return;
   const astro::UtcInstant from = astro::UtcInstant::from_unix_seconds(unix_s);
+  // Elements that aged past refuse_days while followed are not flown: the antenna would point
+  // where the satellite is not. Fresh ones from the feed lift this at its next publish.
+  problem_ = orbit::element_age_refusal(sat->elements.label(),
+                                        element_age_days(sat->elements, from), s_.age);
+  if (!problem_.empty()) {
+    next_plan_s_ = unix_s + kRetryS;
+    return;
+  }
   auto passes = find_satellite_passes(*sat, from, kSearchHours, s_.mask, s_.dut1_s, s_.site);
   next_plan_s_ = unix_s + kRetryS;
   if (!passes || passes.value().empty()) {
@@ -192,11 +145,13 @@ nlohmann::json SatelliteTracker::status(double unix_s) const {
   const orbit::Satellite* sat = current();
   if (sat == nullptr) return nullptr;
   const double age = element_age_days(sat->elements, astro::UtcInstant::from_unix_seconds(unix_s));
+  const std::string refusal = orbit::element_age_refusal(sat->elements.label(), age, s_.age);
   nlohmann::json j{
       {"sat", sat->elements.label()},
       {"norad", sat->elements.catalog},
       {"element_age_days", age},
-      {"stale", std::fabs(age) > orbit::kStaleElementDays},
+      {"stale", orbit::judge_element_age(age, s_.age) != orbit::ElementAge::Fresh},
+      {"refused", refusal.empty() ? nlohmann::json() : nlohmann::json(refusal)},
       {"problem", problem_.empty() ? nlohmann::json(nullptr) : nlohmann::json(problem_)}};
   if (auto l = look(*sat, astro::UtcInstant::from_unix_seconds(unix_s), s_.dut1_s, s_.site)) {
     j["az_deg"] = l->az_deg;
@@ -249,12 +204,16 @@ void SatelliteTracker::refresh_passes(double unix_s) {
   auto passes = find_satellite_passes(sat, now, 24.0, s_.mask, s_.dut1_s, s_.site);
   if (!passes) return;
   for (const auto& p : passes.value()) {
-    u.passes.push_back({{"aos", astro::format_iso8601_utc_unix(unix_s + p.aos_s)},
-                        {"tca", astro::format_iso8601_utc_unix(unix_s + p.tca_s)},
-                        {"los", astro::format_iso8601_utc_unix(unix_s + p.los_s)},
-                        {"max_el_deg", p.max_el_deg},
-                        {"aos_az_deg", p.aos_az_deg},
-                        {"los_az_deg", p.los_az_deg}});
+    // A pass predicted from stale elements is marked: its times may be tens of seconds off.
+    const double age = element_age_days(sat.elements, astro::utc_plus(now, p.aos_s));
+    u.passes.push_back(
+        {{"stale", orbit::judge_element_age(age, s_.age) != orbit::ElementAge::Fresh},
+         {"aos", astro::format_iso8601_utc_unix(unix_s + p.aos_s)},
+         {"tca", astro::format_iso8601_utc_unix(unix_s + p.tca_s)},
+         {"los", astro::format_iso8601_utc_unix(unix_s + p.los_s)},
+         {"max_el_deg", p.max_el_deg},
+         {"aos_az_deg", p.aos_az_deg},
+         {"los_az_deg", p.los_az_deg}});
   }
 }
 
@@ -265,9 +224,13 @@ nlohmann::json SatelliteTracker::list(double unix_s) const {
   for (std::size_t i = 0; i < sats.size(); ++i) {
     const orbit::Satellite& sat = sats[i];
     // Where it is now costs one propagation; the passes come from refresh_passes().
+    const double age = element_age_days(sat.elements, now);
+    const std::string refusal = orbit::element_age_refusal(sat.elements.label(), age, s_.age);
     nlohmann::json j{{"name", sat.elements.label()},
                      {"norad", sat.elements.catalog},
-                     {"element_age_days", element_age_days(sat.elements, now)}};
+                     {"element_age_days", age},
+                     {"stale", orbit::judge_element_age(age, s_.age) != orbit::ElementAge::Fresh},
+                     {"refused", refusal.empty() ? nlohmann::json() : nlohmann::json(refusal)}};
     if (auto l = look(sat, now, s_.dut1_s, s_.site)) {
       j["az_deg"] = l->az_deg;
       j["el_deg"] = l->el_deg;

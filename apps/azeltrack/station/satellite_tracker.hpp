@@ -2,8 +2,9 @@
 // A satellite as the daemon's target (docs/satellites.md): the next pass is planned as a whole at
 // selection (or after the previous LOS), the antenna is pre-positioned to where the plan starts,
 // and through the pass the planned mount position is the demand (never re-planned to the nearest
-// side mid-pass). The catalogue file is re-read when it changes (replaced atomically by whatever
-// fetches it); a file that no longer parses keeps the old catalogue.
+// side mid-pass). The catalogue comes whole from the element feed (elements/element_feed.hpp:
+// the sources, the file and uploads, merged), and is swapped in one move. Elements older than
+// `refuse_days` are not tracked (azt/orbit/element_age.hpp), with the reason as the problem.
 
 #include <functional>
 #include <optional>
@@ -13,16 +14,16 @@
 #include <nlohmann/json.hpp>
 
 #include "azt/control/modes.hpp"
+#include "azt/orbit/element_age.hpp"
 #include "azt/orbit/passes.hpp"
 #include "azt/track/pass_plan.hpp"
-#include "common/off_loop.hpp"
 #include "satellites/satellite_catalogue.hpp"
 
 namespace azt::app {
 
 struct SatelliteSettings {
-  std::string file;  ///< the catalogue (TLE or OMM); empty: no satellites
   orbit::HorizonMask mask;
+  orbit::ElementAgeLimits age;  ///< [satellites] stale_days, refuse_days
   double dut1_s = 0.0;
   astro::Observer site;
   track::MountGeometry mount;
@@ -32,11 +33,9 @@ class SatelliteTracker {
  public:
   SatelliteTracker(SatelliteSettings settings, std::function<void(const std::string&)> log);
 
-  /// Re-reads the file if its modification time changed (checked every 10 s of `unix_s`). The
-  /// first read is at once; later ones run through `offload` when one is set (the daemon's
-  /// worker), and the new catalogue is adopted when the read is done.
-  void poll_file(double unix_s);
-  void set_offload(Offload offload) { offload_ = std::move(offload); }
+  /// A new catalogue, whole (the feed merged it off the loop). The followed satellite keeps
+  /// a pass under way as planned; before AOS its pass is planned again from the new elements.
+  void adopt(SatelliteCatalogue catalogue, double unix_s);
   [[nodiscard]] const SatelliteCatalogue& catalogue() const { return catalogue_; }
 
   /// Starts following a satellite (name or NORAD number); the error names it.
@@ -54,7 +53,8 @@ class SatelliteTracker {
   control::Demand demand(double unix_s, double mount_az_deg, control::AzEl& rate);
 
   /// {"sat","norad","phase","aos","tca","los","max_el_deg","flip","element_age_days","stale",
-  /// "az_deg","el_deg"} for the followed satellite; null when none.
+  /// "refused" (null, or why it is not tracked),"az_deg","el_deg"} for the followed satellite;
+  /// null when none.
   [[nodiscard]] nlohmann::json status(double unix_s) const;
   /// Every satellite with its position now and its passes in the next 24 h (as last found by
   /// refresh_passes()).
@@ -72,23 +72,12 @@ class SatelliteTracker {
     track::PassPlan plan;
     std::vector<track::SkyPoint> sky;
   };
-  struct Loaded {
-    SatelliteCatalogue catalogue;
-    std::string error;  ///< non-empty: the file could not be read
-  };
-  static Loaded load_catalogue(const std::string& file);
-  void adopt(Loaded loaded, double unix_s);
   void plan_next(double unix_s, double mount_az_deg);
   [[nodiscard]] const orbit::Satellite* current() const;
 
   SatelliteSettings s_;
   std::function<void(const std::string&)> log_;
   SatelliteCatalogue catalogue_;
-  Offload offload_;
-  bool loaded_once_ = false;
-  bool loading_ = false;
-  std::optional<double> file_mtime_;
-  double last_poll_s_ = -1e9;
   std::optional<std::string> following_;  ///< NORAD number of the followed satellite
   std::optional<Planned> planned_;
   double next_plan_s_ = -1e9;  ///< when to search again after finding no pass

@@ -33,7 +33,16 @@ class RecordingModel final : public ConsoleModel {
     }
     done(ActResult{});
   }
+  void upload_elements(std::string text, const std::string& /*source*/, ActDone done) override {
+    uploads.push_back(std::move(text));
+    if (uploads.back().empty()) {
+      done(ActResult{json::object(), ApiError(400, "", "does not parse: empty")});
+      return;
+    }
+    done(ActResult{{{"count", 1}}, std::nullopt});
+  }
   std::vector<std::string> actions;
+  std::vector<std::string> uploads;
 };
 
 const std::string kPassword = "correct horse battery";
@@ -146,6 +155,29 @@ TEST(WebApi, ActionsWithoutLoginAre401AndDoNothing) {
     EXPECT_EQ(rig.handle(Rig::request(method, path, "{\"name\":\"moon\"}")).status, 401U)
         << method << " " << path;
   }
+  EXPECT_TRUE(rig.model.actions.empty());
+}
+
+TEST(WebApi, AnElementFileNeedsTheLoginAndGoesToTheModelAsItIs) {
+  Rig rig;
+  const std::string file = "ISS\n1 25544U …\n2 25544 …\n";  // not JSON: passed on as text
+  auto anonymous = Rig::request("POST", "/api/satellites/elements");
+  EXPECT_TRUE(rig.api.body_allowance(anonymous).refusal.has_value()) << "401 from the head";
+  anonymous.body = file;
+  EXPECT_EQ(rig.handle(anonymous).status, 401U);
+  auto r = Rig::request("POST", "/api/satellites/elements");
+  r.authorization = "Bearer " + rig.token;
+  const auto allowance = rig.api.body_allowance(r);
+  EXPECT_FALSE(allowance.refusal.has_value());
+  EXPECT_EQ(allowance.max_bytes, WebApi::kMaxElementUploadBytes);
+  EXPECT_TRUE(rig.api.body_allowance(r).refusal.has_value()) << "one at a time";
+  r.body = file;
+  const auto reply = rig.handle(r);
+  EXPECT_EQ(reply.status, 200U) << reply.body;
+  ASSERT_EQ(rig.model.uploads.size(), 1U);
+  EXPECT_EQ(rig.model.uploads[0], file);
+  r.body.clear();
+  EXPECT_EQ(rig.handle(r).status, 400U);
   EXPECT_TRUE(rig.model.actions.empty());
 }
 

@@ -344,3 +344,27 @@ TEST(ElementSets, SurvivesRandomMutations) {
 
 }  // namespace
 }  // namespace azt::app
+
+namespace azt::app {
+namespace {
+
+TEST(ElementSets, SatnogsDbJsonIsReadAsTheTlesItHolds) {
+  // SatNOGS DB's /api/tle/?format=json: each object carries a three-line set's lines.
+  const std::string text =
+      R"j([{"tle0":"0 ISS (ZARYA)","tle1":"1 25544U 98067A   24061.52083333  .00016717  )j"
+      R"j(00000-0  30119-3 0  9999","tle2":"2 25544  51.6416 247.4627 0006703 130.5360 )j"
+      R"j(325.0288 15.49815488441113","tle_source":"Celestrak","norad_cat_id":25544},)j"
+      R"j({"tle0":"BROKEN","tle1":"1 25544U","tle2":null}])j";
+  const ElementSetFile file = parse_element_sets(text, "satnogs.json");
+  EXPECT_EQ(file.format, "satnogs-json");
+  ASSERT_EQ(file.sets.size(), 1U);
+  EXPECT_EQ(file.sets[0].catalog, "25544");
+  EXPECT_EQ(file.sets[0].name, "ISS (ZARYA)");
+  ASSERT_FALSE(file.errors.empty());  // the broken entry, named
+  for (const auto& e : file.errors) EXPECT_EQ(e.rfind("satnogs.json: ", 0), 0U) << e;
+  // Any other JSON is OMM, as before.
+  EXPECT_EQ(parse_element_sets(R"([{"OBJECT_NAME":"X"}])", "x.json").format, "json");
+}
+
+}  // namespace
+}  // namespace azt::app

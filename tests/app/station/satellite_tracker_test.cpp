@@ -18,10 +18,9 @@ SatelliteTracker iss_tracker(const astro::Observer& site,
                              const track::MountGeometry& mount = track::MountGeometry{}) {
   SatelliteSettings s;
   s.mount = mount;
-  s.file = AZT_TEST_DATA_DIR "/sat/iss_2024.tle";
   s.site = site;
   SatelliteTracker t(s, [](const std::string&) {});
-  t.poll_file(kEpochUnixS);
+  t.adopt(SatelliteCatalogue::load(AZT_TEST_DATA_DIR "/sat/iss_2024.tle"), kEpochUnixS);
   return t;
 }
 
@@ -38,6 +37,29 @@ double unix_of(const nlohmann::json& iso) {
 
 const astro::Observer kFn06{46.18958, -79.39375, 301.0};
 const astro::Observer kSydney{-33.8688, 151.2093, 50.0};
+
+TEST(SatelliteTrackerAge, StaleElementsAreMarkedAndTooOldOnesNotTracked) {
+  SatelliteTracker t = iss_tracker(kFn06);
+  const double day = 86400.0;
+  ASSERT_TRUE(t.follow("25544", kEpochUnixS + 20 * day, 0.0));
+  const auto st = t.status(kEpochUnixS + 20 * day);
+  EXPECT_TRUE(st["stale"].get<bool>());
+  EXPECT_TRUE(st["refused"].is_null());
+  const auto listed = t.list(kEpochUnixS + 20 * day).at(0);
+  EXPECT_TRUE(listed["stale"].get<bool>());
+  // Past refuse_days: not followed, and the reason says why and what to do.
+  const auto refused = t.follow("ISS", kEpochUnixS + 61 * day, 0.0);
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.error().message,
+            "the elements of ISS (ZARYA) are 61.0 days from their epoch (beyond [satellites] "
+            "refuse_days = 60): not tracked; fetch fresh ones");
+  // Followed while fresh, then aged past the limit: no new pass is planned.
+  control::AzEl rate;
+  const control::Demand d = t.demand(kEpochUnixS + 62 * day, 0.0, rate);
+  EXPECT_FALSE(d.position.has_value());
+  EXPECT_NE(d.reason.find("refuse_days"), std::string::npos) << d.reason;
+  EXPECT_FALSE(t.status(kEpochUnixS + 62 * day)["refused"].is_null());
+}
 
 TEST(SatelliteTrackerSite, ANewPlaceIsPlannedFromBeforeThePass) {
   SatelliteTracker t = iss_tracker(kFn06);

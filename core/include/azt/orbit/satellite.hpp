@@ -24,8 +24,6 @@ struct Satellite {
 
 /// The element set's age at `utc`, days (negative: the epoch is in the future).
 double element_age_days(const Elements& e, const astro::UtcInstant& utc);
-/// Element sets older than this are flagged stale (LEO predictions drift by kilometres a day).
-inline constexpr double kStaleElementDays = 7.0;
 
 /// Where `sat` is seen from `site` at `utc`.
 Result<LookAngles> look(const Satellite& sat, const astro::UtcInstant& utc, double dut1_s,
