@@ -273,7 +273,9 @@ void ElementFeed::publish(double unix_s, bool at_once) {
     for (std::size_t i = 0; i < std::min(catalogue->errors().size(), kLoggedErrors); ++i) {
       p_.log("satellites: " + catalogue->errors()[i]);
     }
-    if (catalogue->satellites().size() != last_count_ || generation == 1) {
+    // Said when it changes (a station without satellites says nothing: a refusal to start is
+    // one line, docs/command-line.md).
+    if (catalogue->satellites().size() != last_count_) {
       p_.log("satellites: " + std::to_string(catalogue->satellites().size()) +
              " satellites in the catalogue");
     }
