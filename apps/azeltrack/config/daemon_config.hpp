@@ -144,11 +144,11 @@ struct DaemonConfig {
   SatellitesConfig satellites;
   std::vector<ScheduleEntryConfig> schedule;  ///< [[schedule]], highest priority first
   GpsConfig gps;                              ///< [gps]: the receiver through gpsd
-  RadioConfig radio;        ///< [radio], [[satellites.transmitter]]: the rig
-  WsjtxConfig wsjtx;        ///< [wsjtx]: WSJT-X's UDP messages
-  ReceiverConfig receiver;  ///< [receiver]: the power readings of pointing scans
-  TimeConfig time;          ///< [time]: chrony watched, its servers set from the console
-  ExportConfig exports;     ///< [export]: files for other programs (azel.dat)
+  RadioConfig radio;                          ///< [radio], [[satellites.transmitter]]: the rig
+  WsjtxConfig wsjtx;                          ///< [wsjtx]: WSJT-X's UDP messages
+  ReceiverConfig receiver;                    ///< [receiver]: the power readings of pointing scans
+  TimeConfig time;       ///< [time]: chrony watched, its servers set from the console
+  ExportConfig exports;  ///< [export]: files for other programs (azel.dat)
   NetServerConfig rotctld{"127.0.0.1", 4533};
   /// A rotctld client silent this long is disconnected (0: never); Gpredict polls every second.
   double rotctld_idle_timeout_s = 600.0;

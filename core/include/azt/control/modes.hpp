@@ -52,7 +52,8 @@ struct Demand {
   /// 180 on flip mounts), chosen by a pass plan: driven as given, never re-planned to the nearest
   /// side, so a pass never unwinds mid-way.
   bool mount = false;
-  std::optional<AxisTest> test = std::nullopt;  ///< a direction test; `position` and `jog` are then nullopt
+  std::optional<AxisTest> test =
+      std::nullopt;  ///< a direction test; `position` and `jog` are then nullopt
 };
 
 /// Which mode is active and what it asks for. Pure: the tracker feeds it the sky position of the
