@@ -421,6 +421,7 @@ void StationDaemon::open_console() {
                    [this] {
                      nlohmann::json io = guard_->state();
                      io["sequencer"] = sequencer_->state();
+                     io["motor_power"] = power_ ? power_->to_json(now_s()) : nlohmann::json();
                      return io;
                    },
                    off_loop(),
