@@ -1,0 +1,185 @@
+#!/usr/bin/env python3
+"""The daemon following the satellite schedule (docs/satellites.md "The schedule") on the
+simulated antenna, with three crafted satellites whose passes skyfield found
+(tests/data/sat/schedule_scenario.json: A from t0+20 s to t0+110 s, B of higher priority from
+t0+45 s to t0+80 s, C from t0+230 s), the daemon's clock started 40 s before t0:
+
+ 1  it switches at each AOS and LOS (within 1.5 s of skyfield's, the state polled every 0.25 s):
+    A, then B taking over, A again, then nothing
+ 2  after the idle time (15 s) it parks, then switches the motors' power off (the simulated
+    relay line) once the antenna stands; motion is held while it is off
+ 3  the power comes on before C's pre-position, and the antenna is at C's AOS point at its AOS
+ 4  any other command holds the schedule; resume hands the antenna back
+
+Usage: schedule_daemon_test.py AZELTRACK SCENARIO_DIR"""
+import atexit
+import datetime
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+from daemon_harness import Checks, free_port, http_json, rotctld, wait_until
+
+BIN = os.path.realpath(sys.argv[1])
+DATA = os.path.realpath(sys.argv[2])
+TMP = tempfile.mkdtemp(prefix="azt-schedule-")
+LEAD_S = 40.0  # the daemon starts this long before t0
+check = Checks()
+procs = []
+
+
+def cleanup():
+    for p in procs:
+        if p.poll() is None:
+            p.terminate()
+            try:
+                p.wait(5)
+            except subprocess.TimeoutExpired:
+                p.kill()
+    shutil.rmtree(TMP, ignore_errors=True)
+
+
+atexit.register(cleanup)
+
+
+def iso_to_unix(text):
+    return datetime.datetime.fromisoformat(text.replace("Z", "+00:00")).timestamp()
+
+
+scenario = json.load(open(os.path.join(DATA, "schedule_scenario.json"), encoding="utf-8"))
+t0 = iso_to_unix(scenario["t0"])
+sats = {s["name"][-1]: s for s in scenario["satellites"]}
+aos = {k: t0 + s["pass"]["aos_s"] for k, s in sats.items()}
+los = {k: t0 + s["pass"]["los_s"] for k, s in sats.items()}
+site = scenario["site"]
+
+WEB = free_port()
+ROT = free_port()
+config = os.path.join(TMP, "schedule.toml")
+with open(config, "w", encoding="utf-8") as f:
+    f.write(f"""schema_version = 2
+[station]
+lat_deg = {site['lat_deg']}
+lon_deg = {site['lon_deg']}
+alt_m = {site['alt_m']}
+[sky]
+dut1_s = {scenario['dut1_s']}
+[target]
+name = "stop"
+[rotctld]
+port = {ROT}
+[pstrotator]
+port = 0
+[web]
+port = {WEB}
+[mount.az]
+max_rate_deg_s = 10
+[mount.el]
+max_rate_deg_s = 10
+[satellites]
+file = "{os.path.join(DATA, 'schedule_scenario.tle')}"
+refuse_days = 3650
+stale_days = 3650
+idle_park_min = 0.25
+[hardware.power]
+relay = "sim:1"
+on_lead_s = 1
+[[schedule]]
+sat = "AZT SCENARIO B"
+[[schedule]]
+sat = "AZT SCENARIO A"
+[[schedule]]
+sat = "AZT SCENARIO C"
+""")
+log_path = os.path.join(TMP, "daemon.log")
+log = open(log_path, "w", encoding="utf-8")
+start_iso = datetime.datetime.fromtimestamp(t0 - LEAD_S, datetime.timezone.utc).strftime(
+    "%Y-%m-%dT%H:%M:%SZ")
+daemon = subprocess.Popen([BIN, "serve", "--config", config, "--utc-start", start_iso],
+                          stdout=log, stderr=subprocess.STDOUT)
+procs.append(daemon)
+base = f"http://127.0.0.1:{WEB}"
+if not wait_until(lambda: http_json(base, "GET", "/api/state")[0] == 200, 20):
+    print(open(log_path, encoding="utf-8").read())
+    sys.exit("the daemon did not start")
+
+
+def state():
+    return http_json(base, "GET", "/api/state")[1]
+
+
+def sample():
+    s = state()
+    sch = s["schedule"] or {}
+    step = sch.get("step") or {}
+    return {"t": iso_to_unix(s["utc"]), "kind": step.get("kind"),
+            "sat": (step.get("sat") or "")[-1:], "power": sch.get("power"),
+            "az": s["antenna"].get("az_deg", -999.0), "el": s["antenna"].get("el_deg", -999.0),
+            "mode": s["mode"]}
+
+
+# Poll until C's AOS plus a little: the record of what the station did, by its own clock.
+record = []
+while True:
+    r = sample()
+    record.append(r)
+    if r["t"] > aos["C"] + 3:
+        break
+    time.sleep(0.25)
+
+
+def first(pred, after=0.0):
+    return next((r for r in record if r["t"] >= after and pred(r)), None)
+
+
+def switch_at(kind, sat, after):
+    r = first(lambda r: r["kind"] == kind and r["sat"] == sat, after)
+    return r["t"] if r else None
+
+
+# 1: the switches at skyfield's AOS and LOS.
+expected = [("A", aos["A"]), ("B", aos["B"]), ("A", los["B"])]
+after = t0 - LEAD_S
+for sat, when in expected:
+    t = switch_at("track", sat, after)
+    check(t is not None and abs(t - when) < 1.5,
+          f"1: track {sat} from {when - t0:.1f} s after t0 (seen at "
+          f"{'never' if t is None else f'{t - t0:.2f}'})")
+    after = when
+t = first(lambda r: r["kind"] != "track", los["A"] - 2)
+check(t is not None and abs(t["t"] - los["A"]) < 1.5, f"1: A ends at its LOS {los['A'] - t0:.1f}")
+# 2: park after 15 s idle, then the power off.
+park = first(lambda r: r["kind"] == "park", los["A"])
+check(park is not None and abs(park["t"] - (los["A"] + 15)) < 1.5,
+      f"1: park 15 s after the LOS: {park and park['t'] - t0:.1f}")
+off = first(lambda r: r["power"] == "off", los["A"])
+check(off is not None, "2: the power goes off")
+if off:
+    parked = first(lambda r: r["mode"] == "PARK", los["A"])
+    check(parked is not None and parked["t"] <= off["t"], "2: parked before the power went off")
+    held = [r for r in record if r["t"] > off["t"] and r["power"] == "off"]
+    check(len(held) > 4 and max(abs(r["az"] - off["az"]) for r in held) < 0.2,
+          f"2: the antenna still while the power is off ({len(held)} samples)")
+# 3: on again before C's pre-position; at C's AOS point at its AOS.
+on = first(lambda r: r["power"] == "on", off["t"] if off else los["A"])
+pre = switch_at("preposition", "C", los["A"])
+check(on is not None and pre is not None and on["t"] <= pre + 0.5,
+      f"3: power on ({on and on['t'] - t0:.1f}) before C's pre-position ({pre and pre - t0:.1f})")
+at_aos = first(lambda r: r["t"] >= aos["C"])
+c = sats["C"]["pass"]
+check(at_aos is not None and abs(at_aos["az"] - c["aos_az_deg"]) < 1.0 and at_aos["el"] < 1.0,
+      f"3: at C's AOS point ({c['aos_az_deg']:.1f}°) at its AOS: {at_aos}")
+t = switch_at("track", "C", aos["C"] - 2)
+check(t is not None and abs(t - aos["C"]) < 1.5, f"3: track C at its AOS ({t and t - t0:.1f})")
+# 4: a PC program takes the antenna; the schedule steps aside (and says who holds it).
+print("4: rotctld P 200 10:", rotctld(ROT, ["P 200 10"]))
+check(wait_until(lambda: ((state()["schedule"] or {}).get("held_by") or "").startswith("rotctld"), 3),
+      f"4: held by the program's command: {state()['schedule']}")
+check(state()["mode"] == "EXT", "4: the program's position is followed, not C")
+check(daemon.poll() is None, "the daemon runs on")
+print(json.dumps(record[::8]))
+sys.exit(check.summary("schedule_daemon_test"))
