@@ -17,14 +17,18 @@ no light time - azeltrack's pass search, core/src/orbit/passes.cpp, with `[satel
     C  AOS +230 (+-15)  LOS +300 (+-30)
 and no other pass of A, B or C from T0 - 600 s to T0 + 900 s. They are low grazing passes.
 
-How: each satellite starts from a real element set (A and C: ISS (ZARYA) of iss_2024.tle; B:
+How: each satellite starts from a real element set (A and B: ISS (ZARYA) of iss_2024.tle; C:
 NOAA 19 of ../omm/catalogue.tle) with its epoch moved to T0 - 3 h and a new NORAD number (99901-3):
 the RAAN and the mean anomaly are then tuned by Newton's method on SGP4 (python3-sgp4, through
 skyfield) until the pass's middle and length are those above (a first guess puts the satellite
-over the right spot at the right time by spherical geometry). The mean motion stays the real one.
-Checksums are computed (tle_text.py). The json lists each pass as skyfield finds it (AOS and LOS
-by bisection to 0.01 s, written to 0.1 s; max elevation by golden section), with the station and
-T0, so a test can assert against them.
+over a ground point beside the site at the right time by spherical geometry). The mean motion
+stays the real one. The guesses are chosen so that a mount at 1.5 deg/s can follow: B rises
+within 30 deg of azimuth of where A is then (the take-over is a short move), C within 90 deg of
+A's LOS point; when a guess fails (another --t0 or site) others are swept, then the other base
+set. Checksums are computed (tle_text.py). The json lists each pass as skyfield finds it (AOS,
+TCA and LOS to 0.1 s - AOS and LOS bisected to 0.01 s -, max elevation, azimuths at AOS and
+LOS), the station, T0 and skyfield's UT1-UTC there (give it to azeltrack as [sky] dut1_s: with
+0 the grazing B pass moves by about 0.1 s), so a test can assert against them.
 """
 import argparse
 import datetime
