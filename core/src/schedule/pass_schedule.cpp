@@ -32,17 +32,20 @@ std::optional<std::size_t> best_up(const std::vector<ScheduledPass>& passes, dou
 }
 
 /// Which pass is tracked at `t_s`, given the one tracked just before: it goes on until its LOS
-/// unless a pass of higher priority whose rule is TakeOver is up.
+/// unless a pass of higher priority whose rule is TakeOver is up. Once it gives way, the best
+/// pass up follows, whatever its rule: a better pass whose rule is Finish was only waiting for
+/// the running one, which has now stopped anyway.
 std::optional<std::size_t> choose(const std::vector<Priority>& priorities,
                                   const std::vector<ScheduledPass>& passes,
                                   std::optional<std::size_t> running, double t_s) {
+  const auto any = [](const ScheduledPass&) { return true; };
   if (running && !up_at(passes[*running], t_s)) running.reset();
-  if (!running) return best_up(passes, t_s, [](const ScheduledPass&) { return true; });
+  if (!running) return best_up(passes, t_s, any);
   const std::size_t rank = passes[*running].priority;
   const auto taker = best_up(passes, t_s, [&](const ScheduledPass& p) {
     return p.priority < rank && priorities[p.priority].preempt == Preempt::TakeOver;
   });
-  return taker ? taker : running;
+  return taker ? best_up(passes, t_s, any) : running;
 }
 
 /// The instants at which the choice can change: every AOS and LOS inside the window.

@@ -124,6 +124,22 @@ TEST(PassSchedule, AFinishRuleLetsTheRunningPassEndFirst) {
   EXPECT_DOUBLE_EQ(tracks[1].to_s, 600.0);
 }
 
+TEST(PassSchedule, APassThatGivesWayHandsOverToTheBestOneUpEvenIfItsRuleIsFinish) {
+  // sat2 runs; sat0 (finish) rises and waits for it; sat1 (take_over) rises and interrupts sat2.
+  // Once sat2 gives way nothing is left for sat0 to wait for: the best pass up, sat0, follows.
+  const auto plan =
+      plan_schedule(list({Preempt::Finish, Preempt::TakeOver, Preempt::TakeOver}),
+                    {pass(2, 0.0, 900.0), pass(0, 300.0, 1000.0), pass(1, 500.0, 800.0)}, rules(),
+                    0.0, 1100.0, {90.0, 0.0});
+  const auto tracks = of_kind(plan, StepKind::Track);
+  ASSERT_EQ(tracks.size(), 2U);
+  EXPECT_EQ(tracks[0].priority, 2U);
+  EXPECT_DOUBLE_EQ(tracks[0].to_s, 500.0);
+  EXPECT_EQ(tracks[1].priority, 0U);
+  EXPECT_DOUBLE_EQ(tracks[1].from_s, 500.0);
+  EXPECT_DOUBLE_EQ(tracks[1].to_s, 1000.0);
+}
+
 TEST(PassSchedule, PassesBelowTheEntrysMinimumElevationAreNotWorked) {
   auto priorities = list({Preempt::TakeOver});
   priorities[0].min_el_deg = 20.0;
