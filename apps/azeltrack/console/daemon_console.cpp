@@ -100,8 +100,9 @@ void DaemonConsole::act_direction_test(const json& body, const std::string& sour
     }
   };
   if (auto refused = p_.direction_test->start(axis, source, std::move(finished))) {
-    throw ApiError(axis == "az" || axis == "el" ? 409 : 400,
-                   axis == "az" || axis == "el" ? "" : "axis", *refused);
+    // An axis the station has is "not now"; anything else is a bad value of `axis`.
+    const bool known = axis == "az" || axis == "el";
+    throw ApiError(known ? 409 : 400, known ? "" : "axis", *refused);
   }
   p_.log(source + ": direction test of the " + (axis == "az" ? "azimuth" : "elevation") + " axis");
 }

@@ -100,7 +100,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       direction_test_(DirectionTestParts{
           *antenna_, commands_, modes_,
           [this] {
-            return sequencer_->motion_hold() || sequencer_->state().value("transmitting", false) ||
+            return sequencer_->motion_hold() || sequencer_->transmitting() ||
                    (radio_ && radio_->motion_hold());
           },
           [this] { return now_s(); }}),
@@ -198,7 +198,7 @@ std::unique_ptr<AzelDatExport> StationDaemon::make_azel_dat_export() {
             if (modes_.mode() != control::Mode::Track || !t || body) return {};
             return *t;
           },
-          [this] { return sequencer_->state().value("transmitting", false); }, status_off_loop(),
+          [this] { return sequencer_->transmitting(); }, status_off_loop(),
           linux_os::publish_file, [](const std::string& line) { spdlog::info("{}", line); },
           config_.exports.azel_dat_pol_line});
 }

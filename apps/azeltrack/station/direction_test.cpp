@@ -21,7 +21,9 @@ std::optional<std::string> DirectionTest::refusal() const {
     return "the antenna is tracking: STOP it first";
   }
   if (p_.transmitting()) return "the transmitter is keyed: no motion while it transmits";
-  if (!p_.antenna.faults().empty()) return "a fault is latched: " + p_.antenna.faults().front();
+  if (const auto faults = p_.antenna.faults(); !faults.empty()) {
+    return "a fault is latched: " + faults.front();
+  }
   const auto at = p_.antenna.position(p_.monotonic_s());
   if (!at) return "the antenna's position is unknown";
   if (at->moving) return "the antenna is moving: wait until it stands still";

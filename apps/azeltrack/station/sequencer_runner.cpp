@@ -50,6 +50,8 @@ void SequencerRunner::clear_fault() {
 
 bool SequencerRunner::motion_hold() const { return sequencer_.motion_hold(); }
 
+bool SequencerRunner::transmitting() const { return sequencer_.transmitting(); }
+
 double SequencerRunner::core_now_ms() {
   const double real_ms = now_s_() * 1000.0;
   // Idle (nothing pending, nothing energized): the core may catch up with the real clock.

@@ -47,6 +47,8 @@ class SequencerRunner {
 
   /// Antenna motion must wait ([sequencer] hold_motion and any output energized).
   [[nodiscard]] bool motion_hold() const;
+  /// The transmitter keyed (the chain's last step on).
+  [[nodiscard]] bool transmitting() const;
   [[nodiscard]] const std::string& fault() const { return fault_; }
   [[nodiscard]] const sequencer::TrSequencer& core() const { return sequencer_; }
   /// {"wired", "ptt", "inhibited", "transmitting", "timed_out", "hold", "outputs": [{"name","on"}]}
