@@ -2,7 +2,7 @@
 """The daemon following the satellite schedule (docs/satellites.md "The schedule") on the
 simulated antenna, with three crafted satellites whose passes skyfield found
 (tests/data/sat/schedule_scenario.json: A from t0+20 s to t0+110 s, B of higher priority from
-t0+45 s to t0+80 s, C from t0+230 s), the daemon's clock started 40 s before t0:
+t0+45 s to t0+80 s, C from t0+165 s), the daemon's clock started 40 s before t0:
 
  1  it switches at each AOS and LOS (within 1.5 s of skyfield's, the state polled every 0.25 s):
     A, then B taking over, A again, then nothing

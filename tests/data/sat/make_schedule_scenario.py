@@ -14,7 +14,7 @@ no light time - azeltrack's pass search, core/src/orbit/passes.cpp, with `[satel
 "0"), seconds after T0:
     A  AOS  +20 (+-5)   LOS +110 (+-15)
     B  AOS  +45 (+-5)   LOS  +80 (+-10)    inside A's pass
-    C  AOS +230 (+-15)  LOS +300 (+-30)
+    C  AOS +165 (+-15)  LOS +235 (+-30)
 and no other pass of A, B or C from T0 - 600 s to T0 + 900 s. They are low grazing passes.
 
 How: each satellite starts from a real element set (A and B: ISS (ZARYA) of iss_2024.tle; C:
@@ -49,7 +49,7 @@ from schedule_skyfield_oracle import SkyPasses  # noqa: E402
 TARGETS = [
     ("AZT SCENARIO A", 99901, "iss", 20.0, 110.0, (180.0, False)),
     ("AZT SCENARIO B", 99902, "iss", 45.0, 80.0, (180.0, False)),
-    ("AZT SCENARIO C", 99903, "noaa19", 230.0, 300.0, (90.0, True)),
+    ("AZT SCENARIO C", 99903, "noaa19", 165.0, 235.0, (90.0, True)),
 ]
 # B's AOS within this of where A is then, C's within this of A's LOS point (degrees of azimuth):
 # a mount at 1.5 deg/s gets there in time.
