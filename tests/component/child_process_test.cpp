@@ -40,7 +40,7 @@ class ScriptDir {
   /// A file `name` holding `text`, with mode `mode`; its absolute path.
   [[nodiscard]] std::string file(const std::string& name, const std::string& text,
                                  mode_t mode = 0700) const {
-    const std::string p = path_ + "/" + name;
+    std::string p = path_ + "/" + name;
     std::ofstream(p) << text;
     ::chmod(p.c_str(), mode);
     return p;
