@@ -147,6 +147,20 @@ const toml::array* ConfigSection::array(std::string_view key) const {
   return n->as_array();
 }
 
+std::optional<std::vector<std::string>> ConfigSection::text_list(std::string_view key) const {
+  const KeySpec& spec = key_spec(key, {KeyType::TextList});
+  const toml::node* n = node(key);
+  if (n == nullptr) return std::nullopt;
+  if (spec.text_alone && n->is_string()) return std::vector<std::string>{n->as_string()->get()};
+  if (!n->is_array()) fail(key, "must be an array");
+  std::vector<std::string> out;
+  for (const auto& item : *n->as_array()) {
+    if (!item.is_string()) fail(key, "must hold strings");
+    out.push_back(item.as_string()->get());
+  }
+  return out;
+}
+
 ConfigSection ConfigSection::child(std::string_view key) const {
   const SectionSpec* spec = find_child(*spec_, key);
   if (spec == nullptr) {

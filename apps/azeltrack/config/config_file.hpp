@@ -39,6 +39,9 @@ class ConfigSection {
   [[nodiscard]] std::optional<std::string> text(std::string_view key) const;
   [[nodiscard]] std::optional<bool> boolean(std::string_view key) const;
   [[nodiscard]] const toml::array* array(std::string_view key) const;
+  /// A text list's strings; a key that also takes one string alone (KeySpec::text_alone) gives
+  /// it as a list of one.
+  [[nodiscard]] std::optional<std::vector<std::string>> text_list(std::string_view key) const;
   /// A choice key read into its enum ([antenna] backend); `fallback` when absent. The schema
   /// has already refused a name that is not a choice.
   template <typename Enum, std::size_t N>

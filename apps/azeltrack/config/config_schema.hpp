@@ -7,7 +7,8 @@
 //
 // The key tables are split by concern: schema_sky_keys.cpp, schema_control_keys.cpp,
 // schema_target_keys.cpp, schema_antenna_keys.cpp, schema_station_io_keys.cpp,
-// schema_server_keys.cpp, schema_service_keys.cpp, schema_radio_keys.cpp and schema_sim_keys.cpp.
+// schema_server_keys.cpp, schema_service_keys.cpp, schema_radio_keys.cpp, schema_hooks_keys.cpp
+// and schema_sim_keys.cpp.
 
 #include <toml++/toml.h>
 
@@ -92,6 +93,9 @@ struct KeySpec {
   std::string_view help;          ///< Markdown: `code` and [links](page.md), relative to docs/
   Applies applies = Applies::Restart;
   Access access = Access::Editable;
+  /// A text list that also takes one string alone, as a list of one: a program to run, with
+  /// or without its arguments (`[hooks] aos`).
+  bool text_alone = false;
 };
 
 struct SectionSpec {

@@ -410,6 +410,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.exports = export_config_from(file);
   c.satellites = read_satellites(sats);
   c.schedule = schedule_config_from(file);
+  c.hooks = hooks_config_from(file);
   c.web = read_web(file.section("web"));
   c.web.tokens = read_tokens(file);
   c.park = read_park(file, c.station);

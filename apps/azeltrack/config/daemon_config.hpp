@@ -18,6 +18,7 @@
 #include "config/export_config.hpp"
 #include "config/gps_config.hpp"
 #include "config/hardware_config.hpp"
+#include "config/hooks_config.hpp"
 #include "config/mount_config.hpp"
 #include "config/radio_config.hpp"
 #include "config/receiver_config.hpp"
@@ -145,6 +146,7 @@ struct DaemonConfig {
   HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
   SatellitesConfig satellites;
   std::vector<ScheduleEntryConfig> schedule;  ///< [[schedule]], highest priority first
+  HooksConfig hooks;                          ///< [hooks]: programs run at the schedule's events
   GpsConfig gps;                              ///< [gps]: the receiver through gpsd
   RadioConfig radio;                          ///< [radio], [[satellites.transmitter]]: the rig
   WsjtxConfig wsjtx;                          ///< [wsjtx]: WSJT-X's UDP messages

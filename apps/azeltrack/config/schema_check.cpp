@@ -152,8 +152,9 @@ bool item_fits(KeyType list, const toml::node& item) {
 }
 
 std::optional<std::string> list_violation(const KeySpec& spec, const toml::node& value) {
+  if (spec.text_alone && value.is_string()) return count_violation(spec.items, 1, "strings");
   const toml::array* a = value.as_array();
-  if (a == nullptr) return "must be an array";
+  if (a == nullptr) return spec.text_alone ? "must be a string or an array" : "must be an array";
   const std::string what(item_word(spec.type).value_or("values"));
   for (const auto& item : *a) {
     if (!item_fits(spec.type, item)) return "must hold " + what;

@@ -47,7 +47,7 @@ std::string kind_words(const KeySpec& k) {
       kind = "text";
       break;
     case KeyType::TextList:
-      kind = "list of text";
+      kind = k.text_alone ? "text, or list of text" : "list of text";
       break;
     case KeyType::NumberList:
       kind = "list of numbers";

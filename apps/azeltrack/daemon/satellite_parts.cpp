@@ -78,6 +78,10 @@ ScheduleSite StationDaemon::schedule_site() const {
 }
 
 std::unique_ptr<ScheduleFollower> StationDaemon::make_schedule() {
+  // The hooks log their endings themselves; the console's recent events get them too.
+  hooks_ = std::make_unique<ScheduleHooks>(io_, config_.hooks, [this](const std::string& line) {
+    events_.add(unix_now_s(), line);
+  });
   return std::make_unique<ScheduleFollower>(
       ScheduleFollowerParts{
           commands_, satellites_, power_.get(), off_loop(), [this] { return unix_now_s(); },
@@ -90,19 +94,29 @@ std::unique_ptr<ScheduleFollower> StationDaemon::make_schedule() {
             const auto p = antenna_->position(now_s());
             return p && !p->moving;
           },
-          [this](ScheduleEvent event, const schedule::Priority* sat, const PlannedPass* pass) {
+          [this](HookEvent event, const schedule::Priority* sat, const PlannedPass* pass) {
             schedule_event(event, sat, pass);
           },
           [](const std::string& line) { spdlog::info("{}", line); }},
       config_.schedule, schedule_site(), schedule_rules_of(config_));
 }
 
-void StationDaemon::schedule_event(ScheduleEvent event, const schedule::Priority* sat,
+void StationDaemon::schedule_event(HookEvent event, const schedule::Priority* sat,
                                    const PlannedPass* pass) {
-  std::string line = "schedule: " + std::string(to_string(event));
+  std::string line = "schedule: " + std::string(hook_event_name(event));
   if (sat != nullptr) line += " " + sat->sat + " (" + sat->norad + ")";
   events_.add(unix_now_s(), line);
-  (void)pass;
+  HookPass hook_pass;
+  if (sat != nullptr) {
+    hook_pass.sat = sat->sat;
+    hook_pass.norad = sat->norad;
+  }
+  if (pass != nullptr) {
+    hook_pass.aos_unix_s = pass->aos_unix_s;
+    hook_pass.los_unix_s = pass->los_unix_s;
+    hook_pass.max_el_deg = pass->max_el_deg;
+  }
+  hooks_->fire(event, hook_pass);
 }
 
 }  // namespace azt::app

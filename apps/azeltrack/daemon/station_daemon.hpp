@@ -78,7 +78,7 @@ class StationDaemon {
   /// [[schedule]] followed (always made: the console may write the first list).
   std::unique_ptr<ScheduleFollower> make_schedule();
   /// A step of the schedule begun or ended: the recent events, and the hooks.
-  void schedule_event(ScheduleEvent event, const schedule::Priority* sat, const PlannedPass* pass);
+  void schedule_event(HookEvent event, const schedule::Priority* sat, const PlannedPass* pass);
   /// A path of the configuration relative to its directory, absolute.
   std::string beside_config(const std::string& path) const;
   /// Where the mount's azimuth is (for choosing a pass's wrap side), or the configured start.
@@ -172,6 +172,7 @@ class StationDaemon {
   std::unique_ptr<MotorPower> power_;         ///< [hardware.power]; none when not set
   StationCommands commands_;
   DirectionTest direction_test_;  ///< the console's direction test of one axis, while one runs
+  std::unique_ptr<ScheduleHooks> hooks_;        ///< [hooks]: the programs run at its events
   std::unique_ptr<ScheduleFollower> schedule_;  ///< [[schedule]]: the station working by itself
   StationService service_;
   boost::asio::signal_set signals_;

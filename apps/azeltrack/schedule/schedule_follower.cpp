@@ -24,20 +24,6 @@ bool follows_a_pass(const std::optional<schedule::PlanStep>& step) {
 
 }  // namespace
 
-std::string_view to_string(ScheduleEvent event) {
-  switch (event) {
-    case ScheduleEvent::PrePosition:
-      return "pre_position";
-    case ScheduleEvent::Aos:
-      return "aos";
-    case ScheduleEvent::Los:
-      return "los";
-    case ScheduleEvent::Park:
-      return "park";
-  }
-  return "?";
-}
-
 ScheduleFollower::ScheduleFollower(ScheduleFollowerParts parts,
                                    std::vector<ScheduleEntryConfig> entries, ScheduleSite site,
                                    schedule::ScheduleRules rules)
@@ -137,7 +123,7 @@ const schedule::Priority* ScheduleFollower::priority_of(const schedule::PlanStep
 void ScheduleFollower::leave(const StepKey& left) {
   if (!current_step_ || !left.kind) return;
   if (*left.kind == schedule::StepKind::Track) {
-    p_.on_event(ScheduleEvent::Los, priority_of(*current_step_),
+    p_.on_event(HookEvent::Los, priority_of(*current_step_),
                 plan_ ? pass_of(*plan_, *current_step_) : nullptr);
   }
   if (follows_a_pass(current_step_)) idle_since_unix_s_ = p_.unix_s();
@@ -156,16 +142,16 @@ void ScheduleFollower::enter(const schedule::PlanStep* step) {
   switch (step->kind) {
     case schedule::StepKind::Preposition:
       follow(*step);
-      p_.on_event(ScheduleEvent::PrePosition, priority_of(*step), pass);
+      p_.on_event(HookEvent::PrePosition, priority_of(*step), pass);
       break;
     case schedule::StepKind::Track:
       follow(*step);
-      p_.on_event(ScheduleEvent::Aos, priority_of(*step), pass);
+      p_.on_event(HookEvent::Aos, priority_of(*step), pass);
       break;
     case schedule::StepKind::Park:
       power_on();
       command(ParkTarget{1});
-      p_.on_event(ScheduleEvent::Park, nullptr, nullptr);
+      p_.on_event(HookEvent::Park, nullptr, nullptr);
       break;
     case schedule::StepKind::PowerOff:
       break;  // keep_power() switches off once the antenna stands still

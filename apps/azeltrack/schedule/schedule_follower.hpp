@@ -17,14 +17,11 @@
 #include "antenna/motor_power.hpp"
 #include "common/off_loop.hpp"
 #include "schedule/satellite_schedule.hpp"
+#include "schedule/schedule_hooks.hpp"
 #include "station/satellite_tracker.hpp"
 #include "station/station_commands.hpp"
 
 namespace azt::app {
-
-/// What the hooks are told (schedule_hooks.hpp runs the programs).
-enum class ScheduleEvent { PrePosition, Aos, Los, Park };
-std::string_view to_string(ScheduleEvent event);
 
 struct ScheduleFollowerParts {
   StationCommands& commands;
@@ -36,7 +33,7 @@ struct ScheduleFollowerParts {
   std::function<control::AzEl()> antenna_sky;  ///< where the antenna points, for a re-plan
   std::function<bool()> antenna_still;         ///< stopped: the power may go off
   /// A hook's moment, with the pass it is about (null for Park).
-  std::function<void(ScheduleEvent, const schedule::Priority*, const PlannedPass*)> on_event;
+  std::function<void(HookEvent, const schedule::Priority*, const PlannedPass*)> on_event;
   std::function<void(const std::string&)> log;
 };
 

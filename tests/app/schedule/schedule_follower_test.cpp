@@ -68,8 +68,8 @@ struct FollowerRig {
               return control::AzEl{antenna.az_deg, antenna.el_deg};
             },
             [] { return true; },
-            [this](ScheduleEvent e, const schedule::Priority* sat, const PlannedPass* pass) {
-              std::string line(to_string(e));
+            [this](HookEvent e, const schedule::Priority* sat, const PlannedPass* pass) {
+              std::string line(hook_event_name(e));
               if (sat != nullptr) line += " " + sat->norad;
               if (pass != nullptr) line += " max " + std::to_string(pass->max_el_deg);
               events.push_back(line);
