@@ -9,7 +9,10 @@ t0+45 s to t0+80 s, C from t0+165 s), the daemon's clock started 40 s before t0:
  2  after the idle time (15 s) it parks, then switches the motors' power off (the simulated
     relay line) once the antenna stands; motion is held while it is off
  3  the power comes on before C's pre-position, and the antenna is at C's AOS point at its AOS
- 4  any other command holds the schedule; resume hands the antenna back
+ 4  the hooks ([hooks], docs/satellites.md "Hooks") run with the pass in their environment at
+    each pre-position, AOS and LOS; the park hook, which sleeps past its 2 s timeout, is killed
+    and said in the recent events, while the antenna goes on as planned
+ 5  a PC program's command holds the schedule
 
 Usage: schedule_daemon_test.py AZELTRACK SCENARIO_DIR"""
 import atexit
@@ -59,6 +62,13 @@ site = scenario["site"]
 
 WEB = free_port()
 ROT = free_port()
+HOOK_LOG = os.path.join(TMP, "hooks.log")
+hook = os.path.join(TMP, "note-pass")
+with open(hook, "w", encoding="utf-8") as f:
+    f.write("#!/bin/sh\n"
+            f'printf "%s|%s|%s|%s|%s|%s\\n" "$AZT_EVENT" "$AZT_SAT" "$AZT_NORAD" "$AZT_AOS" '
+            f'"$AZT_LOS" "$AZT_MAX_EL" >>{HOOK_LOG}\n')
+os.chmod(hook, 0o755)
 config = os.path.join(TMP, "schedule.toml")
 with open(config, "w", encoding="utf-8") as f:
     f.write(f"""schema_version = 2
@@ -88,6 +98,12 @@ idle_park_min = 0.25
 [hardware.power]
 relay = "sim:1"
 on_lead_s = 1
+[hooks]
+aos = "{hook}"
+los = "{hook}"
+pre_position = "{hook}"
+park = ["/bin/sleep", "60"]
+timeout_s = 2
 [[schedule]]
 sat = "AZT SCENARIO B"
 [[schedule]]
@@ -175,11 +191,26 @@ check(at_aos is not None and abs(at_aos["az"] - c["aos_az_deg"]) < 1.0 and at_ao
       f"3: at C's AOS point ({c['aos_az_deg']:.1f}°) at its AOS: {at_aos}")
 t = switch_at("track", "C", aos["C"] - 2)
 check(t is not None and abs(t - aos["C"]) < 1.5, f"3: track C at its AOS ({t and t - t0:.1f})")
-# 4: a PC program takes the antenna; the schedule steps aside (and says who holds it).
-print("4: rotctld P 200 10:", rotctld(ROT, ["P 200 10"]))
+# 4: the hooks, in the order of the station's steps, with each pass's own figures.
+hooks = [line.strip().split("|") for line in open(HOOK_LOG, encoding="utf-8")]
+print("4: hooks:", [h[:3] for h in hooks])
+want = [("pre_position", "A"), ("aos", "A"), ("los", "A"), ("aos", "B"), ("los", "B"),
+        ("aos", "A"), ("los", "A"), ("pre_position", "C"), ("aos", "C")]
+check([(h[0], h[1][-1:]) for h in hooks] == want, "4: the hooks' events in order")
+for h in hooks:
+    p = sats[h[1][-1:]]
+    right = (h[2] == str(p["norad"]) and abs(iso_to_unix(h[3]) - aos[h[1][-1:]]) < 1.0 and
+             abs(iso_to_unix(h[4]) - los[h[1][-1:]]) < 1.0 and
+             abs(float(h[5]) - p["pass"]["max_el_deg"]) < 0.05)
+    check(right, f"4: {h[0]} {h[1]}: NORAD, AOS, LOS and max el are the pass's: {h}")
+events = " | ".join(e["text"] for e in state()["events"])
+check(events.count("killed after its 2 s timeout") >= 1, "4: the sleeping park hook is killed")
+
+# 5: a PC program takes the antenna; the schedule steps aside (and says who holds it).
+print("5: rotctld P 200 10:", rotctld(ROT, ["P 200 10"]))
 check(wait_until(lambda: ((state()["schedule"] or {}).get("held_by") or "").startswith("rotctld"), 3),
-      f"4: held by the program's command: {state()['schedule']}")
-check(state()["mode"] == "EXT", "4: the program's position is followed, not C")
+      f"5: held by the program's command: {state()['schedule']}")
+check(state()["mode"] == "EXT", "5: the program's position is followed, not C")
 check(daemon.poll() is None, "the daemon runs on")
 print(json.dumps(record[::8]))
 sys.exit(check.summary("schedule_daemon_test"))

@@ -372,6 +372,7 @@ SatellitesConfig read_satellites(const ConfigSection& sats) {
   c.refuse_days = sats.number("refuse_days").value_or(c.refuse_days);
   if (c.refuse_days < c.stale_days) sats.fail("refuse_days", "must not be below stale_days");
   c.idle_park_min = sats.number("idle_park_min").value_or(c.idle_park_min);
+  c.min_el_deg = sats.number("min_el_deg").value_or(c.min_el_deg);
   c.ca_file = sats.text("ca_file").value_or("");
   c.proxy = sats.text("proxy").value_or("");
   c.connect_timeout_s = sats.number("connect_timeout_s").value_or(c.connect_timeout_s);

@@ -104,8 +104,9 @@ struct SatellitesConfig {
   double refuse_days = 60.0;  ///< not tracked beyond this element age
   /// The schedule parks after this long with nothing to do (then powers the motors off).
   double idle_park_min = 10.0;
-  std::string ca_file;  ///< empty: the system's CAs
-  std::string proxy;    ///< empty: the environment's, or none
+  double min_el_deg = 10.0;  ///< the console's pass lists leave out lower passes
+  std::string ca_file;       ///< empty: the system's CAs
+  std::string proxy;         ///< empty: the environment's, or none
   double connect_timeout_s = 20.0;
   double timeout_s = 120.0;
   double max_mb = 32.0;

@@ -16,7 +16,7 @@ constexpr std::array<KeySpec, 1> kTarget{{
              "satellite of `[satellites] file`), or `\"stop\"`"},
 }};
 
-constexpr std::array<KeySpec, 14> kSatellites{{
+constexpr std::array<KeySpec, 15> kSatellites{{
     {.key = "file",
      .type = KeyType::Text,
      .default_note = "none",
@@ -50,6 +50,13 @@ constexpr std::array<KeySpec, 14> kSatellites{{
      .range = above_up_to(0.0, 3650.0),
      .default_toml = "60.0",
      .help = "elements further than this from their epoch are not tracked (the reason is shown)"},
+    {.key = "min_el_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .range = closed(0.0, 90.0),
+     .default_toml = "10.0",
+     .help = "the console's pass lists (/api/targets) leave out passes whose highest point is "
+             "lower; a satellite chosen is tracked whatever its pass's height"},
     {.key = "idle_park_min",
      .type = KeyType::Number,
      .unit = "min",

@@ -2,6 +2,8 @@
 // its plan, the list edited whole, and the hand-back after an operator took the antenna.
 #include <toml++/toml.h>
 
+#include <cctype>
+
 #include "console/daemon_console.hpp"
 
 namespace azt::app {
@@ -47,6 +49,31 @@ toml::array schedule_items(const json& body) {
   return items;
 }
 
+/// The file's refusal names the table ("[schedule#2].sat …"): the console marks the row, so the
+/// field is said as the body's ("entries[1].sat").
+ApiError entry_refusal(const ApiError& e) {
+  const std::string message = e.what();
+  const auto at = message.find("[schedule#");
+  if (at == std::string::npos) return e;
+  std::size_t end = at + 10;
+  while (end < message.size() && std::isdigit(static_cast<unsigned char>(message[end])) != 0) {
+    ++end;
+  }
+  if (end == at + 10 || message.compare(end, 2, "].") != 0 || end - at - 10 > 3) return e;
+  std::size_t key_end = end + 2;
+  while (key_end < message.size() &&
+         (std::islower(static_cast<unsigned char>(message[key_end])) != 0 ||
+          message[key_end] == '_')) {
+    ++key_end;
+  }
+  const std::size_t item = std::stoul(message.substr(at + 10, end - at - 10));
+  if (item == 0) return e;
+  return ApiError(
+      e.status(),
+      "entries[" + std::to_string(item - 1) + "]." + message.substr(end + 2, key_end - end - 2),
+      message);
+}
+
 }  // namespace
 
 json DaemonConsole::schedule() {
@@ -75,9 +102,13 @@ void DaemonConsole::act_schedule(const std::string& action, const json& body,
       },
       [this] {
         apply_live(LiveApply::Schedule);
+        // The plan is made again off the loop: the answer has the list, GET the plan after.
         return json{{"schedule", p_.schedule->plan_view()}};
       },
-      std::move(done));
+      [done = std::move(done)](ActResult result) {
+        if (result.error) result.error = entry_refusal(*result.error);
+        done(std::move(result));
+      });
 }
 
 }  // namespace azt::app

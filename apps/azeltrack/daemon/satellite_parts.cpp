@@ -49,6 +49,7 @@ std::unique_ptr<ElementFeed> StationDaemon::make_element_feed() {
 SatelliteSettings StationDaemon::satellite_settings() const {
   SatelliteSettings s;
   s.age = orbit::ElementAgeLimits{config_.satellites.stale_days, config_.satellites.refuse_days};
+  s.list_min_el_deg = config_.satellites.min_el_deg;
   s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
   s.dut1_s = config_.sky.settings.dut1_s;
   s.site = config_.sky.settings.observer;
@@ -79,9 +80,8 @@ ScheduleSite StationDaemon::schedule_site() const {
 
 std::unique_ptr<ScheduleFollower> StationDaemon::make_schedule() {
   // The hooks log their endings themselves; the console's recent events get them too.
-  hooks_ = std::make_unique<ScheduleHooks>(io_, config_.hooks, [this](const std::string& line) {
-    events_.add(unix_now_s(), line);
-  });
+  hooks_ = std::make_unique<ScheduleHooks>(
+      io_, config_.hooks, [this](const std::string& line) { events_.add(unix_now_s(), line); });
   return std::make_unique<ScheduleFollower>(
       ScheduleFollowerParts{
           commands_, satellites_, power_.get(), off_loop(), [this] { return unix_now_s(); },

@@ -97,13 +97,13 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
           [this](const CommandSource& source, const Refusal& refusal) {
             control_event(source.name + ": refused: " + refusal.reason);
           }}),
-      direction_test_(DirectionTestParts{
-          *antenna_, commands_, modes_,
-          [this] {
-            return sequencer_->motion_hold() || sequencer_->transmitting() ||
-                   (radio_ && radio_->motion_hold());
-          },
-          [this] { return now_s(); }}),
+      direction_test_(DirectionTestParts{*antenna_, commands_, modes_,
+                                         [this] {
+                                           return sequencer_->motion_hold() ||
+                                                  sequencer_->transmitting() ||
+                                                  (radio_ && radio_->motion_hold());
+                                         },
+                                         [this] { return now_s(); }}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
           // The locator first: Hamlib shows 63 characters of it (format_get_info).
@@ -188,19 +188,18 @@ void StationDaemon::simulate_receiver() {
 std::unique_ptr<AzelDatExport> StationDaemon::make_azel_dat_export() {
   if (config_.exports.azel_dat.empty()) return nullptr;
   return std::make_unique<AzelDatExport>(
-      io_,
-      AzelDatParts{
-          config_.exports.azel_dat, *ephemeris_, config_.sky, [this] { return unix_now_s(); },
-          [this]() -> std::optional<astro::Target> {
-            const auto& t = sky_.target();
-            const bool body =
-                t && (t->kind == astro::Target::Kind::Moon || t->kind == astro::Target::Kind::Sun);
-            if (modes_.mode() != control::Mode::Track || !t || body) return {};
-            return *t;
-          },
-          [this] { return sequencer_->transmitting(); }, status_off_loop(),
-          linux_os::publish_file, [](const std::string& line) { spdlog::info("{}", line); },
-          config_.exports.azel_dat_pol_line});
+      io_, AzelDatParts{
+               config_.exports.azel_dat, *ephemeris_, config_.sky, [this] { return unix_now_s(); },
+               [this]() -> std::optional<astro::Target> {
+                 const auto& t = sky_.target();
+                 const bool body = t && (t->kind == astro::Target::Kind::Moon ||
+                                         t->kind == astro::Target::Kind::Sun);
+                 if (modes_.mode() != control::Mode::Track || !t || body) return {};
+                 return *t;
+               },
+               [this] { return sequencer_->transmitting(); }, status_off_loop(),
+               linux_os::publish_file, [](const std::string& line) { spdlog::info("{}", line); },
+               config_.exports.azel_dat_pol_line});
 }
 
 Offload StationDaemon::status_off_loop() {

@@ -204,6 +204,7 @@ void SatelliteTracker::refresh_passes(double unix_s) {
   auto passes = find_satellite_passes(sat, now, 24.0, s_.mask, s_.dut1_s, s_.site);
   if (!passes) return;
   for (const auto& p : passes.value()) {
+    if (p.max_el_deg < s_.list_min_el_deg) continue;
     // A pass predicted from stale elements is marked: its times may be tens of seconds off.
     const double age = element_age_days(sat.elements, astro::utc_plus(now, p.aos_s));
     u.passes.push_back(

@@ -24,6 +24,9 @@ namespace azt::app {
 struct SatelliteSettings {
   orbit::HorizonMask mask;
   orbit::ElementAgeLimits age;  ///< [satellites] stale_days, refuse_days
+  /// [satellites] min_el_deg: the console's pass lists leave out lower passes (a pass is still
+  /// tracked whatever its height when the satellite is chosen).
+  double list_min_el_deg = 10.0;
   double dut1_s = 0.0;
   astro::Observer site;
   track::MountGeometry mount;
