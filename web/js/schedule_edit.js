@@ -1,0 +1,184 @@
+// The schedule's priority list ([[schedule]] tables: sat, min_el_deg, preempt), edited on the
+// Schedule page: rows added, removed and moved, each satellite found with the Targets page's
+// search. Saved through the configuration API the Settings page uses: values changed in place and
+// rows added at the end item by item (PUT /api/config/schedule/N, a refusal names the key); a
+// list with rows removed or moved as the whole file (PUT /api/config/file, schedule_toml.js),
+// which the section route cannot express. Either way the controller checks before it saves.
+
+import { S } from './state.js';
+import { $, h, setText } from './dom.js';
+import { isNum, parseNum } from './format.js';
+import { loadJSON } from './api.js';
+import { act } from './actions.js';
+import { toast } from './toast.js';
+import { showLogin } from './session.js';
+import { matches } from './targets.js';
+import { savedWords } from './settings_forms.js';
+import { replaceTables, scheduleTable } from './schedule_toml.js';
+import { entryOf } from './schedule_timeline.js';
+
+let saved = []; // as the file holds them: {id, sat, min_el_deg, preempt}
+let rows = []; // being edited; a row read from the file keeps its id (its place there)
+
+const preemptOf = (r) => r.preempt || 'take_over';
+const same = (a, b) => a.sat.trim() === b.sat.trim() && a.min_el_deg === b.min_el_deg && preemptOf(a) === preemptOf(b);
+const dirty = () => rows.length !== saved.length || rows.some((r, i) => r.id !== i || !same(r, saved[i]));
+
+/// Reads the list from the file (GET /api/config/schema), unless edits are waiting (`force`: anyway).
+export async function loadList(force) {
+  if (!force && dirty()) return;
+  const j = await loadJSON('/api/config/schema');
+  const sec = j && Array.isArray(j.sections) ? j.sections.find((s) => s.name === 'schedule') : null;
+  if (!sec) { setText('sch-save-error', 'The controller did not give its settings (GET /api/config/schema).'); return; }
+  saved = (Array.isArray(sec.items) ? sec.items : []).map((it, i) => ({ id: i, sat: String((it && it.sat) ?? ''),
+    min_el_deg: it && isNum(it.min_el_deg) ? it.min_el_deg : null, preempt: (it && it.preempt) || null }));
+  rows = saved.map((r) => ({ ...r }));
+  setText('sch-save-error', '');
+  render();
+}
+
+function changed() {
+  const n = rows.length - saved.length;
+  const d = dirty();
+  $('sch-save').disabled = !d;
+  $('sch-undo').disabled = !d;
+  setText('sch-count', d ? `changed, not saved${n ? ` (${n > 0 ? '+' : ''}${n} row${Math.abs(n) === 1 ? '' : 's'})` : ''}` : '');
+}
+
+function move(i, by) {
+  const j = i + by;
+  if (j < 0 || j >= rows.length) return;
+  [rows[i], rows[j]] = [rows[j], rows[i]];
+  render();
+  $('sch-rows').children[j].querySelector(by < 0 ? '.up' : '.down')?.focus();
+}
+
+// The catalogue's satellites that match what is typed (the Targets page's search), to pick from.
+function suggest(input, box, r) {
+  const all = S.targets && Array.isArray(S.targets.satellites) ? S.targets.satellites : [];
+  const q = input.value.trim();
+  const found = q ? all.filter((o) => matches(o, q)).slice(0, 6) : [];
+  box.hidden = !found.length || (found.length === 1 && found[0].name === q);
+  box.replaceChildren(...found.map((o) => h('button', {
+    type: 'button', class: 'sugg', role: 'option', text: `${o.name} · ${o.norad}`,
+    onmousedown: (ev) => ev.preventDefault(), // keeps the focus: the input's blur would hide the list first
+    onclick: () => { input.value = o.name; r.sat = o.name; box.hidden = true; known(input, r); changed(); },
+  })));
+}
+// A word under the row when the catalogue has no such satellite now (the daemon skips it).
+function known(input, r) {
+  const all = S.targets && Array.isArray(S.targets.satellites) ? S.targets.satellites : [];
+  const none = r.sat.trim() && all.length && !all.some((o) => entryOf([r], { sat: o.name, norad: o.norad }) === 0);
+  setText(input.closest('.sch-row').querySelector('.sch-note'), none ? `“${r.sat.trim()}” is not in the satellite catalogue now.` : '');
+}
+
+function rowEl(r, i) {
+  const sat = h('input', { class: 'sat-in', value: r.sat, autocomplete: 'off', spellcheck: 'false', 'data-field': 'sat',
+    placeholder: 'name or NORAD number', 'aria-label': `Priority ${i + 1}: satellite` });
+  const box = h('div', { class: 'sat-sugg', role: 'listbox', hidden: true });
+  const el = h('input', { inputmode: 'decimal', value: r.min_el_deg == null ? '' : String(r.min_el_deg), placeholder: '0',
+    'data-field': 'min_el_deg', 'aria-label': `Priority ${i + 1}: minimum elevation, degrees` });
+  const pre = h('select', { 'data-field': 'preempt', 'aria-label': `Priority ${i + 1}: at its AOS` },
+    h('option', { value: 'take_over', text: 'takes over' }), h('option', { value: 'finish', text: 'waits for LOS' }));
+  pre.value = preemptOf(r);
+  sat.addEventListener('input', () => { r.sat = sat.value; suggest(sat, box, r); known(sat, r); changed(); });
+  sat.addEventListener('focus', () => suggest(sat, box, r));
+  sat.addEventListener('blur', () => { box.hidden = true; });
+  el.addEventListener('input', () => { const v = parseNum(el.value); r.min_el_deg = el.value.trim() === '' ? null : v; changed(); });
+  pre.addEventListener('change', () => { r.preempt = pre.value; changed(); });
+  const btn = (cls, label, text, fn, off) => h('button', { type: 'button', class: `btn small ghost ${cls}`, 'aria-label': label, title: label, text, disabled: off, onclick: fn });
+  const row = h('div', { class: 'sch-row', 'data-i': i },
+    h('span', { class: 'sch-n', text: String(i + 1) }),
+    h('label', { class: 'sch-sat' }, 'Satellite', sat, box),
+    h('label', {}, 'Min el °', el),
+    h('label', {}, 'At its AOS', pre),
+    h('div', { class: 'sch-btns' }, btn('up', 'Move up', '↑', () => move(i, -1), i === 0),
+      btn('down', 'Move down', '↓', () => move(i, 1), i === rows.length - 1),
+      btn('rm', 'Remove', '✕', () => { rows.splice(i, 1); render(); })),
+    h('p', { class: 'hint sch-note' }), h('p', { class: 'error sch-err' }));
+  return row;
+}
+
+function render() {
+  $('sch-rows').replaceChildren(...rows.map(rowEl));
+  if (!rows.length) $('sch-rows').append(h('p', { class: 'hint', text: 'No satellite in the schedule.' }));
+  $('sch-rows').querySelectorAll('.sch-row').forEach((e, i) => known(e.querySelector('.sat-in'), rows[i]));
+  changed();
+}
+
+// The first row's problem as the controller would say it, or null.
+function check() {
+  for (const [i, r] of rows.entries()) {
+    if (!r.sat.trim()) return [i, 'sat', 'a satellite is required'];
+    if (r.min_el_deg != null && !(r.min_el_deg >= 0 && r.min_el_deg <= 90)) return [i, 'min_el_deg', 'the minimum elevation is 0 to 90°'];
+  }
+  return null;
+}
+function markRow(i, field, words) {
+  $('sch-rows').querySelectorAll('.bad').forEach((e) => e.classList.remove('bad'));
+  const row = $('sch-rows').children[i];
+  if (!row) return false;
+  row.querySelector(`[data-field="${field}"]`)?.classList.add('bad');
+  setText(row.querySelector('.sch-err'), words);
+  return true;
+}
+
+async function save() {
+  $('sch-rows').querySelectorAll('.sch-err').forEach((e) => setText(e, ''));
+  const bad = check();
+  if (bad) { markRow(...bad); setText('sch-save-error', `Not saved: row ${bad[0] + 1}: ${bad[2]}.`); return; }
+  const structural = rows.length < saved.length || rows.some((r, i) => r.id != null && r.id !== i);
+  const reply = structural ? await saveFile() : await saveItems();
+  if (!reply) return;
+  setText('sch-save-error', '');
+  toast(savedWords('the schedule', reply), 'ok', null, 6000);
+  await loadList(true);
+}
+
+// Rows changed in place or added at the end, one PUT each, in order.
+async function saveItems() {
+  let last = null;
+  for (const [i, r] of rows.entries()) {
+    if (i < saved.length && same(r, saved[i])) continue;
+    const body = { sat: r.sat.trim(), min_el_deg: r.min_el_deg, preempt: r.preempt };
+    const res = await act(`save [[schedule]] #${i + 1}`, 'PUT', `/api/config/schedule/${i + 1}`, body, { btn: $('sch-save'), quiet: true });
+    if (!res.ok) return refused(res, i);
+    last = res.data;
+  }
+  return last || {};
+}
+
+// The whole file with the new list: read (it needs the login, as an action does), rewritten, sent.
+async function saveFile() {
+  const headers = { Accept: 'text/plain' };
+  if (S.token) headers.Authorization = `Bearer ${S.token}`;
+  else if (S.csrf) headers['X-CSRF-Token'] = S.csrf;
+  let r;
+  try { r = await fetch('/api/config/file', { headers, credentials: 'same-origin', cache: 'no-store' }); } catch (e) { r = null; }
+  if (r && r.status === 401) { showLogin('Log in to save the schedule.'); setText('sch-save-error', 'Not saved: log in first.'); return null; }
+  if (!r || !r.ok) { setText('sch-save-error', `Not saved: the settings file could not be read (${r ? `HTTP ${r.status}` : 'no answer'}).`); return null; }
+  const text = replaceTables(await r.text(), 'schedule', rows.map((x) => scheduleTable({ ...x, sat: x.sat.trim() })));
+  const res = await act('save the schedule', 'PUT', '/api/config/file', text, { btn: $('sch-save'), quiet: true, type: 'application/toml' });
+  return res.ok ? res.data : refused(res, null);
+}
+
+function refused(res, i) {
+  if (res.status === 401) { setText('sch-save-error', 'Not saved: log in first.'); return null; }
+  const msg = res.data.error || (res.status ? `HTTP ${res.status}` : 'no answer from the controller');
+  // The file route names a key as "schedule.N.key" (N from 1), the item route by its key alone.
+  const m = String(res.data.field || '').match(/^schedule\.(\d+)\.(\w+)$/);
+  const row = m ? Number(m[1]) - 1 : i;
+  const beside = row != null && markRow(row, m ? m[2] : res.data.field, msg);
+  setText('sch-save-error', `Nothing was saved${beside ? ` (row ${row + 1}, above)` : `: ${msg}`}.`);
+  return null;
+}
+
+export function wireList() {
+  $('sch-add').addEventListener('click', () => {
+    rows.push({ id: null, sat: '', min_el_deg: null, preempt: null });
+    render();
+    $('sch-rows').lastElementChild.querySelector('.sat-in').focus();
+  });
+  $('sch-undo').addEventListener('click', () => { rows = saved.map((r) => ({ ...r })); render(); setText('sch-save-error', ''); });
+  $('sch-save').addEventListener('click', save);
+}
