@@ -35,15 +35,6 @@ std::string catalogue_path(const ScheduleOptions& o, const DaemonConfig& c) {
   return (std::filesystem::path(o.config).parent_path() / file).string();
 }
 
-/// The station's own figures: park slot 1, the axes' full-speed rates.
-schedule::ScheduleRules rules_of(const DaemonConfig& c) {
-  schedule::ScheduleRules r;
-  r.park_sky = c.park[0].position;
-  r.az_rate_deg_s = c.station.az_control.max_rate_deg_s;
-  r.el_rate_deg_s = c.station.el_control.max_rate_deg_s;
-  return r;
-}
-
 void print_text(const nlohmann::json& plan) {
   for (const auto& s : plan["plan"]) {
     std::cout << s["from"].get<std::string>() << " – " << s["to"].get<std::string>() << "  "
@@ -69,8 +60,9 @@ int run_schedule(const ScheduleOptions& o) {
   }
   const ScheduleSite site{c.sky.settings.observer, c.sky.settings.dut1_s,
                           parse_horizon_mask("[satellites] mask", c.satellites.mask)};
-  const auto plan = plan_satellite_schedule(SatelliteCatalogue::load(catalogue_path(o, c)), entries,
-                                            site, rules_of(c), from, hours, c.park[0].position);
+  const auto plan =
+      plan_satellite_schedule(SatelliteCatalogue::load(catalogue_path(o, c)), entries, site,
+                              schedule_rules_of(c), from, hours, c.park[0].position);
   if (o.json) {
     std::cout << plan.dump() << '\n';
   } else {

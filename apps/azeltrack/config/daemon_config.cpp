@@ -253,6 +253,23 @@ void check_relay_lines(const DaemonConfig& c, const ConfigSection& antenna) {
   }
 }
 
+/// [hardware.power] works with any backend; its line must be free, and "sim" only simulated.
+void check_power_relay(const DaemonConfig& c, const ConfigSection& antenna) {
+  const auto& power = c.hardware.power;
+  if (!power) return;
+  if (power->simulated() && c.backend != BackendKind::Sim) {
+    antenna.fail("backend", "[hardware.power] relay on \"sim\" needs backend = \"sim\"");
+  }
+  std::vector<const linux_os::GpioLineSpec*> seen = c.gpio.lines();
+  for (const HardwareAxisConfig* a : {&c.hardware.az, &c.hardware.el}) {
+    if (c.backend != BackendKind::Hardware) break;
+    for (const auto* l : a->gpio_lines()) seen.push_back(l);
+  }
+  if (const auto* other = same_line(seen, power->relay)) {
+    antenna.fail("backend", power->relay.key + " is the same line as " + other->key);
+  }
+}
+
 }  // namespace
 
 control::AzEl DaemonConfig::start_mount() const {
@@ -306,6 +323,7 @@ void read_antenna(const ConfigFile& file, DaemonConfig& c) {
     }
     check_relay_lines(c, antenna);
   }
+  check_power_relay(c, antenna);
 }
 
 /// The PC programs' servers: [rotctld], [pstrotator], [[serial]].
@@ -353,6 +371,7 @@ SatellitesConfig read_satellites(const ConfigSection& sats) {
   c.stale_days = sats.number("stale_days").value_or(c.stale_days);
   c.refuse_days = sats.number("refuse_days").value_or(c.refuse_days);
   if (c.refuse_days < c.stale_days) sats.fail("refuse_days", "must not be below stale_days");
+  c.idle_park_min = sats.number("idle_park_min").value_or(c.idle_park_min);
   c.ca_file = sats.text("ca_file").value_or("");
   c.proxy = sats.text("proxy").value_or("");
   c.connect_timeout_s = sats.number("connect_timeout_s").value_or(c.connect_timeout_s);

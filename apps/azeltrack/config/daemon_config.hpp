@@ -101,8 +101,10 @@ struct SatellitesConfig {
   double refresh_h = 12.0;
   double stale_days = 14.0;   ///< passes marked stale beyond this element age
   double refuse_days = 60.0;  ///< not tracked beyond this element age
-  std::string ca_file;        ///< empty: the system's CAs
-  std::string proxy;          ///< empty: the environment's, or none
+  /// The schedule parks after this long with nothing to do (then powers the motors off).
+  double idle_park_min = 10.0;
+  std::string ca_file;  ///< empty: the system's CAs
+  std::string proxy;    ///< empty: the environment's, or none
   double connect_timeout_s = 20.0;
   double timeout_s = 120.0;
   double max_mb = 32.0;

@@ -143,6 +143,11 @@ HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chi
   HardwareConfig h;
   h.az = read_axis(hw.child("az"), "az", gpio_chip);
   h.el = read_axis(hw.child("el"), "el", gpio_chip);
+  const ConfigSection power = hw.child("power");
+  if (auto relay =
+          read_gpio_line(power, "relay", gpio_chip, power.boolean("active_low").value_or(false))) {
+    h.power = MotorPowerConfig{*relay, power.number("on_lead_s").value_or(5.0)};
+  }
   return h;
 }
 

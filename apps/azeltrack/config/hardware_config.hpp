@@ -76,14 +76,22 @@ struct HardwareAxisConfig {
 /// One axis with the defaults (IBT-2 on [pwm], EncoderHub).
 HardwareAxisConfig default_axis(const std::string& name);
 
+/// [hardware.power]: the motors' supply on a relay (docs/satellites.md "The schedule").
+struct MotorPowerConfig {
+  linux_os::GpioLineSpec relay;  ///< chip "sim": the sim backend's simulated line
+  double on_lead_s = 5.0;
+  [[nodiscard]] bool simulated() const { return relay.chip == "sim"; }
+};
+
 struct HardwareConfig {
   HardwareAxisConfig az = default_axis("az");
   HardwareAxisConfig el = default_axis("el");
   [[nodiscard]] bool uses_hub() const {
     return az.sensor == AxisSensorKind::Hub || el.sensor == AxisSensorKind::Hub;
   }
+  std::optional<MotorPowerConfig> power;
   [[nodiscard]] bool uses_gpio() const {
-    return !az.gpio_lines().empty() || !el.gpio_lines().empty();
+    return !az.gpio_lines().empty() || !el.gpio_lines().empty() || (power && !power->simulated());
   }
 };
 

@@ -113,6 +113,24 @@ constexpr KeySpec relay_line(std::string_view key, std::string_view help) {
   return {.key = key, .type = KeyType::GpioLine, .default_note = "none", .help = help};
 }
 
+constexpr std::array<KeySpec, 3> kMotorPower{{
+    {.key = "relay",
+     .type = KeyType::GpioLine,
+     .default_note = "none: the motors are always powered",
+     .help = "the relay that switches the motors' supply, active = powered; `\"sim:N\"` is a "
+             "simulated line of the `sim` backend, shown in /api/state"},
+    {.key = "active_low",
+     .type = KeyType::Boolean,
+     .default_toml = "false",
+     .help = "the relay board switches on a low level"},
+    {.key = "on_lead_s",
+     .type = KeyType::Number,
+     .unit = "s",
+     .range = closed(0.0, 120.0),
+     .default_toml = "5.0",
+     .help = "after switching on, motion waits this long (the supply and the drives settle)"},
+}};
+
 constexpr KeySpec relay_number(std::string_view key, std::string_view unit, Range range,
                                std::string_view default_toml, std::string_view help) {
   return {.key = key,
@@ -213,7 +231,7 @@ constexpr std::array<KeySpec, 25> kHardwareAxis{{
 
 static_assert(control::MovingAverage::kCapacity == 64, "[hardware.*] average_samples' range");
 
-constexpr std::array<SectionSpec, 7> kSections{{
+constexpr std::array<SectionSpec, 8> kSections{{
     {.name = "antenna",
      .chapter = Chapter::Antenna,
      .keys = kAntenna,
@@ -234,6 +252,13 @@ constexpr std::array<SectionSpec, 7> kSections{{
      .title = "Two IBT-2 bridges",
      .help = "The bridges of the `pwm` backend, and of a `hardware` axis with `drive = \"pwm\"`."},
     {.name = "hardware", .chapter = Chapter::Antenna, .title = "Per-axis hardware"},
+    {.name = "hardware.power",
+     .chapter = Chapter::Antenna,
+     .keys = kMotorPower,
+     .title = "The motors' power relay",
+     .help = "Switched off while the satellite schedule has nothing to do for a long while "
+             "([satellites.md](satellites.md) \"The schedule\"), on again before the next "
+             "pre-position; motion is held while it is off. Any backend."},
     {.name = "hardware.az",
      .chapter = Chapter::Antenna,
      .keys = kHardwareAxis,

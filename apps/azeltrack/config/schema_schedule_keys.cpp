@@ -13,19 +13,22 @@ constexpr std::array<KeySpec, 3> kSchedule{{
     {.key = "sat",
      .type = KeyType::Text,
      .help = "required: a satellite of the catalogue, by name (case-insensitive, or a unique "
-             "prefix) or NORAD number; the first table has the highest priority"},
+             "prefix) or NORAD number; the first table has the highest priority",
+     .applies = Applies::Live},
     {.key = "min_el_deg",
      .type = KeyType::Number,
      .unit = "°",
      .range = closed(0.0, 90.0),
      .default_toml = "0.0",
-     .help = "a pass whose highest point is lower is not worked"},
+     .help = "a pass whose highest point is lower is not worked",
+     .applies = Applies::Live},
     {.key = "preempt",
      .type = KeyType::Choice,
      .choices = kPreempt,
      .default_toml = "\"take_over\"",
      .help = "at this satellite's AOS, a running pass of lower priority: `take_over` (this one "
-             "starts at once) or `finish` (it waits for that pass's LOS)"},
+             "starts at once) or `finish` (it waits for that pass's LOS)",
+     .applies = Applies::Live},
 }};
 
 constexpr std::array<SectionSpec, 1> kSections{{

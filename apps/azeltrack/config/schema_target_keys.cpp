@@ -16,7 +16,7 @@ constexpr std::array<KeySpec, 1> kTarget{{
              "satellite of `[satellites] file`), or `\"stop\"`"},
 }};
 
-constexpr std::array<KeySpec, 13> kSatellites{{
+constexpr std::array<KeySpec, 14> kSatellites{{
     {.key = "file",
      .type = KeyType::Text,
      .default_note = "none",
@@ -50,6 +50,13 @@ constexpr std::array<KeySpec, 13> kSatellites{{
      .range = above_up_to(0.0, 3650.0),
      .default_toml = "60.0",
      .help = "elements further than this from their epoch are not tracked (the reason is shown)"},
+    {.key = "idle_park_min",
+     .type = KeyType::Number,
+     .unit = "min",
+     .range = closed(0.1, 1440.0),
+     .default_toml = "10.0",
+     .help = "the schedule parks after this long with nothing to do, then switches "
+             "`[hardware.power]` off until the next pre-position"},
     {.key = "ca_file",
      .type = KeyType::Text,
      .default_note = "the system's CAs",

@@ -49,6 +49,8 @@ class ConsoleModel {
   virtual nlohmann::json config_schema() { return schema_json(); }
   virtual nlohmann::json targets() = 0;
   virtual nlohmann::json sky(double hours) = 0;
+  /// GET /api/schedule: the satellite schedule's list and plan; 404 where there is none.
+  virtual nlohmann::json schedule() { throw ApiError(404, "", "no satellite schedule here"); }
   /// `action` is the route after "/api/" ("target", "stop", "config/tilt", …); `source` names
   /// who asked ("console 192.168.1.20") for the station's record of commands. Throws ApiError
   /// for a refusal known at once; otherwise calls `done` exactly once, at once or later (a save

@@ -309,6 +309,7 @@ void DaemonConsole::apply_live(LiveApply what) {
       p_.config.sky.settings.grid = saved.sky.settings.grid;
       p_.sky.refollow();
       if (p_.satellites != nullptr) p_.satellites->set_site(p_.config.sky.settings.observer);
+      if (p_.schedule != nullptr) p_.schedule->set_observer(p_.config.sky.settings.observer);
       break;
     case LiveApply::Band:
       p_.config.sky.band_name = saved.sky.band_name;
@@ -324,6 +325,10 @@ void DaemonConsole::apply_live(LiveApply what) {
     case LiveApply::Park:
       p_.config.park = saved.park;
       p_.modes.set_park_slots(p_.config.park);
+      break;
+    case LiveApply::Schedule:
+      p_.config.schedule = saved.schedule;
+      if (p_.schedule != nullptr) p_.schedule->set_entries(p_.config.schedule);
       break;
   }
   snapshot_.unix_s = -1.0;  // the views are computed again with what changed

@@ -200,6 +200,7 @@ json DaemonConsole::state() {
           {"commands", p_.motions != nullptr ? p_.motions->to_json() : json::array()},
           {"station_io", p_.station_io ? p_.station_io() : json(nullptr)},
           {"radio", p_.radio ? p_.radio() : json{{"doppler", "off"}, {"link", "off"}}},
+          {"schedule", p_.schedule != nullptr ? p_.schedule->state() : json(nullptr)},
           {"wsjtx", p_.wsjtx ? p_.wsjtx() : json{{"listening", false}}},
           {"satellites", satellites_json()},
           {"servers", p_.servers}};

@@ -57,6 +57,10 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     done(ActResult{});
     return;
   }
+  if (action == "schedule" || action == "schedule/resume") {
+    act_schedule(action, body, source, std::move(done));
+    return;
+  }
   if (action == "faults/clear") {
     p_.antenna.clear_faults();
     p_.log(source + ": latched faults cleared");

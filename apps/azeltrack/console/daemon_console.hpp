@@ -21,6 +21,7 @@
 #include "console/moon_planner.hpp"
 #include "console/settings_change.hpp"
 #include "elements/element_feed.hpp"
+#include "schedule/schedule_follower.hpp"
 #include "station/clock_watch.hpp"
 #include "station/direction_test.hpp"
 #include "station/pointing_scanner.hpp"
@@ -71,6 +72,8 @@ struct ConsoleParts {
   std::function<nlohmann::json()> wsjtx;
   /// Where the element sets come from (null: no sources, no uploads; `satellites.sources` empty).
   ElementFeed* elements = nullptr;
+  /// The satellite schedule's follower (null: none; `schedule` null, its routes 404).
+  ScheduleFollower* schedule = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -86,6 +89,7 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json config_schema() override;
   nlohmann::json targets() override;
   nlohmann::json sky(double hours) override;
+  nlohmann::json schedule() override;
   void upload_elements(std::string text, const std::string& source, ActDone done) override;
   void act(const std::string& action, const nlohmann::json& body, const std::string& source,
            ActDone done) override;
@@ -120,6 +124,9 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json act_scan(const nlohmann::json& body, const std::string& source);
   /// POST /api/hardware/direction-test {"axis"}: answered when the test ends (about 1.6 s).
   void act_direction_test(const nlohmann::json& body, const std::string& source, ActDone done);
+  /// POST /api/schedule (the list replaced whole) and /api/schedule/resume (schedule_api.cpp).
+  void act_schedule(const std::string& action, const nlohmann::json& body,
+                    const std::string& source, ActDone done);
   /// POST /api/scan/apply: the last scan's offsets into [corrections] (saved atomically).
   void act_scan_apply(const nlohmann::json& body, ActDone done);
   // The settings: each validates the body at once (ApiError), then saves off the loop.

@@ -148,6 +148,7 @@ std::optional<LiveApply> live_apply_of(std::string_view section, std::string_vie
   // The pointing model is part of the corrections the antenna is handed whole.
   if (section == "corrections" || section == "pointing") return LiveApply::Corrections;
   if (section == "park") return LiveApply::Park;
+  if (section == "schedule") return LiveApply::Schedule;
   return std::nullopt;
 }
 

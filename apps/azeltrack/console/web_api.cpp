@@ -145,6 +145,7 @@ linux_os::HttpReply WebApi::handle_get(const linux_os::HttpRequest& request) {
   if (p == "/api/config") return json_reply(200, model_.config());
   if (p == "/api/config/schema") return json_reply(200, model_.config_schema());
   if (p == "/api/targets") return json_reply(200, model_.targets());
+  if (p == "/api/schedule") return json_reply(200, model_.schedule());
   if (p == "/api/sky") {
     return json_reply(
         200, model_.sky(std::clamp(query_number(request.query, "hours", 12.0), 0.0, 24.0)));

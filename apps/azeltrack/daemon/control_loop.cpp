@@ -98,6 +98,7 @@ void StationDaemon::tick() {
   modes_.update(now);
   elements_->tick(unix_now_s());
   satellites_.refresh_passes(unix_now_s());
+  schedule_->tick();
   if (commands_.tracking_satellite()) {
     control::AzEl rate;
     const control::Demand demand = satellites_.demand(unix_now_s(), mount_az(), rate);

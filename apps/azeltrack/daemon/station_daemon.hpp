@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "antenna/antenna_backend.hpp"
+#include "antenna/motor_power.hpp"
 #include "azt/linux/asio.hpp"
 #include "azt/linux/gpio.hpp"
 #include "azt/linux/serial_protocol_server.hpp"
@@ -26,6 +27,7 @@
 #include "daemon/tick_stats.hpp"
 #include "elements/element_feed.hpp"
 #include "radio/station_radio.hpp"
+#include "schedule/schedule_follower.hpp"
 #include "station/azel_dat_export.hpp"
 #include "station/clock_watch.hpp"
 #include "station/direction_test.hpp"
@@ -69,6 +71,14 @@ class StationDaemon {
   /// [satellites] sources and file: the element feed over libcurl, the cache beside the
   /// configuration (the state directory).
   std::unique_ptr<ElementFeed> make_element_feed();
+  // satellite_parts.cpp: the element feed, the schedule and the motors' power relay.
+  /// [hardware.power]: the relay on its GPIO line (or the sim's); none when not set.
+  std::unique_ptr<MotorPower> make_motor_power();
+  [[nodiscard]] ScheduleSite schedule_site() const;
+  /// [[schedule]] followed (always made: the console may write the first list).
+  std::unique_ptr<ScheduleFollower> make_schedule();
+  /// A step of the schedule begun or ended: the recent events, and the hooks.
+  void schedule_event(ScheduleEvent event, const schedule::Priority* sat, const PlannedPass* pass);
   /// A path of the configuration relative to its directory, absolute.
   std::string beside_config(const std::string& path) const;
   /// Where the mount's azimuth is (for choosing a pass's wrap side), or the configured start.
@@ -159,8 +169,10 @@ class StationDaemon {
   std::unique_ptr<PowerReceiver> receiver_;   ///< [receiver]: the power readings of scans
   std::unique_ptr<PointingScanner> scanner_;  ///< a pointing scan, while one runs
   std::unique_ptr<StationRadio> radio_;       ///< [radio] and [wsjtx]: the rig and WSJT-X
+  std::unique_ptr<MotorPower> power_;         ///< [hardware.power]; none when not set
   StationCommands commands_;
   DirectionTest direction_test_;  ///< the console's direction test of one axis, while one runs
+  std::unique_ptr<ScheduleFollower> schedule_;  ///< [[schedule]]: the station working by itself
   StationService service_;
   boost::asio::signal_set signals_;
   boost::asio::steady_timer timer_;

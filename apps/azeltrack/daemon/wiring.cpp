@@ -1,7 +1,6 @@
 // The daemon's wiring: each part built from the configuration and connected to the others, the
 // station's front door shared by the console and every protocol server (docs/architecture.md).
 #include <spdlog/spdlog.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,7 +10,6 @@
 #include "azt/astro/maidenhead.hpp"
 #include "azt/linux/atomic_file.hpp"
 #include "azt/linux/clock_probe.hpp"
-#include "azt/linux/http_download.hpp"
 #include "azt/linux/libgpiod_lines.hpp"
 #include "azt/proto/pstrotator.hpp"
 #include "azt/proto/sessions.hpp"
@@ -117,6 +115,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       timer_(io_),
       period_(std::chrono::duration_cast<SteadyClock::duration>(
           std::chrono::duration<double>(config_.station.tick_s))) {
+  power_ = make_motor_power();
   gps_ = std::make_unique<GpsReceiver>(
       io_, GpsReceiverParts{config_.gps, [this] { return now_s(); },
                             [this] { return modes_.mode() == control::Mode::Track; },
@@ -137,6 +136,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   scanner_ = std::make_unique<PointingScanner>(
       config_.receiver.source == ReceiverConfig::Source::None ? nullptr : &receiver_->feed());
   radio_ = make_radio();
+  schedule_ = make_schedule();
 }
 
 std::unique_ptr<StationRadio> StationDaemon::make_radio() {
@@ -252,6 +252,7 @@ void StationDaemon::adopt_site(const gnss::Site& site, std::function<void(bool)>
         config_.sky = store_.config().sky;
         sky_.refollow();  // computed for the new place
         satellites_.set_site(config_.sky.settings.observer);
+        if (schedule_) schedule_->set_observer(config_.sky.settings.observer);
         spdlog::info("gps: the station is at {:.6f} {:.6f} {:.1f} m (surveyed, saved)",
                      site.lat_deg, site.lon_deg, site.alt_m);
         done(true);
@@ -298,7 +299,10 @@ std::unique_ptr<AntennaBackend> StationDaemon::make_guarded(std::unique_ptr<Ante
       GuardParts{gpio_.get(), sequencer_.get(), latch, [this] { return now_s(); },
                  [this] { modes_.stop(); },
                  [](const std::string& line) { spdlog::warn("{}", line); }, off_loop()});
-  guarded->set_other_hold([this] { return radio_ && radio_->motion_hold(); });
+  // WSJT-X transmitting, or the motors' supply off or still settling.
+  guarded->set_other_hold([this] {
+    return (radio_ && radio_->motion_hold()) || (power_ && power_->motion_hold(now_s()));
+  });
   guard_ = guarded.get();
   return guarded;
 }
@@ -307,50 +311,6 @@ std::string StationDaemon::beside_config(const std::string& path) const {
   const std::filesystem::path p(path);
   return p.is_absolute() ? p.string()
                          : (std::filesystem::path(options_.config_path).parent_path() / p).string();
-}
-
-std::unique_ptr<ElementFeed> StationDaemon::make_element_feed() {
-  const SatellitesConfig& c = config_.satellites;
-  ElementFeedSettings settings;
-  if (!c.file.empty()) settings.file = beside_config(c.file);
-  settings.sources = c.sources;
-  settings.refresh_s = c.refresh_h * 3600.0;
-  settings.cache_path = beside_config("elements-cache.json");
-  linux_os::DownloadOptions download;
-  download.ca_file = c.ca_file.empty() ? "" : beside_config(c.ca_file);
-  download.proxy = c.proxy;
-  download.max_redirects = c.max_redirects;
-  download.connect_timeout_s = c.connect_timeout_s;
-  download.total_timeout_s = c.timeout_s;
-  download.max_bytes = static_cast<std::size_t>(c.max_mb * 1e6);
-  download.user_agent = "azeltrack/" + std::string(program_version());
-  download.cancel = &downloads_cancelled_;
-  // The downloads' TLS and the parsing of megabytes compete with the control loop for two cores:
-  // their thread yields (nice 10, setpriority(2) on the thread's own id, which Linux allows).
-  download_worker_.post(
-      [] { (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 10); }, [] {});
-  return std::make_unique<ElementFeed>(ElementFeedParts{
-      settings, [download](const std::string& url) { return linux_os::download(url, download); },
-      [this](std::function<void()> work, std::function<void()> done) {
-        download_worker_.post(std::move(work), std::move(done));
-      },
-      off_loop(), [this] { return unix_now_s(); },
-      [this](SatelliteCatalogue catalogue, double unix_s) {
-        satellites_.adopt(std::move(catalogue), unix_s);
-        if (start_waits_for_elements_) start_target();
-      },
-      [](const std::string& line) { spdlog::info("{}", line); }});
-}
-
-SatelliteSettings StationDaemon::satellite_settings() const {
-  SatelliteSettings s;
-  s.age = orbit::ElementAgeLimits{config_.satellites.stale_days, config_.satellites.refuse_days};
-  s.mask = parse_horizon_mask("[satellites] mask", config_.satellites.mask);
-  s.dut1_s = config_.sky.settings.dut1_s;
-  s.site = config_.sky.settings.observer;
-  s.mount = track::mount_geometry(config_.station);  // the mount's, not the plant's
-  s.mount.loss_error_deg = config_.satellites.beamwidth_deg / 2.0;
-  return s;
 }
 
 double StationDaemon::mount_az() const {
@@ -478,7 +438,8 @@ void StationDaemon::open_console() {
                           : nullptr,
                    radio_ ? std::function<nlohmann::json()>([this] { return radio_->wsjtx_json(); })
                           : nullptr,
-                   elements_.get()},
+                   elements_.get(),
+                   schedule_.get()},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});
@@ -493,6 +454,7 @@ void StationDaemon::control_event(const std::string& text) {
 
 void StationDaemon::motion_event(const CommandSource& source, const CommandRecord& record) {
   start_waits_for_elements_ = false;  // someone chose: the start target no longer applies
+  if (schedule_) schedule_->on_command(source);
   const std::string line = log_safe(source.name + ": " + record.words);
   log_.info("motion " + source.name, line, now_s());
   direction_test_.interrupt(source.name + ": " + record.words);

@@ -226,6 +226,9 @@ ControlHolder StationCommands::control() const {
     case CommandSource::Kind::Configuration:
       holder = "configuration";
       break;
+    case CommandSource::Kind::Schedule:
+      holder = "schedule";
+      break;
   }
   return ControlHolder{holder, commander(), commander_since_unix_s_, !p_.modes.external_locked()};
 }

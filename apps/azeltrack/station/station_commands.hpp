@@ -24,7 +24,7 @@ namespace azt::app {
 /// Who asked. The kind decides what a position means (MAN from the console, EXT from a program)
 /// and who a console STOP locks out (programs).
 struct CommandSource {
-  enum class Kind { Console, Program, Configuration };
+  enum class Kind { Console, Program, Configuration, Schedule };
   Kind kind = Kind::Program;
   std::string name;  ///< "rotctld 127.0.0.1:51234", "console 127.0.0.1", "gs232b /dev/ttyUSB0"
 };
@@ -56,7 +56,7 @@ struct CommandRecord {
 /// Who holds the antenna: the source of the last accepted command, and whether PC programs'
 /// motion is taken now (/api/state `control`, the console's hand-over).
 struct ControlHolder {
-  std::string holder;  ///< "console", "pc" or "configuration": the kind of that source
+  std::string holder;  ///< "console", "pc", "configuration" or "schedule": the source's kind
   std::string by;      ///< its name: "console 192.168.1.20", "rotctld 127.0.0.1:51234"
   double since_unix_s = 0.0;
   bool pc_allowed = true;  ///< false while the console's STOP locks programs out

@@ -56,11 +56,22 @@ std::vector<double> events(const std::vector<ScheduledPass>& passes, double from
   return {t.begin(), t.end()};
 }
 
+/// The pass of `priority` up at `t_s`: the one being tracked when a re-plan starts.
+std::optional<std::size_t> pass_up(const std::vector<ScheduledPass>& passes,
+                                   std::optional<std::size_t> priority, double t_s) {
+  if (!priority) return std::nullopt;
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    if (passes[i].priority == *priority && up_at(passes[i], t_s)) return i;
+  }
+  return std::nullopt;
+}
+
 std::vector<Segment> segments(const std::vector<Priority>& priorities,
-                              const std::vector<ScheduledPass>& passes, double from_s,
+                              const std::vector<ScheduledPass>& passes, const PlanStart& start,
                               double to_s) {
+  const double from_s = start.from_s;
   std::vector<Segment> out;
-  std::optional<std::size_t> running;
+  std::optional<std::size_t> running = pass_up(passes, start.tracking, from_s);
   const auto instants = events(passes, from_s, to_s);
   for (std::size_t k = 0; k < instants.size(); ++k) {
     running = choose(priorities, passes, running, instants[k]);
@@ -83,8 +94,8 @@ control::AzEl sky_of(const ScheduledPass& p, double t_s) {
 /// The plan's walk: where the antenna is, until when it is busy, and the steps so far.
 class Planner {
  public:
-  Planner(const ScheduleRules& rules, double from_s, control::AzEl start)
-      : rules_(rules), free_from_s_(from_s), at_(start) {}
+  Planner(const ScheduleRules& rules, const PlanStart& start)
+      : rules_(rules), free_from_s_(std::min(start.idle_since_s, start.from_s)), at_(start.sky) {}
 
   void track(const ScheduledPass& pass, const Segment& s) {
     const control::AzEl first = sky_of(pass, s.from_s);
@@ -182,6 +193,14 @@ std::vector<PlanStep> plan_schedule(const std::vector<Priority>& priorities,
                                     const std::vector<ScheduledPass>& passes,
                                     const ScheduleRules& rules, double from_s, double to_s,
                                     control::AzEl start_sky) {
+  return plan_schedule(priorities, passes, rules, PlanStart{from_s, start_sky, from_s, {}}, to_s);
+}
+
+std::vector<PlanStep> plan_schedule(const std::vector<Priority>& priorities,
+                                    const std::vector<ScheduledPass>& passes,
+                                    const ScheduleRules& rules, const PlanStart& start,
+                                    double to_s) {
+  const double from_s = start.from_s;
   std::vector<ScheduledPass> worked;
   for (const auto& p : passes) {
     const bool known = p.priority < priorities.size();
@@ -190,8 +209,8 @@ std::vector<PlanStep> plan_schedule(const std::vector<Priority>& priorities,
       worked.push_back(p);
     }
   }
-  Planner planner(rules, from_s, start_sky);
-  for (const Segment& s : segments(priorities, worked, from_s, to_s)) {
+  Planner planner(rules, start);
+  for (const Segment& s : segments(priorities, worked, start, to_s)) {
     planner.track(worked[s.pass], s);
   }
   return planner.finish(to_s);

@@ -66,6 +66,35 @@ TEST(PassSchedule, EachPassIsPrepositionedJustInTimeThenTracked) {
   EXPECT_EQ(plan[3].kind, StepKind::Track);
 }
 
+TEST(PassSchedule, ARePlanMidPassKeepsThePassBeingTrackedWhenTheBetterOneMustWait) {
+  // Priority 0 (finish) rose at 300 while priority 1 was tracked: a fresh plan from 400 would
+  // take priority 0, a re-plan that knows what runs finishes priority 1 first.
+  const std::vector<ScheduledPass> passes{pass(1, 0.0, 900.0), pass(0, 300.0, 1000.0)};
+  const auto l = list({Preempt::Finish, Preempt::TakeOver});
+  const auto fresh =
+      of_kind(plan_schedule(l, passes, rules(), 400.0, 1100.0, {90.0, 0.0}), StepKind::Track);
+  ASSERT_FALSE(fresh.empty());
+  EXPECT_EQ(fresh[0].priority, 0U);
+  const auto replan =
+      of_kind(plan_schedule(l, passes, rules(), PlanStart{400.0, {90.0, 0.0}, 400.0, 1U}, 1100.0),
+              StepKind::Track);
+  ASSERT_EQ(replan.size(), 2U);
+  EXPECT_EQ(replan[0].priority, 1U);
+  EXPECT_DOUBLE_EQ(replan[0].from_s, 400.0);
+  EXPECT_DOUBLE_EQ(replan[0].to_s, 900.0);
+  EXPECT_EQ(replan[1].priority, 0U);
+  EXPECT_DOUBLE_EQ(replan[1].from_s, 900.0);
+}
+
+TEST(PassSchedule, ARePlanDoesNotPostponeParkingByTheIdleTimeAlreadySpent) {
+  // Idle since 0 with parking after 600 s: a re-plan at 500 still parks at 600.
+  const auto plan = plan_schedule(list({Preempt::TakeOver}), {pass(0, 5000.0, 5400.0)}, rules(),
+                                  PlanStart{500.0, {90.0, 0.0}, 0.0, {}}, 6000.0);
+  const auto parks = of_kind(plan, StepKind::Park);
+  ASSERT_FALSE(parks.empty());
+  EXPECT_DOUBLE_EQ(parks[0].from_s, 600.0);
+}
+
 TEST(PassSchedule, AHigherPriorityAosTakesOverAndTheOtherResumesIfStillUp) {
   const auto plan = plan_schedule(list({Preempt::TakeOver, Preempt::TakeOver}),
                                   {pass(1, 0.0, 900.0), pass(0, 300.0, 600.0)}, rules(), 0.0,

@@ -65,6 +65,19 @@ struct PlanStep {
   double to_s = 0.0;
 };
 
+/// Where the plan starts from. The daemon plans again every few minutes and whenever the
+/// catalogue or the list changes, so the plan must continue what runs: the pass being tracked
+/// (a pass whose rule is Finish does not take it over at a re-plan), and the idle time already
+/// spent (re-planning does not postpone parking).
+struct PlanStart {
+  double from_s = 0.0;
+  control::AzEl sky;  ///< where the antenna is at from_s
+  /// Since when the antenna has had nothing to do (at most from_s); from_s when it is busy.
+  double idle_since_s = 0.0;
+  /// The priority whose pass is being tracked at from_s, if one is.
+  std::optional<std::size_t> tracking;
+};
+
 /// The time the mount takes from `from` to `to` (the slower axis, plus the settle time).
 double slew_time_s(const control::AzEl& from, const control::AzEl& to, const ScheduleRules& rules);
 
@@ -72,6 +85,11 @@ double slew_time_s(const control::AzEl& from, const control::AzEl& to, const Sch
 /// motors powered. Passes below their entry's minimum elevation are left out; at every instant
 /// the tracked pass is the best one up, except while a pass of lower priority finishes because
 /// the better one's rule is Finish.
+std::vector<PlanStep> plan_schedule(const std::vector<Priority>& priorities,
+                                    const std::vector<ScheduledPass>& passes,
+                                    const ScheduleRules& rules, const PlanStart& start,
+                                    double to_s);
+/// A fresh plan: the antenna idle and at `start_sky` from `from_s`.
 std::vector<PlanStep> plan_schedule(const std::vector<Priority>& priorities,
                                     const std::vector<ScheduledPass>& passes,
                                     const ScheduleRules& rules, double from_s, double to_s,
