@@ -100,16 +100,16 @@ port = ${port}
 `;
 }
 
-/// An ISS element set (or one under NORAD and NAME) whose epoch is now, so that its next pass
-/// is within hours.
-function tleWithEpochNow(norad = '25544', name = 'ISS (ZARYA)') {
+/// An ISS element set (or one under NORAD and NAME, its orbit turned to RAAN_DEG) whose epoch is
+/// now, so that its next pass is within hours.
+function tleWithEpochNow(norad = '25544', name = 'ISS (ZARYA)', raanDeg = 247.4627) {
   const checksum = (l) => l.slice(0, 68) + String([...l.slice(0, 68)].reduce((a, c) =>
     a + (c >= '0' && c <= '9' ? Number(c) : c === '-' ? 1 : 0), 0) % 10);
   const now = new Date();
   const day = (now - Date.UTC(now.getUTCFullYear(), 0, 1)) / 86400000 + 1;
   const epoch = `${String(now.getUTCFullYear() % 100).padStart(2, '0')}${day.toFixed(8).padStart(12, '0')}`;
   const l1 = `1 ${norad}U 98067A   ${epoch}  .00016717  00000-0  30119-3 0  999`;
-  const l2 = `2 ${norad}  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110`;
+  const l2 = `2 ${norad}  51.6416 ${raanDeg.toFixed(4).padStart(8, ' ')} 0006703 130.5360 325.0288 15.49815488441110`;
   return `${name}\n${checksum(l1)}\n${checksum(l2)}\n`;
 }
 

@@ -3,7 +3,7 @@
 
 import { S, targetLabel } from './state.js';
 import { $, h, setText } from './dom.js';
-import { countdown, deg, fix, hz, isNum, sameName, sdeg, utcLocal, waitLine } from './format.js';
+import { countdown, deg, fix, hz, isNum, pad, sameName, sdeg, utcLocal, waitLine } from './format.js';
 import { bandList, wavelength } from './bands.js';
 import { drawTrend, TREND_S } from './trend.js';
 import { drawSky } from './sky.js';

@@ -21,10 +21,10 @@ let stepKey = null;
 export async function openSchedule() {
   if (!wired) {
     wired = true;
-    wireList();
+    wireList(showPlan);
     $('sch-resume').addEventListener('click', resume);
   }
-  await Promise.all([readPlan(), loadList()]);
+  await readPlan();
   renderSchedule(true);
 }
 
@@ -32,21 +32,27 @@ function readPlan() {
   reading = reading || (async () => {
     const r = await request('GET', '/api/schedule');
     readAt = Date.now();
-    plan = r.ok ? r.data : null;
-    if (!r.ok) {
-      setText('sch-msg', r.status === 404 ? 'This controller plans no schedule yet (GET /api/schedule answered 404).'
-        : `The plan could not be read: ${r.data.error || (r.status ? `HTTP ${r.status}` : 'no answer')}.`);
-      $('sch-timeline').replaceChildren();
-      $('sch-plan-rows').replaceChildren();
-      return;
-    }
-    const entries = Array.isArray(plan.entries) ? plan.entries : [];
-    setText('sch-msg', entries.length ? '' : 'No satellite in the schedule: add one to the priority list.');
-    drawTimeline($('sch-timeline'), plan);
-    renderPlanRows();
-    if (S.state) placeNow($('sch-timeline'), Date.parse(S.state.utc));
+    if (r.ok) { showPlan(r.data); return; }
+    plan = null;
+    setText('sch-msg', r.status === 404 ? 'This controller has no satellite schedule (GET /api/schedule answered 404).'
+      : `The plan could not be read: ${r.data.error || (r.status ? `HTTP ${r.status}` : 'no answer')}.`);
+    $('sch-timeline').replaceChildren();
+    $('sch-plan-rows').replaceChildren();
   })().finally(() => { reading = null; });
   return reading;
+}
+
+// GET /api/schedule's answer (or a save's): the list to edit (unless edits wait), the timeline and
+// the steps.
+function showPlan(p) {
+  plan = p;
+  const entries = Array.isArray(p.entries) ? p.entries : [];
+  loadList(entries);
+  const when = p.from ? '' : ' The controller has not planned them yet.';
+  setText('sch-msg', entries.length ? when.trim() : 'No satellite in the schedule: add one to the priority list.');
+  drawTimeline($('sch-timeline'), p.from ? p : { ...p, from: S.state ? S.state.utc : new Date().toISOString() });
+  renderPlanRows();
+  if (S.state) placeNow($('sch-timeline'), Date.parse(S.state.utc));
 }
 
 // "Track ISS", "Pre-position for ISS", "Park", "Motors off".
@@ -80,7 +86,7 @@ function badge(cls, word, words) {
 }
 
 function renderNow(s, nowMs) {
-  if (!s) badge('b-off', 'OFF', 'The controller reports no schedule (/api/state has no schedule).');
+  if (!s) badge('b-off', 'OFF', 'no satellite in the schedule');
   else if (s.held_by) badge('b-bad', 'HELD', `held by ${s.held_by}`);
   else if (s.running) badge('b-fix', 'RUNNING', 'the station follows the schedule');
   else badge('b-off', 'IDLE', 'nothing scheduled now');
@@ -92,6 +98,9 @@ function renderNow(s, nowMs) {
   const next = s && s.next;
   setText('sch-next', next ? stepWords(next) : 'nothing planned');
   setText('sch-next-at', next ? whenWords(next.from, nowMs) : '—');
+  const problems = s && Array.isArray(s.problems) ? s.problems : [];
+  $('sch-problems').hidden = !problems.length;
+  setText('sch-problems', problems.length ? `Not planned: ${problems.join('; ')}.` : '');
   const power = s ? s.power : null;
   setText('sch-power', power === 'on' ? 'on' : power === 'off' ? 'off (switched by the schedule)' : 'no power relay');
 }

@@ -1,39 +1,31 @@
 // The schedule's priority list ([[schedule]] tables: sat, min_el_deg, preempt), edited on the
 // Schedule page: rows added, removed and moved, each satellite found with the Targets page's
-// search. Saved through the configuration API the Settings page uses: values changed in place and
-// rows added at the end item by item (PUT /api/config/schedule/N, a refusal names the key); a
-// list with rows removed or moved as the whole file (PUT /api/config/file, schedule_toml.js),
-// which the section route cannot express. Either way the controller checks before it saves.
+// search. Saved whole (POST /api/schedule): the controller checks the list as the file's loader
+// does, saves it atomically and follows it at once; a refusal names the row and key and saves
+// nothing.
 
 import { S } from './state.js';
 import { $, h, setText } from './dom.js';
 import { isNum, parseNum } from './format.js';
-import { loadJSON } from './api.js';
 import { act } from './actions.js';
 import { toast } from './toast.js';
-import { showLogin } from './session.js';
 import { matches } from './targets.js';
-import { savedWords } from './settings_forms.js';
-import { replaceTables, scheduleTable } from './schedule_toml.js';
 import { entryOf } from './schedule_timeline.js';
 
-let saved = []; // as the file holds them: {id, sat, min_el_deg, preempt}
-let rows = []; // being edited; a row read from the file keeps its id (its place there)
+let saved = []; // as the controller follows them: {id, sat, min_el_deg, preempt}
+let rows = []; // being edited; a saved row keeps its id (its place in the saved list)
 
 const preemptOf = (r) => r.preempt || 'take_over';
 const same = (a, b) => a.sat.trim() === b.sat.trim() && a.min_el_deg === b.min_el_deg && preemptOf(a) === preemptOf(b);
 const dirty = () => rows.length !== saved.length || rows.some((r, i) => r.id !== i || !same(r, saved[i]));
 
-/// Reads the list from the file (GET /api/config/schema), unless edits are waiting (`force`: anyway).
-export async function loadList(force) {
+/// The list the controller follows (GET /api/schedule `entries`), unless edits are waiting
+/// (`force`: anyway).
+export function loadList(entries, force) {
   if (!force && dirty()) return;
-  const j = await loadJSON('/api/config/schema');
-  const sec = j && Array.isArray(j.sections) ? j.sections.find((s) => s.name === 'schedule') : null;
-  if (!sec) { setText('sch-save-error', 'The controller did not give its settings (GET /api/config/schema).'); return; }
-  saved = (Array.isArray(sec.items) ? sec.items : []).map((it, i) => ({ id: i, sat: String((it && it.sat) ?? ''),
-    min_el_deg: it && isNum(it.min_el_deg) ? it.min_el_deg : null, preempt: (it && it.preempt) || null }));
+  saved = (Array.isArray(entries) ? entries : []).map((e, i) => ({ id: i, sat: String((e && e.sat) ?? ''),
+    min_el_deg: e && isNum(e.min_el_deg) ? e.min_el_deg : null, preempt: (e && e.preempt) || null }));
   rows = saved.map((r) => ({ ...r }));
-  setText('sch-save-error', '');
   render();
 }
 
@@ -123,57 +115,42 @@ function markRow(i, field, words) {
   return true;
 }
 
+let onSaved = () => {};
+
 async function save() {
   $('sch-rows').querySelectorAll('.sch-err').forEach((e) => setText(e, ''));
   const bad = check();
   if (bad) { markRow(...bad); setText('sch-save-error', `Not saved: row ${bad[0] + 1}: ${bad[2]}.`); return; }
-  const structural = rows.length < saved.length || rows.some((r, i) => r.id != null && r.id !== i);
-  const reply = structural ? await saveFile() : await saveItems();
-  if (!reply) return;
+  const entries = rows.map((r) => {
+    const e = { sat: r.sat.trim() };
+    if (r.min_el_deg != null) e.min_el_deg = r.min_el_deg;
+    if (r.preempt) e.preempt = r.preempt;
+    return e;
+  });
+  const res = await act('save the schedule', 'POST', '/api/schedule', { entries }, { btn: $('sch-save'), quiet: true });
+  if (!res.ok) { refused(res); return; }
   setText('sch-save-error', '');
-  toast(savedWords('the schedule', reply), 'ok', null, 6000);
-  await loadList(true);
+  toast(`Schedule saved: ${entries.length ? `${entries.length} satellite${entries.length === 1 ? '' : 's'}, followed now` : 'empty, the station follows none'}.`, 'ok', null, 6000);
+  const plan = res.data && res.data.schedule;
+  if (plan) onSaved(plan);
+  loadList(plan ? plan.entries : entries, true);
 }
 
-// Rows changed in place or added at the end, one PUT each, in order.
-async function saveItems() {
-  let last = null;
-  for (const [i, r] of rows.entries()) {
-    if (i < saved.length && same(r, saved[i])) continue;
-    const body = { sat: r.sat.trim(), min_el_deg: r.min_el_deg, preempt: r.preempt };
-    const res = await act(`save [[schedule]] #${i + 1}`, 'PUT', `/api/config/schedule/${i + 1}`, body, { btn: $('sch-save'), quiet: true });
-    if (!res.ok) return refused(res, i);
-    last = res.data;
-  }
-  return last || {};
-}
-
-// The whole file with the new list: read (it needs the login, as an action does), rewritten, sent.
-async function saveFile() {
-  const headers = { Accept: 'text/plain' };
-  if (S.token) headers.Authorization = `Bearer ${S.token}`;
-  else if (S.csrf) headers['X-CSRF-Token'] = S.csrf;
-  let r;
-  try { r = await fetch('/api/config/file', { headers, credentials: 'same-origin', cache: 'no-store' }); } catch (e) { r = null; }
-  if (r && r.status === 401) { showLogin('Log in to save the schedule.'); setText('sch-save-error', 'Not saved: log in first.'); return null; }
-  if (!r || !r.ok) { setText('sch-save-error', `Not saved: the settings file could not be read (${r ? `HTTP ${r.status}` : 'no answer'}).`); return null; }
-  const text = replaceTables(await r.text(), 'schedule', rows.map((x) => scheduleTable({ ...x, sat: x.sat.trim() })));
-  const res = await act('save the schedule', 'PUT', '/api/config/file', text, { btn: $('sch-save'), quiet: true, type: 'application/toml' });
-  return res.ok ? res.data : refused(res, null);
-}
-
-function refused(res, i) {
-  if (res.status === 401) { setText('sch-save-error', 'Not saved: log in first.'); return null; }
+function refused(res) {
+  if (res.status === 401) { setText('sch-save-error', 'Not saved: log in first.'); return; }
   const msg = res.data.error || (res.status ? `HTTP ${res.status}` : 'no answer from the controller');
-  // The file route names a key as "schedule.N.key" (N from 1), the item route by its key alone.
-  const m = String(res.data.field || '').match(/^schedule\.(\d+)\.(\w+)$/);
-  const row = m ? Number(m[1]) - 1 : i;
-  const beside = row != null && markRow(row, m ? m[2] : res.data.field, msg);
+  // "entries[1].min_el_deg" (from 0) for the list's form; the file's loader's own words may name
+  // "schedule.2.min_el_deg" (from 1).
+  const f = String(res.data.field || '');
+  const m = f.match(/^entries\[(\d+)\](?:\.(\w+))?$/) || f.match(/^schedule\.(\d+)(?:\.(\w+))?$/);
+  const row = m ? Number(m[1]) - (f.startsWith('schedule') ? 1 : 0) : null;
+  const beside = row != null && markRow(row, m[2] || 'sat', msg);
   setText('sch-save-error', `Nothing was saved${beside ? ` (row ${row + 1}, above)` : `: ${msg}`}.`);
-  return null;
 }
 
-export function wireList() {
+/// Wires the list's buttons; `whenSaved` gets the plan the controller answers a save with.
+export function wireList(whenSaved) {
+  onSaved = whenSaved;
   $('sch-add').addEventListener('click', () => {
     rows.push({ id: null, sat: '', min_el_deg: null, preempt: null });
     render();

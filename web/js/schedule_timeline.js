@@ -18,17 +18,18 @@ let span = null; // {t0, t1, height}: where "now" goes
 const xOf = (t) => LABEL + ((t - span.t0) / (span.t1 - span.t0)) * (W - LABEL - RIGHT);
 const clampX = (t) => xOf(Math.min(span.t1, Math.max(span.t0, t)));
 
-// Which row (entry) a pass belongs to: the first entry naming it by NORAD number, by name, or by
-// the start of its name, as the daemon reads `sat` (docs/satellites.md "The schedule").
+// Which row (entry) a pass belongs to, as the daemon reads `sat` (docs/satellites.md "The
+// schedule"): the entry that names it whole, else by its NORAD number, else by the start of its
+// name ("AO-7" is not taken for AO-73 when AO-73 has an entry of its own). -1: none.
 export function entryOf(entries, pass) {
   const name = String(pass.sat || '').toLowerCase();
-  const norad = String(pass.norad || '').replace(/^0+/, '');
-  return entries.findIndex((e) => {
-    const s = String(e.sat || '').trim().toLowerCase();
-    if (!s) return false;
-    if (/^\d+$/.test(s)) return s.replace(/^0+/, '') === norad;
-    return name === s || name.startsWith(s);
-  });
+  const norad = String(pass.norad ?? '').replace(/^0+/, '');
+  const sats = entries.map((e) => String(e.sat || '').trim().toLowerCase());
+  const whole = sats.indexOf(name);
+  if (whole >= 0) return whole;
+  const byNumber = sats.findIndex((s) => /^\d+$/.test(s) && s.replace(/^0+/, '') === norad);
+  if (byNumber >= 0) return byNumber;
+  return sats.findIndex((s) => s && !/^\d+$/.test(s) && name.startsWith(s));
 }
 
 function hourTicks(height) {
@@ -56,10 +57,11 @@ function rowOf(e, i, passes) {
   for (const p of passes) {
     const a = Date.parse(p.aos); const b = Date.parse(p.los);
     if (!(b > span.t0 && a < span.t1)) continue;
-    const low = Number.isFinite(e.min_el_deg) && p.max_el_deg < e.min_el_deg;
+    // Not worked: below the entry's minimum elevation, or given way to a higher priority.
+    const low = p.worked === false || (p.worked == null && Number.isFinite(e.min_el_deg) && p.max_el_deg < e.min_el_deg);
     const x = clampX(a);
     const bar = sv('rect', { class: `pass${low ? ' low' : ''}`, x: x.toFixed(1), y: y + 5, width: Math.max(2, clampX(b) - x).toFixed(1), height: ROW - 10, rx: 2 });
-    bar.append(sv('title', {}, `${p.sat}: AOS ${utcLocal(p.aos)}, max ${fix(p.max_el_deg, 0)}°, LOS ${utcLocal(p.los)}${low ? ` (below ${e.min_el_deg}°: not worked)` : ''}`));
+    bar.append(sv('title', {}, `${p.sat}: AOS ${utcLocal(p.aos)}, max ${fix(p.max_el_deg, 0)}°, LOS ${utcLocal(p.los)}${low ? ' (not worked)' : ''}`));
     g.append(bar);
   }
   return g;
