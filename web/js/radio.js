@@ -20,6 +20,7 @@ const EME = {
 };
 
 export async function openRadio() {
+  renderRadio(true);
   const j = await loadJSON('/api/config/schema');
   const sec = j && Array.isArray(j.sections) ? j.sections.find((s) => s.name === 'radio') : null;
   file = sec ? Object.fromEntries(sec.keys.map((k) => [k.key, k.value == null ? k.default : k.value])) : {};

@@ -21,7 +21,8 @@ let stepKey = null;
 export async function openSchedule() {
   if (!wired) {
     wired = true;
-    wireList(showPlan);
+    // A save answers with the new list at once; its plan is made on the controller's worker.
+    wireList((p) => { showPlan(p); setTimeout(readPlan, 3000); });
     $('sch-resume').addEventListener('click', resume);
   }
   await readPlan();
@@ -75,6 +76,7 @@ function renderPlanRows() {
   $('sch-plan-rows').replaceChildren(...steps.map((s) => h('tr', { class: Date.parse(s.from) <= now && now < Date.parse(s.to) ? 'sel' : null },
     h('td', { text: KIND_WORDS[s.kind] || String(s.kind) }), h('td', { text: s.sat || '—' }),
     h('td', { text: utcLocal(s.from) }), h('td', { text: utcLocal(s.to) }))));
+  setText('sch-plan-count', steps.length ? `(${steps.length})` : '');
   if (!steps.length) $('sch-plan-rows').append(h('tr', {}, h('td', { colspan: 4, class: 'dimtxt', text: 'Nothing planned in these hours.' })));
 }
 

@@ -139,11 +139,13 @@ async function save() {
 function refused(res) {
   if (res.status === 401) { setText('sch-save-error', 'Not saved: log in first.'); return; }
   const msg = res.data.error || (res.status ? `HTTP ${res.status}` : 'no answer from the controller');
-  // "entries[1].min_el_deg" (from 0) for the list's form; the file's loader's own words may name
-  // "schedule.2.min_el_deg" (from 1).
+  // The form's refusal names "entries[1].min_el_deg" (from 0); the file loader's, with the field
+  // "entries", says "[schedule#2].sat …" (from 1).
   const f = String(res.data.field || '');
-  const m = f.match(/^entries\[(\d+)\](?:\.(\w+))?$/) || f.match(/^schedule\.(\d+)(?:\.(\w+))?$/);
-  const row = m ? Number(m[1]) - (f.startsWith('schedule') ? 1 : 0) : null;
+  const byField = f.match(/^entries\[(\d+)\](?:\.(\w+))?$/);
+  const byWords = String(res.data.error || '').match(/\[schedule#(\d+)\]\.(\w+)/);
+  const m = byField || byWords;
+  const row = m ? Number(m[1]) - (byField ? 0 : 1) : null;
   const beside = row != null && markRow(row, m[2] || 'sat', msg);
   setText('sch-save-error', `Nothing was saved${beside ? ` (row ${row + 1}, above)` : `: ${msg}`}.`);
 }
