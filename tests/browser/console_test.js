@@ -322,6 +322,12 @@ async function main() {
       }
       await page.click('#nav-sky');
       await until('the planned pass on the sky plot', async () => (await page.$('#sky-pass-path')) !== null, 8000);
+      // Its AOS marked with the time the tracker plans (the path's first point above the horizon:
+      // AOS, or 10 s later should AOS itself come out a hair below).
+      const aos = Date.parse((await state()).target.satellite.aos);
+      const marked = await text(page, '#sky-pass-aos');
+      const could = [aos, aos + 10e3].map((t) => `AOS ${new Date(t).toISOString().slice(11, 16)}`);
+      if (sat.phase === 'waiting for AOS' && !could.includes(marked)) throw new Error(`AOS mark: ${marked} (AOS ${new Date(aos).toISOString()})`);
       await page.click('#nav-main');
     });
 
