@@ -12,7 +12,7 @@ const path = require('path');
 const {
   DESKTOP, PHONE, setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
   stopDaemon, scenario: check, scenarioWithShots, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown,
-  summarise, run,
+  summarise, run, tleWithEpochNow,
 } = require('./harness');
 
 const { outDir, tmp, config } = setup('console_test.js', 'azt-browser-');
@@ -80,18 +80,6 @@ async function stopFeeder() {
 }
 
 const hasProgram = (name) => spawnSync('sh', ['-c', `command -v ${name}`], { stdio: 'ignore' }).status === 0;
-
-// An ISS element set whose epoch is now, so that its next pass is within hours.
-function tleWithEpochNow(norad = '25544', name = 'ISS (ZARYA)') {
-  const checksum = (l) => l.slice(0, 68) + String([...l.slice(0, 68)].reduce((a, c) =>
-    a + (c >= '0' && c <= '9' ? Number(c) : c === '-' ? 1 : 0), 0) % 10);
-  const now = new Date();
-  const day = (now - Date.UTC(now.getUTCFullYear(), 0, 1)) / 86400000 + 1;
-  const epoch = `${String(now.getUTCFullYear() % 100).padStart(2, '0')}${day.toFixed(8).padStart(12, '0')}`;
-  const l1 = `1 ${norad}U 98067A   ${epoch}  .00016717  00000-0  30119-3 0  999`;
-  const l2 = `2 ${norad}  51.6416 247.4627 0006703 130.5360 325.0288 15.49815488441110`;
-  return `${name}\n${checksum(l1)}\n${checksum(l2)}\n`;
-}
 
 function writeConfig() {
   // The harness's fast plant: a quick motor, so that the final approach to each point of a
@@ -329,11 +317,17 @@ async function main() {
       const line = await text(page, '#sat-pass');
       const loss = (await state()).target.satellite.planned_loss;
       const said = loss.seconds > 0 ? `${Math.round(loss.seconds)} s beyond` : 'no loss planned';
-      if (!/^(AOS|LOS) \d\d:\d\d · max \d+°/.test(line) || !line.includes(said)) {
+      if (!/^(AOS|LOS) \d\d:\d\d UTC( \(\d\d:\d\d local\))? · max \d+°/.test(line) || !line.includes(said)) {
         throw new Error(`pass line: ${line} (planned loss ${JSON.stringify(loss)})`);
       }
       await page.click('#nav-sky');
       await until('the planned pass on the sky plot', async () => (await page.$('#sky-pass-path')) !== null, 8000);
+      // Its AOS marked with the time the tracker plans (the path's first point above the horizon:
+      // AOS, or 10 s later should AOS itself come out a hair below).
+      const aos = Date.parse((await state()).target.satellite.aos);
+      const marked = await text(page, '#sky-pass-aos');
+      const could = [aos, aos + 10e3].map((t) => `AOS ${new Date(t).toISOString().slice(11, 16)}`);
+      if (sat.phase === 'waiting for AOS' && !could.includes(marked)) throw new Error(`AOS mark: ${marked} (AOS ${new Date(aos).toISOString()})`);
       await page.click('#nav-main');
     });
 

@@ -100,6 +100,19 @@ port = ${port}
 `;
 }
 
+/// An ISS element set (or one under NORAD and NAME, its orbit turned to RAAN_DEG) whose epoch is
+/// now, so that its next pass is within hours.
+function tleWithEpochNow(norad = '25544', name = 'ISS (ZARYA)', raanDeg = 247.4627) {
+  const checksum = (l) => l.slice(0, 68) + String([...l.slice(0, 68)].reduce((a, c) =>
+    a + (c >= '0' && c <= '9' ? Number(c) : c === '-' ? 1 : 0), 0) % 10);
+  const now = new Date();
+  const day = (now - Date.UTC(now.getUTCFullYear(), 0, 1)) / 86400000 + 1;
+  const epoch = `${String(now.getUTCFullYear() % 100).padStart(2, '0')}${day.toFixed(8).padStart(12, '0')}`;
+  const l1 = `1 ${norad}U 98067A   ${epoch}  .00016717  00000-0  30119-3 0  999`;
+  const l2 = `2 ${norad}  51.6416 ${raanDeg.toFixed(4).padStart(8, ' ')} 0006703 130.5360 325.0288 15.49815488441110`;
+  return `${name}\n${checksum(l1)}\n${checksum(l2)}\n`;
+}
+
 /// Sets the console's password in the settings as an operator does, by the program itself.
 function setPassword(password) {
   const r = spawnSync(bin, ['web', 'password', '--config', config], { input: `${password}\n` });
@@ -166,7 +179,8 @@ const loggedIn = (page) => page.evaluate(async () => (await (await fetch('/api/s
 async function text(page, sel) { return (await page.textContent(sel) || '').trim(); }
 
 // Serves web/ from disk in place of the daemon's built-in copy (AZT_WEB_DIR): `pages` maps the
-// page's own paths to its files; the modules under js/ are common to every page. Each file goes
+// page's own paths to its files; the modules under js/, the page fragments under pages/ and the
+// style sheets under css/ (the pages loaded when first opened) are common to every page. Each file goes
 // with the daemon's Content-Security-Policy, so that a violation shows here as it would there.
 async function serveWebDir(ctx, dir, pages) {
   const types = { '.html': 'text/html; charset=utf-8', '.css': 'text/css; charset=utf-8', '.js': 'text/javascript; charset=utf-8' };
@@ -174,7 +188,7 @@ async function serveWebDir(ctx, dir, pages) {
   if (!csp) throw new Error('the daemon sent no Content-Security-Policy');
   await ctx.route(`${base}/**`, (route) => {
     const p = new URL(route.request().url()).pathname;
-    const file = pages[p] || (/^\/js\/[a-z_]+\.js$/.test(p) ? p.slice(1) : null);
+    const file = pages[p] || (/^\/(js\/[a-z_]+\.js|pages\/[a-z_]+\.html|css\/[a-z_]+\.css)$/.test(p) ? p.slice(1) : null);
     if (!file) return route.continue();
     return route.fulfill({ status: 200, contentType: types[path.extname(file)], headers: { 'Content-Security-Policy': csp },
       body: fs.readFileSync(path.join(dir, file)) });
@@ -259,6 +273,6 @@ function run(main, cleanUp = () => {}) {
 
 module.exports = {
   DESKTOP, PHONE,
-  setup, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
+  setup, tleWithEpochNow, freePort, sleep, until, useWebPort, api, state, simConfig, setPassword, startDaemon,
   stopDaemon, scenario, scenarioWithShots, skip, loggedIn, text, launch, pageWeight, checkPageErrors, shutDown, summarise, run,
 };

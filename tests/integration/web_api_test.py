@@ -73,17 +73,21 @@ try:
     wait_for("the daemon", lambda: state()["antenna"]["known"])
 
     # Reading is open; the page and its files are served.
-    for route in ["/", "/js/main.js", "/js/bands.js", "/app.css", "/api/state", "/api/config",
-                  "/api/targets", "/api/sky?hours=2", "/api/session", "/api/locator?grid=FN06HE"]:
+    for route in ["/", "/js/main.js", "/js/bands.js", "/app.css", "/css/sky.css", "/pages/radio.html",
+                  "/css/radio.css", "/api/state", "/api/config", "/api/targets", "/api/sky?hours=2",
+                  "/api/session", "/api/locator?grid=FN06HE"]:
         with urllib.request.urlopen(BASE + route, timeout=5) as r:
             check(r.status == 200, f"GET {route} answered {r.status}")
     s = state()
     for key in ["mode", "utc", "antenna", "target", "faults", "moon", "sun", "corrections"]:
         check(key in s, f"state lacks {key}")
-    # The console's modules must come as JavaScript, or the browser refuses to run them.
-    with urllib.request.urlopen(BASE + "/js/main.js", timeout=5) as r:
-        check(r.headers["Content-Type"].startswith("text/javascript"),
-              f"/js/main.js served as {r.headers['Content-Type']}")
+    # The console's modules must come as JavaScript, its style sheets as CSS, or the browser refuses
+    # them (nosniff); the pages loaded when first opened as HTML.
+    for route, kind in [("/js/main.js", "text/javascript"), ("/css/radio.css", "text/css"),
+                        ("/pages/radio.html", "text/html")]:
+        with urllib.request.urlopen(BASE + route, timeout=5) as r:
+            check(r.headers["Content-Type"].startswith(kind),
+                  f"{route} served as {r.headers['Content-Type']}")
     bands = {b["band"]: b for b in request("GET", "/api/targets")[1]["bands"]}
     check(bands.get("144", {}).get("wavelength") == "2 m", f"band 144: {bands.get('144')}")
     check(abs(bands.get("1296", {}).get("freq_mhz", 0) - 1296.1) < 1e-9, "band 1296's frequency")

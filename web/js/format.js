@@ -5,6 +5,13 @@ export function fix(v, n) { let t = v.toFixed(n); if (/^-0(\.0*)?$/.test(t)) t =
 export const deg = (v, n = 2) => (isNum(v) ? `${fix(v, n)}°` : '—');
 export function sdeg(v, n = 2) { if (!isNum(v)) return '—'; const t = fix(v, n); return `${t.startsWith('-') ? t : `+${t}`}°`; }
 export function hz(v) { if (!isNum(v)) return '—'; const r = Math.round(v); return `${r < 0 ? '-' : '+'}${Math.abs(r)} Hz`; }
+// A frequency as radio amateurs read it: MHz, then the Hz in groups of three ("435.297.450").
+export function mhzDots(v) {
+  if (!isNum(v)) return '—';
+  const r = Math.round(Math.abs(v));
+  const khzHz = String(r % 1e6).padStart(6, '0');
+  return `${v < 0 ? '-' : ''}${Math.floor(r / 1e6)}.${khzHz.slice(0, 3)}.${khzHz.slice(3)}`;
+}
 export function parseNum(s) {
   const t = String(s).trim().replace(',', '.');
   if (t === '' || !/^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(t)) return NaN;
@@ -31,7 +38,13 @@ export function ago(s) {
   if (s < 172800) return `${Math.round(s / 3600)} h`;
   return `${Math.round(s / 86400)} d`;
 }
-// target.waiting as one line: "up at 00:47 UTC, in 2 h 13 min", or why it will not be.
+// "in 1 h 05 min", "in 4 min 12 s": the time to an event (AOS, the schedule's next step).
+export function countdown(s) {
+  const t = Math.max(0, Math.round(s));
+  if (t >= 3600) return `in ${Math.floor(t / 3600)} h ${pad(Math.floor((t % 3600) / 60))} min`;
+  return `in ${Math.floor(t / 60)} min ${pad(t % 60)} s`;
+}
+// target.waiting as one line: "up at 00:47 UTC (06:17 local), in 2 h 13 min", or why it will not be.
 // The panel's narrow form (480 px, beside the target's numbers; the clock beside it is UTC):
 // "↑12:38 · 5h51m" (rises at, in), or why not in a few words. The console's waitLine has the whole sentence.
 export function waitShort(w) {
@@ -45,5 +58,21 @@ export function waitLine(w) {
   if (!w.until) return w.reason || 'waiting';
   const s = Math.max(0, isNum(w.in_s) ? w.in_s : 0);
   const h = Math.floor(s / 3600); const m = Math.floor((s % 3600) / 60);
-  return `up at ${String(w.until).slice(11, 16)} UTC, in ${h ? `${h} h ` : ''}${m} min`;
+  return `up at ${utcLocal(w.until)}, in ${h ? `${h} h ` : ''}${m} min`;
+}
+
+// An instant as "18:19 UTC (20:19 local)": the local time is the browser's, left out where it is
+// UTC; `secs` adds the seconds. '—' for what is no time.
+export function utcLocal(iso, secs = false) {
+  const d = new Date(iso);
+  if (iso == null || Number.isNaN(d.getTime())) return '—';
+  const hm = (h, m, s) => `${pad(h)}:${pad(m)}${secs ? `:${pad(s)}` : ''}`;
+  const utc = `${hm(d.getUTCHours(), d.getUTCMinutes(), d.getUTCSeconds())} UTC`;
+  return d.getTimezoneOffset() === 0 ? utc : `${utc} (${hm(d.getHours(), d.getMinutes(), d.getSeconds())} local)`;
+}
+// The local time alone ("20:19"), or '' where local is UTC: for a table's second line.
+export function localHm(iso) {
+  const d = new Date(iso);
+  if (iso == null || Number.isNaN(d.getTime()) || d.getTimezoneOffset() === 0) return '';
+  return `${pad(d.getHours())}:${pad(d.getMinutes())}`;
 }

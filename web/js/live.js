@@ -3,7 +3,7 @@
 
 import { S, targetLabel } from './state.js';
 import { $, h, setText } from './dom.js';
-import { deg, fix, hz, isNum, pad, sameName, sdeg, waitLine } from './format.js';
+import { countdown, deg, fix, hz, isNum, pad, sameName, sdeg, utcLocal, waitLine } from './format.js';
 import { bandList, wavelength } from './bands.js';
 import { drawTrend, TREND_S } from './trend.js';
 import { drawSky } from './sky.js';
@@ -11,18 +11,11 @@ import { markActiveTarget } from './targets.js';
 import { renderStation } from './station.js';
 import { renderCorrectionsAndPosition } from './position.js';
 
-// "in 1 h 05 min", "in 4 min 12 s": the time to AOS.
-function countdown(s) {
-  const t = Math.max(0, Math.round(s));
-  if (t >= 3600) return `in ${Math.floor(t / 3600)} h ${pad(Math.floor((t % 3600) / 60))} min`;
-  return `in ${Math.floor(t / 60)} min ${pad(t % 60)} s`;
-}
-
-// "AOS 12:34 · max 83° · 8 s beyond 10° from 12:40:05 · in 4 min 12 s", or the tracker's phase.
+// "AOS 12:34 UTC (18:04 local) · max 83° · 8 s beyond 10° from 12:40:05 · in 4 min 12 s", or the tracker's phase.
 function passLine(sat, utc) {
   if (!sat.aos) return sat.problem || sat.phase || '—';
   const hhmm = (iso, secs) => String(iso).slice(11, secs ? 19 : 16);
-  const when = sat.phase === 'tracking' ? `LOS ${hhmm(sat.los)}` : `AOS ${hhmm(sat.aos)}`;
+  const when = sat.phase === 'tracking' ? `LOS ${utcLocal(sat.los)}` : `AOS ${utcLocal(sat.aos)}`;
   const loss = sat.planned_loss || {};
   const lost = loss.seconds > 0
     ? `${Math.round(loss.seconds)} s beyond ${fix(loss.beyond_deg, 0)}° from ${hhmm(loss.from, true)}`

@@ -7,35 +7,52 @@ import { drawSky, loadSky } from './sky.js';
 import { loadTargets } from './targets.js';
 import { drawTilt, loadConfig, softwareLine } from './setup.js';
 import { renderStationPage } from './station.js';
+import { wireTime } from './time.js';
+import { loadPage } from './pages.js';
 import { toast } from './toast.js';
 
 export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
 // Pages without a tab of their own (the phone's tab bar has no room): reached from the header's
 // status icons and from Setup, whose tab stays lit on them; the planner from the Moon panel, the
-// pointing scan from the Moon panel, Targets and Sky; the software, settings and account pages
-// from Setup.
+// pointing scan from the Moon panel, Targets and Sky; the software, settings, account and radio
+// pages from Setup; the satellite schedule from Targets.
 export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets', software: 'setup',
-  settings: 'setup', account: 'setup' };
+  settings: 'setup', account: 'setup', radio: 'setup', schedule: 'targets' };
 
-// The pages whose modules are loaded when first opened, so that the console's first load stays
-// light (docs/web-api.md "Measured"): each module's open() and, for those that follow the live
-// state, its render(force), called with every state message while the page is shown.
+// The pages whose modules are loaded when first opened (their markup and style too: pages.js), so
+// that the console's first load stays light (docs/web-api.md "Measured"): each module's open()
+// and, for those that follow the live state, its render(force), called with every state message
+// while the page is shown.
 const LAZY = {
   planner: [() => import('./planner.js'), 'openPlanner'],
   scan: [() => import('./scan.js'), 'openScan', 'renderScan'],
   software: [() => import('./software.js'), 'openSoftware', 'renderForm'],
   settings: [() => import('./settings.js'), 'openSettings'],
   account: [() => import('./settings_account.js'), 'openAccount'],
+  radio: [() => import('./radio.js'), 'openRadio', 'renderRadio'],
+  schedule: [() => import('./schedule.js'), 'openSchedule', 'renderSchedule'],
 };
 const loaded = {};
 async function openLazy(name) {
   const [load, open] = LAZY[name];
   try {
+    await loadPage(name);
     loaded[name] = loaded[name] || await load();
     if (S.screen === name) await loaded[name][open]();
   } catch (e) {
     toast(`The ${name} page could not be loaded: ${e.message}`, 'err');
   }
+}
+// The GPS, Time and Network pages: their modules are loaded at start (the header's icons and
+// Setup's lines need them), their markup when first opened.
+async function openStation(name) {
+  try {
+    await loadPage(name, name === 'time' ? wireTime : null);
+  } catch (e) {
+    toast(`The ${name} page could not be loaded: ${e.message}`, 'err');
+    return;
+  }
+  if (S.screen === name) renderStationPage(name, true);
 }
 // The shown page's render(force), if it has one and its module is loaded.
 export function renderPage(force) {
@@ -60,6 +77,6 @@ export function show(name) {
   if (name === 'setup') softwareLine();
   if (name === 'antenna') drawTilt();
   if (LAZY[name]) openLazy(name);
-  else if (SUBSCREENS[name]) renderStationPage(name, true);
+  else if (SUBSCREENS[name]) openStation(name);
 }
 export function go(name) { if (location.hash === `#${name}`) show(name); else location.hash = name; }

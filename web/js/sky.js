@@ -45,15 +45,7 @@ function drawSkyPaths() {
     });
     out.unshift(sv('path', { class: cls, d, id: labels ? 'sky-moon-path' : 'sky-sun-path' }));
   }
-  if (Array.isArray(sky.pass_path) && sky.pass_path.length) {
-    let d = ''; let up = false;
-    for (const p of sky.pass_path) {
-      if (!isNum(p.el_deg) || p.el_deg < 0) { up = false; continue; }
-      const [x, y] = polarXY(p.az_deg, p.el_deg);
-      d += `${up ? 'L' : 'M'}${x.toFixed(1)} ${y.toFixed(1)}`; up = true;
-    }
-    out.push(sv('path', { class: 'ppath', d, id: 'sky-pass-path' }));
-  }
+  if (Array.isArray(sky.pass_path) && sky.pass_path.length) out.push(...passPath(sky.pass_path));
   skyEls.paths.replaceChildren(...out);
   const srcs = [];
   for (const o of (Array.isArray(sky.now) ? sky.now : [])) {
@@ -64,6 +56,26 @@ function drawSkyPaths() {
     srcs.push(g);
   }
   skyEls.srcs.replaceChildren(...srcs);
+}
+// The tracked satellite's planned pass (before AOS too): its track, and its AOS and LOS marked
+// with their UTC times.
+function passPath(list) {
+  let d = ''; let up = false;
+  const seen = list.filter((p) => isNum(p.el_deg) && p.el_deg >= 0);
+  for (const p of list) {
+    if (!isNum(p.el_deg) || p.el_deg < 0) { up = false; continue; }
+    const [x, y] = polarXY(p.az_deg, p.el_deg);
+    d += `${up ? 'L' : 'M'}${x.toFixed(1)} ${y.toFixed(1)}`; up = true;
+  }
+  const out = [sv('path', { class: 'ppath', d, id: 'sky-pass-path' })];
+  if (!seen.length) return out;
+  for (const [p, word, id] of [[seen[0], 'AOS', 'sky-pass-aos'], [seen[seen.length - 1], 'LOS', 'sky-pass-los']]) {
+    const [x, y] = polarXY(p.az_deg, p.el_deg);
+    const g = sv('g', { class: 'pend', id, transform: `translate(${x.toFixed(1)} ${y.toFixed(1)})` });
+    g.append(sv('circle', { r: 2.4 }), sv('text', { x: 4, y: word === 'AOS' ? -3 : 8 }, `${word} ${String(p.utc).slice(11, 16)}`));
+    out.push(g);
+  }
+  return out;
 }
 export function drawSky(force) {
   const nowMs = performance.now();

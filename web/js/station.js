@@ -5,8 +5,9 @@
 import { S } from './state.js';
 import { $, setText } from './dom.js';
 import { gpsLevel, gpsSummary, renderGps } from './gps.js';
-import { renderTime, timeLine, wireTime } from './time.js';
+import { renderTime, timeLine } from './time.js';
 import { linkOf, netSummary, renderNetwork } from './network.js';
+import { pageReady } from './pages.js';
 
 function setIcon(id, cls, state, title) {
   const b = $(id);
@@ -50,12 +51,21 @@ function renderClock(t) {
   setText('setup-clock', detail ? `${word} · ${detail}` : word);
 }
 
+// Setup's Radio line: the rig's link, whose Doppler, WSJT-X (the Radio page has the rest).
+function radioLine(r, w) {
+  const link = String((r && r.link) || 'off');
+  const rig = link === 'off' ? 'no rig' : link === 'up' ? 'rig up' : link === 'connecting' ? 'rig connecting' : 'rig down';
+  const dop = r && r.doppler && r.doppler !== 'off' ? `${r.doppler} Doppler` : 'Doppler off';
+  return [rig, dop, w && w.listening ? 'WSJT-X listened to' : ''].filter(Boolean).join(' · ');
+}
+
 export function renderStation(st) {
   renderIcons(st);
   renderClock(st.time || null);
   setText('setup-gps', gpsSummary(st.gps));
   setText('setup-net', netSummary(st.network));
-  if (S.screen === 'gps' || S.screen === 'time' || S.screen === 'network') renderStationPage(S.screen, false);
+  setText('setup-radio', radioLine(st.radio, st.wsjtx));
+  if (['gps', 'time', 'network'].includes(S.screen) && pageReady(S.screen)) renderStationPage(S.screen, false);
 }
 
 // The page `name` from the latest state; `force` redraws what is otherwise redrawn on change only.
@@ -70,5 +80,4 @@ export function renderStationPage(name, force) {
 export function wireStation(go) {
   document.querySelectorAll('.sico').forEach((b) => b.addEventListener('click', () => go(b.dataset.go)));
   $('clock-dismiss').addEventListener('click', dismissClockBanner);
-  wireTime();
 }

@@ -2,7 +2,7 @@
 
 import { parkSlotAt, S } from './state.js';
 import { $, h, setText } from './dom.js';
-import { deg, fix, isNum, pad, parseNum, sameName } from './format.js';
+import { deg, fix, isNum, localHm, pad, parseNum, sameName } from './format.js';
 import { toast } from './toast.js';
 import { loadJSON } from './api.js';
 import { act } from './actions.js';
@@ -68,15 +68,17 @@ function renderPasses(sats) {
   const rows = [];
   for (const o of sats) for (const p of (Array.isArray(o.passes) ? o.passes : [])) rows.push({ name: o.name, ...p });
   rows.sort((a, b) => (a.aos < b.aos ? -1 : a.aos > b.aos ? 1 : 0));
-  const hm = (iso) => { const t = new Date(iso); return Number.isNaN(t.getTime()) ? '—' : `${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())}`; };
+  // UTC, and the browser's local time below it where that is not UTC.
+  const when = (iso) => h('td', {}, utcHm(iso), localHm(iso) ? h('small', { class: 'loc', text: `${localHm(iso)} local` }) : null);
   const table = $('sat-passes');
   table.hidden = rows.length === 0;
   table.tBodies[0].replaceChildren(...rows.slice(0, 15).map((r) => h('tr', { class: r.stale ? 'stale' : '' },
-    h('td', { text: r.stale ? `${r.name} (stale elements)` : r.name }), h('td', { text: hm(r.aos) }), h('td', { text: deg(r.aos_az_deg, 0) }),
-    h('td', { text: deg(r.max_el_deg, 0) }), h('td', { text: hm(r.los) }), h('td', { text: deg(r.los_az_deg, 0) }))));
+    h('td', { text: r.stale ? `${r.name} (stale elements)` : r.name }), when(r.aos), h('td', { text: deg(r.aos_az_deg, 0) }),
+    h('td', { text: deg(r.max_el_deg, 0) }), when(r.los), h('td', { text: deg(r.los_az_deg, 0) }))));
 }
+function utcHm(iso) { const t = new Date(iso); return Number.isNaN(t.getTime()) ? '—' : `${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())}`; }
 // The search box's words: a name's part (any case) or a NORAD number (leading zeros or not).
-function matches(o, query) {
+export function matches(o, query) {
   const q = query.trim().toLowerCase();
   if (!q) return true;
   if (/^\d+$/.test(q)) return String(o.norad).replace(/^0+/, '') === q.replace(/^0+/, '') || String(o.name).toLowerCase().includes(q);
@@ -98,8 +100,9 @@ function renderSatellites() {
   box.replaceChildren(...sats.map((o) => {
     const np = o.next_pass;
     const t = np ? new Date(np.aos) : null;
+    const local = np ? localHm(np.aos) : '';
     let info = np && t && !Number.isNaN(t.getTime())
-      ? `AOS ${pad(t.getUTCHours())}:${pad(t.getUTCMinutes())} · max ${deg(np.max_el_deg, 0)}` : 'no pass in 24 h';
+      ? `AOS ${utcHm(np.aos)} UTC${local ? ` (${local} local)` : ''} · max ${deg(np.max_el_deg, 0)}` : 'no pass in 24 h';
     if (isNum(o.el_deg) && o.el_deg >= 0) info = `up now · el ${deg(o.el_deg, 1)}`;
     // The daemon's verdict ([satellites] stale_days, refuse_days): stale passes are marked, and
     // a refused satellite says why it will not be tracked.
