@@ -179,8 +179,8 @@ TEST(RigDopplerCycle, EachLegSaysTheInstantItWasComputedFor) {
   RigctlSession rig;
   connect(rig);
   RigDopplerCycle cycle(config, rig, nullptr);
-  double rig_hz = 0.0;
-  double split_hz = 0.0;
+  double rig_hz = 435.0e6;  // where the operator left the rig
+  double split_hz = 145.0e6;
   cycle_and_answer(cycle, rig, satellite_at(10.0, 2.0), rig_hz, split_hz);
   cycle_and_answer(cycle, rig, satellite_at(10.2, 2.0), rig_hz, split_hz);
   ASSERT_TRUE(cycle.rx() && cycle.tx());
@@ -209,8 +209,8 @@ TEST(RigDopplerCycle, AKnobTurnedJustBeforeADueWriteIsNotWrittenOver) {
   RigctlSession rig;
   connect(rig);
   RigDopplerCycle cycle(config, rig, nullptr);
-  double rig_hz = 0.0;
-  double split_hz = 0.0;
+  double rig_hz = 435.0e6;  // where the operator left the rig
+  double split_hz = 145.0e6;
   cycle_and_answer(cycle, rig, satellite_at(10.0, 2.0), rig_hz, split_hz);
   cycle_and_answer(cycle, rig, satellite_at(10.2, 2.0), rig_hz, split_hz);
   const double turned_hz = 435.850e6 / (1.0 + 2.0 / kLightKmS) - 20000.0;
