@@ -9,7 +9,7 @@ keys UDPServer and UDPServerPort as WSJT-X's Configuration.cpp reads them, MyCal
 it runs with a HOME of its own in a temporary folder.
 
  1  its first heartbeat and its Status messages are decoded (the state's wsjtx.received), from
-    id "WSJT-X", with the Status's T/R period read (the Status read to its later fields)
+    id "WSJT-X", with the Status's T/R period read (Q65's: the Status read to its later fields)
  2  a second heartbeat, NetworkMessage.hpp's 15 s pulse later
  3  none of its datagrams counted malformed, and the daemon runs on
 
@@ -82,8 +82,10 @@ os.makedirs(os.path.join(home, ".config"))
 runtime = os.path.join(TMP, "run")
 os.makedirs(runtime, mode=0o700)
 with open(os.path.join(home, ".config", "WSJT-X.ini"), "w", encoding="utf-8") as f:
+    # Q65, an EME mode whose T/R period WSJT-X puts in its Status (for FT8's fixed 15 s it sends
+    # the "not applicable" quint32 maximum, mainwindow.cpp statusUpdate).
     f.write(f"[Configuration]\nMyCall=W1AW\nMyGrid=FN31PR\nUDPServer=127.0.0.1\n"
-            f"UDPServerPort={UDP}\n")
+            f"UDPServerPort={UDP}\n[Common]\nMode=Q65\n")
 env = {k: v for k, v in os.environ.items() if not k.startswith(("XDG_", "DISPLAY", "QT_"))}
 env.update(HOME=home, XDG_RUNTIME_DIR=runtime)
 started = time.monotonic()
@@ -103,12 +105,17 @@ def seconds_until(condition, limit_s):
     return None
 
 
+def seconds(s):
+    return "never" if s is None else f"{s:.1f} s"
+
+
 first_heartbeat = seconds_until(lambda w: w["received"]["heartbeat"] >= 1, 30)
 first_status = seconds_until(lambda w: w["received"]["status"] >= 1, 30)
 second_heartbeat = seconds_until(lambda w: w["received"]["heartbeat"] >= 2, 50)
 state = wsjtx()
-print(f"WSJT-X under Xvfb: first heartbeat {first_heartbeat} s, first Status {first_status} s, "
-      f"second heartbeat {second_heartbeat} s after its start; received {state['received']}, "
+print(f"WSJT-X under Xvfb: first heartbeat {seconds(first_heartbeat)}, first Status "
+      f"{seconds(first_status)}, second heartbeat {seconds(second_heartbeat)} after its start; "
+      f"received {state['received']}, "
       f"malformed {state['malformed']}, T/R period {state['tr_period_s']} s")
 if first_heartbeat is None:
     print(open(os.path.join(TMP, "wsjtx.log"), encoding="utf-8").read(), file=sys.stderr)
