@@ -109,7 +109,7 @@ json_check "sat: skyfield's look angles" \
   "abs(j['az_deg']-64.06290598896)<1e-6 and abs(j['el_deg']+4.43866229916)<1e-6 and abs(j['range_km']-2899.55251)<1e-4 and abs(j['range_rate_km_s']-6.7753018521)<1e-6" \
   sat iss "${iss[@]}" "${sat_station[@]}" --at 2024-03-01T14:00:00Z --dut1 0.1591558755216056 --json
 json_check "sat: downlink and uplink Doppler" \
-  "abs(j['downlink_hz'] - 437.8e6*(1-j['range_rate_km_s']/299792.458)) < 1e-3 and abs(j['uplink_hz'] - 145.9e6/(1-j['range_rate_km_s']/299792.458)) < 1e-3 and j['downlink_doppler_hz'] < 0" \
+  "abs(j['downlink_hz'] - 437.8e6/(1+j['range_rate_km_s']/299792.458)) < 1e-3 and abs(j['uplink_hz'] - 145.9e6/(1-j['range_rate_km_s']/299792.458)) < 1e-3 and j['downlink_doppler_hz'] < 0" \
   sat 25544 "${iss[@]}" "${sat_station[@]}" --at 2024-03-01T14:00:00Z --downlink-mhz 437.8 --uplink-mhz 145.9 --json
 json_check "sat: a refused entry does not hide the good one" "j['sat'] == 'ISS (ZARYA)'" \
   sat "iss (zarya)" --tle "$root/tests/data/sat/mixed.tle" "${sat_station[@]}" --at 2024-03-01T14:00:00Z --json

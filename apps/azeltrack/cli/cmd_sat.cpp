@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "azt/orbit/element_age.hpp"
+#include "azt/orbit/link_doppler.hpp"
 #include "cli/commands.hpp"
 #include "common/horizon_mask_option.hpp"
 #include "common/sky_setup.hpp"

@@ -15,6 +15,10 @@ nlohmann::json hz_json(const std::optional<WrittenHz>& w) {
   return w ? nlohmann::json(w->hz) : nlohmann::json(nullptr);
 }
 
+nlohmann::json at_json(const std::optional<WrittenHz>& w) {
+  return w ? nlohmann::json(astro::format_iso8601_utc_unix(w->at_unix_s)) : nlohmann::json(nullptr);
+}
+
 nlohmann::json correction_json(const std::optional<WrittenHz>& w) {
   return w ? nlohmann::json(w->correction_hz) : nlohmann::json(nullptr);
 }
@@ -63,17 +67,23 @@ void RigDopplerCycle::run_satellite(const RadioInputs& in) {
     planner_ = std::make_unique<radio::SatelliteDopplerPlanner>(
         t->transmitter, radio::DopplerUpdateRule{config_.step_hz, 1.0});
     planner_norad_ = t->norad;
-    dial_hz_.reset();
+    awaiting_dial_.reset();
   }
   if (main_.link() != radio::RigLink::Up) return;
-  const auto plan =
-      planner_->plan(in.now_s, in.satellite->range_rate_km_s, std::exchange(dial_hz_, {}));
-  if (plan.write_rx) queue_rx(plan.rx_hz, in.unix_s, plan.rx_hz - plan.satellite_downlink_hz);
+  const SatelliteCycle now{in.now_s, in.unix_s, in.satellite->range_rate_km_s};
+  if (t->transmitter.mode == radio::TransponderMode::Fm) return plan_satellite(now, std::nullopt);
+  // Track the knob: read the dial first and decide on its answer (on_event), as Gpredict reads
+  // before it writes (gtk-rig-ctrl.c:1690-1726). Deciding on the last cycle's read instead wrote
+  // over a turn made since, whenever the Doppler made the RX due (every cycle near TCA).
+  if (main_.read_rx()) awaiting_dial_ = now;
+}
+
+void RigDopplerCycle::plan_satellite(const SatelliteCycle& at, std::optional<double> dial_hz) {
+  const auto plan = planner_->plan(at.now_s, at.range_rate_km_s, dial_hz);
+  if (plan.write_rx) queue_rx(plan.rx_hz, at.unix_s, plan.rx_hz - plan.satellite_downlink_hz);
   if (plan.write_tx && plan.tx_hz && plan.satellite_uplink_hz) {
-    queue_tx(*plan.tx_hz, in.unix_s, *plan.tx_hz - *plan.satellite_uplink_hz);
+    queue_tx(*plan.tx_hz, at.unix_s, *plan.tx_hz - *plan.satellite_uplink_hz);
   }
-  // Track the knob: the dial is read every cycle a write does not read it back anyway.
-  if (!plan.write_rx && t->transmitter.mode != radio::TransponderMode::Fm) main_.read_rx();
 }
 
 void RigDopplerCycle::run_eme(const RadioInputs& in) {
@@ -114,7 +124,7 @@ void RigDopplerCycle::eme_tx(const RadioInputs& in, const radio::EchoDoppler& no
 void RigDopplerCycle::on_connected(RigRole role) {
   if (role == RigRole::Main) {
     rx_ = Leg();
-    dial_hz_.reset();
+    awaiting_dial_.reset();  // the read went with the connection
   }
   // The uplink is the main rig's split VFO unless a second rig carries it.
   if (role == RigRole::Uplink || uplink_ == nullptr) {
@@ -140,15 +150,7 @@ void RigDopplerCycle::on_event(RigRole role, const radio::RigEvent& e, double no
       return;
     case RigEventKind::RxRead:
     case RigEventKind::TxRead:
-      if (leg.readback_due) {
-        leg.readback_due = false;
-        if (planner_) {
-          tx_leg ? planner_->tx_written(now_s, e.hz) : planner_->rx_written(now_s, e.hz);
-        }
-      } else if (!tx_leg) {
-        dial_hz_ = e.hz;
-      }
-      return;
+      return on_read(leg, tx_leg, e.hz, now_s);
     case RigEventKind::Refused:
       // A refused write is not on the rig: try again at the next cycle.
       if (e.command == RigCommand::SetFreq || e.command == RigCommand::SetSplitFreq) {
@@ -161,14 +163,27 @@ void RigDopplerCycle::on_event(RigRole role, const radio::RigEvent& e, double no
   }
 }
 
+void RigDopplerCycle::on_read(Leg& leg, bool tx_leg, double hz, double now_s) {
+  if (leg.readback_due) {
+    leg.readback_due = false;
+    if (planner_) tx_leg ? planner_->tx_written(now_s, hz) : planner_->rx_written(now_s, hz);
+  }
+  // Any read of the main VFO is the dial now (a read-back too: the queue merges the two).
+  if (!tx_leg && awaiting_dial_ && planner_) {
+    plan_satellite(*std::exchange(awaiting_dial_, std::nullopt), hz);
+  }
+}
+
 nlohmann::json RigDopplerCycle::to_json() const {
   const std::optional<WrittenHz>& when = rx_.written ? rx_.written : tx_.written;
   return {{"doppler", std::string(doppler_source_name(config_.doppler))},
           {"rx_hz", hz_json(rx_.written)},
           {"tx_hz", hz_json(tx_.written)},
-          {"at", when ? nlohmann::json(astro::format_iso8601_utc_unix(when->at_unix_s))
-                      : nlohmann::json(nullptr)},
+          {"at", at_json(when)},
           {"at_unix_s", when ? nlohmann::json(when->at_unix_s) : nlohmann::json(nullptr)},
+          {"tx_at", at_json(tx_.written)},
+          {"tx_at_unix_s",
+           tx_.written ? nlohmann::json(tx_.written->at_unix_s) : nlohmann::json(nullptr)},
           {"rx_correction_hz", correction_json(rx_.written)},
           {"tx_correction_hz", correction_json(tx_.written)},
           {"problem", problem_.empty() ? nlohmann::json(nullptr) : nlohmann::json(problem_)}};

@@ -11,10 +11,10 @@
 // no_tx_qsy the TX correction is computed once per T/R period for the middle of the next one and
 // written before keying (WSJT-X's rule, TxOncePerPeriod).
 //
-// The state's rx_hz / tx_hz are what a rig acknowledged (RPRT 0 to the set), with `at` the UTC
-// instant they were computed for: the value queued last when the acknowledgement came (the
-// session keeps at most one write queued, and a cycle every 200 ms against a rig that answers in
-// tens of ms leaves nothing to coalesce).
+// The state's rx_hz / tx_hz are what a rig acknowledged (RPRT 0 to the set), each with the UTC
+// instant it was computed for (`at`, `tx_at`: the legs are written on their own): the value queued
+// last when the acknowledgement came (the session keeps at most one write queued, and a cycle every
+// 200 ms against a rig that answers in tens of ms leaves nothing to coalesce).
 
 #include <functional>
 #include <memory>
@@ -74,7 +74,8 @@ class RigDopplerCycle {
   [[nodiscard]] const std::optional<WrittenHz>& tx() const { return tx_.written; }
   /// Why nothing is written now ("" when all is well): no satellite, no transmitter, no DX grid.
   [[nodiscard]] const std::string& problem() const { return problem_; }
-  /// {doppler, rx_hz, tx_hz, at, at_unix_s, rx_correction_hz, tx_correction_hz, problem}
+  /// {doppler, rx_hz, tx_hz, at, at_unix_s (rx_hz's instant, else tx_hz's), tx_at, tx_at_unix_s,
+  /// rx_correction_hz, tx_correction_hz, problem}
   [[nodiscard]] nlohmann::json to_json() const;
 
  private:
@@ -83,7 +84,15 @@ class RigDopplerCycle {
     std::optional<WrittenHz> written;
     bool readback_due = false;  ///< the read after an acknowledged write is the rig's value
   };
+  /// A satellite cycle's moment, kept while its dial read is answered.
+  struct SatelliteCycle {
+    double now_s = 0.0;
+    double unix_s = 0.0;
+    double range_rate_km_s = 0.0;
+  };
   void run_satellite(const RadioInputs& in);
+  void plan_satellite(const SatelliteCycle& at, std::optional<double> dial_hz);
+  void on_read(Leg& leg, bool tx_leg, double hz, double now_s);
   void run_eme(const RadioInputs& in);
   void eme_tx(const RadioInputs& in, const radio::EchoDoppler& now_echo);
   bool queue_rx(double hz, double at_unix_s, double correction_hz);
@@ -96,7 +105,8 @@ class RigDopplerCycle {
   radio::RigctlSession* uplink_;
   Leg rx_;
   Leg tx_;
-  std::optional<double> dial_hz_;  ///< the main VFO as last read (the knob)
+  /// Track the knob: the cycle whose dial read is in flight; it is planned on the answer.
+  std::optional<SatelliteCycle> awaiting_dial_;
   std::string planner_norad_;
   std::unique_ptr<radio::SatelliteDopplerPlanner> planner_;
   radio::TxOncePerPeriod tx_period_;

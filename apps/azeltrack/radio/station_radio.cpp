@@ -58,6 +58,10 @@ std::unique_ptr<linux_os::RigctldLink> StationRadio::make_link(RigRole role,
           [this, role, name](const radio::RigEvent& e) {
             if (e.kind == radio::RigEventKind::Refused) p_.log(name + ": " + e.message);
             cycle_->on_event(role, e, p_.monotonic_s());
+            // An answer may queue writes (the dial read plans the satellite cycle), on either
+            // rig: the answering link sends its own, the other one is told here.
+            if (main_) main_->flush();
+            if (uplink_) uplink_->flush();
           }});
 }
 

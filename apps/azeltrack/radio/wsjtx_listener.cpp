@@ -44,25 +44,39 @@ void WsjtxListener::on_datagram(std::string_view datagram) {
   const auto message = radio::decode_wsjtx_datagram(datagram);
   if (!message) return malformed(message.error().message);
   if (const auto* status = std::get_if<radio::WsjtxStatus>(&message.value())) {
-    heard(status->id);
-    dx_call_ = status->dx_call;
-    if (status->transmitting != transmitting_) {
-      p_.log(std::string("wsjtx: ") + (status->transmitting ? "transmitting" : "receiving"));
-    }
-    transmitting_ = status->transmitting;
-    if (const auto period = radio::tr_period_s(*status)) tr_period_s_ = *period;
-    const std::string grid = status->stations ? status->stations->dx_grid : "";
-    if (grid != dx_grid_) {
-      dx_grid_ = grid;
-      if (p_.config.follow_dx_grid && !grid.empty() && p_.dx_grid) p_.dx_grid(grid);
-    }
-  } else if (const auto* beat = std::get_if<radio::WsjtxHeartbeat>(&message.value())) {
-    heard(beat->id);
-  } else if (const auto* close = std::get_if<radio::WsjtxClose>(&message.value())) {
-    heard(close->id);
-    if (transmitting_) p_.log("wsjtx: closed while transmitting; hold released");
-    transmitting_ = false;
+    return on_status(*status);
   }
+  if (const auto* beat = std::get_if<radio::WsjtxHeartbeat>(&message.value())) {
+    ++received_.heartbeat;
+    return heard(beat->id);
+  }
+  if (const auto* close = std::get_if<radio::WsjtxClose>(&message.value())) {
+    return on_close(*close);
+  }
+  ++received_.other;
+}
+
+void WsjtxListener::on_status(const radio::WsjtxStatus& status) {
+  ++received_.status;
+  heard(status.id);
+  dx_call_ = status.dx_call;
+  if (status.transmitting != transmitting_) {
+    p_.log(std::string("wsjtx: ") + (status.transmitting ? "transmitting" : "receiving"));
+  }
+  transmitting_ = status.transmitting;
+  if (const auto period = radio::tr_period_s(status)) tr_period_s_ = *period;
+  const std::string grid = status.stations ? status.stations->dx_grid : "";
+  if (grid != dx_grid_) {
+    dx_grid_ = grid;
+    if (p_.config.follow_dx_grid && !grid.empty() && p_.dx_grid) p_.dx_grid(grid);
+  }
+}
+
+void WsjtxListener::on_close(const radio::WsjtxClose& close) {
+  ++received_.close;
+  heard(close.id);
+  if (transmitting_) p_.log("wsjtx: closed while transmitting; hold released");
+  transmitting_ = false;
 }
 
 void WsjtxListener::on_oversized(std::size_t bytes) {
@@ -106,6 +120,11 @@ nlohmann::json WsjtxListener::to_json() const {
       {"transmitting", transmitting()},
       {"hold", motion_hold()},
       {"tr_period_s", tr_period_s_ ? json(*tr_period_s_) : json(nullptr)},
+      {"received",
+       {{"heartbeat", received_.heartbeat},
+        {"status", received_.status},
+        {"close", received_.close},
+        {"other", received_.other}}},
       {"malformed", malformed_},
       {"last_malformed", last_malformed_.empty() ? json(nullptr) : json(last_malformed_)}};
 }

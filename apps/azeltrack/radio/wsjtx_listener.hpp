@@ -26,6 +26,7 @@
 
 #include "azt/linux/asio.hpp"
 #include "azt/linux/udp_receiver.hpp"
+#include "azt/radio/wsjtx_message.hpp"
 #include "config/wsjtx_config.hpp"
 
 namespace azt::app {
@@ -60,11 +61,13 @@ class WsjtxListener {
   [[nodiscard]] std::optional<double> tr_period_s() const { return tr_period_s_; }
   [[nodiscard]] std::uint64_t malformed() const { return malformed_; }
   [[nodiscard]] unsigned short port() const { return socket_ ? socket_->port() : 0; }
-  /// {listening, last_heard, id, dx_call, dx_grid, transmitting, hold, tr_period_s, malformed,
-  /// last_malformed}
+  /// {listening, last_heard, id, dx_call, dx_grid, transmitting, hold, tr_period_s, received:
+  /// {heartbeat, status, close, other}, malformed, last_malformed}
   [[nodiscard]] nlohmann::json to_json() const;
 
  private:
+  void on_status(const radio::WsjtxStatus& status);
+  void on_close(const radio::WsjtxClose& close);
   void malformed(const std::string& why);
   void heard(const std::string& id);
 
@@ -77,6 +80,14 @@ class WsjtxListener {
   std::string dx_grid_;
   bool transmitting_ = false;
   std::optional<double> tr_period_s_;
+  /// The datagrams decoded, by type (other: the types recognised and not read, Decode and the
+  /// like).
+  struct Received {
+    std::uint64_t heartbeat = 0;
+    std::uint64_t status = 0;
+    std::uint64_t close = 0;
+    std::uint64_t other = 0;
+  } received_;
   std::uint64_t malformed_ = 0;
   std::string last_malformed_;
   std::optional<double> malformed_logged_at_s_;

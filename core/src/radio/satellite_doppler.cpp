@@ -5,18 +5,6 @@
 
 namespace azt::radio {
 
-double downlink_rx_hz(double satellite_hz, double range_rate_km_s) {
-  return satellite_hz * (1.0 - range_rate_km_s / kSpeedOfLightKmS);
-}
-
-double uplink_tx_hz(double satellite_hz, double range_rate_km_s) {
-  return satellite_hz * (1.0 + range_rate_km_s / kSpeedOfLightKmS);
-}
-
-double satellite_downlink_hz(double rig_rx_hz, double range_rate_km_s) {
-  return rig_rx_hz / (1.0 - range_rate_km_s / kSpeedOfLightKmS);
-}
-
 std::optional<double> paired_uplink_hz(const SatelliteTransmitter& transmitter,
                                        double satellite_downlink_hz) {
   if (!transmitter.uplink_hz) return std::nullopt;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "azt/orbit/link_doppler.hpp"
+
 namespace azt::radio {
 
 bool knob_moved(double dial_hz, double last_written_hz) {
@@ -24,15 +26,15 @@ SatelliteRigPlan SatelliteDopplerPlanner::plan(double now_s, double range_rate_k
   SatelliteRigPlan out;
   out.knob_moved = tracks_knob() && dial_rx_hz && rx_.hz && knob_moved(*dial_rx_hz, *rx_.hz);
   if (out.knob_moved) {
-    satellite_downlink_hz_ = radio::satellite_downlink_hz(*dial_rx_hz, range_rate_km_s);
+    satellite_downlink_hz_ = orbit::satellite_downlink_hz(*dial_rx_hz, range_rate_km_s);
     rx_.hz = *dial_rx_hz;  // the rig is there now: the next knob turn is measured from here
   }
   out.satellite_downlink_hz = satellite_downlink_hz_;
   out.satellite_uplink_hz = paired_uplink_hz(transmitter_, satellite_downlink_hz_);
-  out.rx_hz = downlink_rx_hz(satellite_downlink_hz_, range_rate_km_s);
+  out.rx_hz = orbit::downlink_hz(satellite_downlink_hz_, range_rate_km_s);
   out.write_rx = !out.knob_moved && due(rx_, out.rx_hz, now_s);
   if (out.satellite_uplink_hz) {
-    out.tx_hz = uplink_tx_hz(*out.satellite_uplink_hz, range_rate_km_s);
+    out.tx_hz = orbit::uplink_hz(*out.satellite_uplink_hz, range_rate_km_s);
     out.write_tx = due(tx_, *out.tx_hz, now_s);
   }
   return out;

@@ -4,12 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <optional>
 #include <string>
+
+#include "azt/astro/time_scales.hpp"
 
 namespace azt::app {
 namespace {
 
 using radio::RigctlSession;
+
+constexpr double kLightKmS = 299792.458;
 
 /// A session after `\chk_vfo` answered 0 (plain mode).
 void connect(RigctlSession& s) {
@@ -134,11 +140,92 @@ TEST(RigDopplerCycle, SatelliteFmCorrectsBothLegsAndNeedsItsTransmitter) {
   in.satellite = SatelliteNow{"27607", -5.0};  // approaching: heard higher, sent lower
   cycle.run(in);
   answer_all(rig, cycle, RigRole::Main, rig_hz, split_hz);
-  EXPECT_NEAR(rig_hz, 436.795e6 * (1.0 + 5.0 / radio::kSpeedOfLightKmS), 1.0);
-  EXPECT_NEAR(split_hz, 145.850e6 * (1.0 - 5.0 / radio::kSpeedOfLightKmS), 1.0);
+  EXPECT_NEAR(rig_hz, 436.795e6 / (1.0 - 5.0 / kLightKmS), 1.0);
+  EXPECT_NEAR(split_hz, 145.850e6 / (1.0 + 5.0 / kLightKmS), 1.0);
   ASSERT_TRUE(cycle.tx());
-  EXPECT_NEAR(cycle.tx()->correction_hz, -145.850e6 * 5.0 / radio::kSpeedOfLightKmS, 1.0);
+  EXPECT_NEAR(cycle.tx()->correction_hz, 145.850e6 / (1.0 + 5.0 / kLightKmS) - 145.850e6, 1.0);
   EXPECT_TRUE(cycle.problem().empty());
+}
+
+RadioConfig inverting_transponder() {
+  RadioConfig config;
+  config.doppler = DopplerSource::Satellite;
+  TransmitterConfig fo29;
+  fo29.norad = "24278";
+  fo29.transmitter = {435.850e6, 145.950e6, radio::TransponderMode::LinearInverting};
+  config.transmitters.push_back(fo29);
+  return config;
+}
+
+/// Runs `cycle` at `in` and answers the rig; the lines sent.
+std::string cycle_and_answer(RigDopplerCycle& cycle, RigctlSession& rig, const RadioInputs& in,
+                             double& rig_hz, double& split_hz) {
+  cycle.run(in);
+  return answer_all(rig, cycle, RigRole::Main, rig_hz, split_hz);
+}
+
+RadioInputs satellite_at(double now_s, double range_rate_km_s) {
+  RadioInputs in;
+  in.now_s = now_s;
+  in.unix_s = 1990.0 + now_s;
+  in.satellite = SatelliteNow{"24278", range_rate_km_s};
+  return in;
+}
+
+TEST(RigDopplerCycle, EachLegSaysTheInstantItWasComputedFor) {
+  // The operator turns the dial: the cycle that sees it writes the TX and leaves the RX where it
+  // is, so the two legs on the rig were computed for different instants and the state says both.
+  const RadioConfig config = inverting_transponder();
+  RigctlSession rig;
+  connect(rig);
+  RigDopplerCycle cycle(config, rig, nullptr);
+  double rig_hz = 435.0e6;  // where the operator left the rig
+  double split_hz = 145.0e6;
+  cycle_and_answer(cycle, rig, satellite_at(10.0, 2.0), rig_hz, split_hz);
+  cycle_and_answer(cycle, rig, satellite_at(10.2, 2.0), rig_hz, split_hz);
+  ASSERT_TRUE(cycle.rx() && cycle.tx());
+  const double rx_at_unix_s = cycle.rx()->at_unix_s;
+  rig_hz -= 20000.0;  // the knob
+  std::optional<double> tx_written_at;
+  for (const double now_s : {10.4, 10.6, 10.8}) {
+    const RadioInputs in = satellite_at(now_s, 2.0);
+    if (cycle_and_answer(cycle, rig, in, rig_hz, split_hz).find("I ") != std::string::npos) {
+      tx_written_at = in.unix_s;
+      break;
+    }
+  }
+  ASSERT_TRUE(tx_written_at);
+  const nlohmann::json j = cycle.to_json();
+  EXPECT_DOUBLE_EQ(j["at_unix_s"].get<double>(), rx_at_unix_s);
+  EXPECT_DOUBLE_EQ(j["tx_at_unix_s"].get<double>(), *tx_written_at);
+  EXPECT_EQ(j["tx_at"], astro::format_iso8601_utc_unix(*tx_written_at));
+}
+
+TEST(RigDopplerCycle, AKnobTurnedJustBeforeADueWriteIsNotWrittenOver) {
+  // A second after the last write the RX is due (the Doppler moved 14.5 Hz, over the 10 Hz step)
+  // and the operator has just turned the dial down 20 kHz: the dial is read before anything is
+  // written, so the rig stays at the new place and the inverting uplink rises by as much.
+  const RadioConfig config = inverting_transponder();
+  RigctlSession rig;
+  connect(rig);
+  RigDopplerCycle cycle(config, rig, nullptr);
+  double rig_hz = 435.0e6;  // where the operator left the rig
+  double split_hz = 145.0e6;
+  cycle_and_answer(cycle, rig, satellite_at(10.0, 2.0), rig_hz, split_hz);
+  cycle_and_answer(cycle, rig, satellite_at(10.2, 2.0), rig_hz, split_hz);
+  const double turned_hz = 435.850e6 / (1.0 + 2.0 / kLightKmS) - 20000.0;
+  ASSERT_NEAR(rig_hz, turned_hz + 20000.0, 0.5);
+  rig_hz = std::round(turned_hz);
+  const double rate = 2.0 + 0.01;  // 435.85e6 · 0.01 / c = 14.5 Hz
+  cycle_and_answer(cycle, rig, satellite_at(11.2, rate), rig_hz, split_hz);
+  cycle_and_answer(cycle, rig, satellite_at(11.4, rate), rig_hz, split_hz);
+  EXPECT_NEAR(rig_hz, turned_hz, 20.0);
+  // The place in the passband is the dial heard at the rate of the read, f·(1 + ṙ/c); inverting,
+  // the uplink rises by what that fell (nearly the 20 kHz: less the 14.5 Hz the Doppler moved).
+  const double sat_down_hz = rig_hz * (1.0 + rate / kLightKmS);
+  const double nominal_tx_hz = 145.950e6 / (1.0 - rate / kLightKmS);
+  EXPECT_NEAR(split_hz, (145.950e6 + (435.850e6 - sat_down_hz)) / (1.0 - rate / kLightKmS), 1.0);
+  EXPECT_NEAR(split_hz - nominal_tx_hz, 20000.0 - 14.5, 1.0);
 }
 
 TEST(RigDopplerCycle, ASecondRigCarriesTheUplinkOnItsMainVfo) {

@@ -98,5 +98,23 @@ TEST(WsjtxListener, MalformedDatagramsAreCountedAndLoggedOnceAMinute) {
   EXPECT_TRUE(r.grids.empty());
 }
 
+TEST(WsjtxListener, EachKindOfMessageIsCounted) {
+  // What proves a real WSJT-X is heard (its heartbeats every 15 s, its Status on changes): the
+  // counts in the state, beside the malformed ones.
+  Rig r;
+  r.listener.on_datagram(header(0));  // Heartbeat (ending after the id: schema 2's form)
+  r.listener.on_datagram(status("", false));
+  r.listener.on_datagram(status("", false));
+  r.listener.on_datagram(header(2));  // a Decode: recognised, not read
+  r.listener.on_datagram(header(6));  // Close
+  r.listener.on_datagram("garbage");
+  const nlohmann::json received = r.listener.to_json()["received"];
+  EXPECT_EQ(received["heartbeat"], 1);
+  EXPECT_EQ(received["status"], 2);
+  EXPECT_EQ(received["close"], 1);
+  EXPECT_EQ(received["other"], 1);
+  EXPECT_EQ(r.listener.to_json()["malformed"], 1);
+}
+
 }  // namespace
 }  // namespace azt::app

@@ -12,9 +12,6 @@
 
 namespace azt::orbit {
 
-/// Speed of light, km/s.
-inline constexpr double kLightKmS = 299792.458;
-
 struct LookAngles {
   double az_deg = 0.0;  ///< 0..360, from north through east
   double el_deg = 0.0;
@@ -25,15 +22,5 @@ struct LookAngles {
 /// `r_km`, `v_km_s`: the TEME state at UT1 `ut1`.
 LookAngles look_angles(const std::array<double, 3>& r_km, const std::array<double, 3>& v_km_s,
                        const astro::JulianDate& ut1, const astro::Observer& site);
-
-/// The frequency heard on the ground for a transmitter at `f_hz` moving at `range_rate_km_s`
-/// (first order: f·(1 − ṙ/c); the second-order term is below 1 Hz at 10 GHz for LEO).
-[[nodiscard]] constexpr double downlink_hz(double f_hz, double range_rate_km_s) {
-  return f_hz * (1.0 - range_rate_km_s / kLightKmS);
-}
-/// The frequency to transmit so that the satellite receives `f_hz`.
-[[nodiscard]] constexpr double uplink_hz(double f_hz, double range_rate_km_s) {
-  return f_hz / (1.0 - range_rate_km_s / kLightKmS);
-}
 
 }  // namespace azt::orbit

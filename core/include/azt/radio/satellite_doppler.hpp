@@ -1,12 +1,7 @@
 #pragma once
-// Satellite Doppler for a rig: the first-order (non-relativistic) shift Gpredict uses
-// (csete/gpredict src/gtk-rig-ctrl.c:303-313), with the range rate ṙ in km/s, positive while the
-// satellite recedes, and c = 299792.458 km/s:
-//   heard on the ground     RX = f_down · (1 − ṙ/c)   (receding: lower)
-//   sent from the ground    TX = f_up · (1 + ṙ/c)     (receding: higher, so the satellite hears
-//   f_up)
-// The second-order term is (ṙ/c)² ≈ 5.5e-10 at 7 km/s: 0.24 Hz at 435 MHz, 1.3 Hz at 2.4 GHz,
-// below every rig's tuning step, so the first order is what every tracker sends.
+// Satellite Doppler for a rig: which satellite-frame frequencies the rig's two legs follow. The
+// Doppler itself is the orbit's one formula (azt/orbit/link_doppler.hpp: heard f/(1 + ṙ/c), sent
+// f/(1 − ṙ/c), ṙ positive receding), so the rig and `azeltrack sat` agree to the hertz.
 //
 // Linear transponders: a signal sent at uplink u (satellite frame) comes down at d. The pair
 // keeps the relation of the transponder's passband (Gpredict's track_downlink/track_uplink,
@@ -22,7 +17,6 @@
 
 namespace azt::radio {
 
-inline constexpr double kSpeedOfLightKmS = 299792.458;
 /// The frequency at which step sizes are quoted (the 70 cm satellite band; Gpredict and SatPC32
 /// users quote their steps there).
 inline constexpr double kStepReferenceHz = 435e6;
@@ -41,13 +35,6 @@ struct SatelliteTransmitter {
   std::optional<double> uplink_hz;  ///< none: receive only
   TransponderMode mode = TransponderMode::Fm;
 };
-
-/// The frequency heard on the ground for `satellite_hz` sent by the satellite.
-double downlink_rx_hz(double satellite_hz, double range_rate_km_s);
-/// The frequency to send for the satellite to hear `satellite_hz`.
-double uplink_tx_hz(double satellite_hz, double range_rate_km_s);
-/// The satellite-frame downlink heard at rig frequency `rig_rx_hz` (the inverse of downlink_rx_hz).
-double satellite_downlink_hz(double rig_rx_hz, double range_rate_km_s);
 
 /// The satellite-frame uplink that comes down at `satellite_downlink_hz`: the passband relation
 /// above for linear transponders; the nominal uplink for FM (its channel does not move). nullopt
