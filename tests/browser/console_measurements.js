@@ -11,7 +11,7 @@ const LAZY_MODULES = ['/js/planner.js', '/js/scan.js', '/js/software.js', '/js/s
 async function measureConsole(t) {
   const { browser, base, page } = t;
   // Measurements (not pass/fail): page weight and state-change -> DOM latency. Sessions live in
-  // the daemon's memory, so the restarts above logged the page out (login() is a no-op if not).
+  // the daemon's memory, so the restarts earlier logged the page out (login() is a no-op if not).
   await page.click('#nav-main');
   // The console's first load, in a page of its own: the page, its style sheet and the modules it
   // loads at start (the pages' own modules come when they are first opened).

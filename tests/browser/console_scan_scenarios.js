@@ -94,7 +94,7 @@ async function runScanScenarios(t) {
     }
     // The result: the offsets found, shown; then applied, once. The beam was on the source where
     // the encoders read source + TRUE, and the controller's reading is the encoders' less the
-    // operator's corrections (+0.05° of elevation from the scenario above).
+    // operator's corrections (+0.05° of elevation from the tracking scenarios' +0.01° steps).
     const found = sc.found;
     const was = (await state()).corrections;
     if (Math.abs(found.az_offset_deg - (TRUE_AZ_DEG - was.az_user_deg)) > 0.03 ||

@@ -167,8 +167,9 @@ TEST(HubAxisErrors, MalformedErrorAxesAreRejected) {
 }
 
 TEST(HubCorruption, SingleByteErrorsThroughTheDecoder) {
-  // The same through decode_hub_chunk, on random valid readings, with the seed version beside
-  // it: a seed frame has no guard against these errors, which is why our hub sends CRC frames.
+  // hub_crc8_test.cpp's single-byte errors through decode_hub_chunk, on random valid readings, with
+  // the seed version beside it: a seed frame has no guard against these errors, which is why our
+  // hub sends CRC frames.
   std::mt19937_64 rng(0x5EED);
   int seed_accepted = 0;
   int crc_checked = 0;

@@ -147,7 +147,7 @@ TEST(HubCorruption, SeedStreamAcceptsOnlyWellFormedFrames) {
 TEST(HubCorruption, Crc8StreamRejectsCorruptedFrames) {
   const StreamReport rep = run_stream(0xA27E1, HubFrameVersion::Crc8, HubAccept::Crc8Only, 20000);
   expect_common(rep);
-  // Guaranteed: no frame with a single corrupted byte is accepted (tests above). Two or more
+  // Guaranteed: no frame with a single corrupted byte is accepted (hub_crc8_test.cpp). Two or more
   // corrupted bytes in one frame are caught only with probability 255/256, like any 8-bit check:
   // this seeded stream lets one such frame through in 20000 (reported below), so the bound is on
   // the rate, at least 31 in 32 of the corrupted frames that reach the CRC caught. The jump filter
@@ -170,9 +170,9 @@ TEST(HubCorruption, Crc8StreamWithFivePercentOfFramesCorruptedAcceptsNone) {
 }
 
 TEST(HubCorruption, AnyPolicyOnACrcLinkKeepsTheStreamProperties) {
-  // With Any, corruption can turn a CRC frame into a seed frame (worked example above); in a
-  // random stream it takes a 16/16-bit frame and a zeroed code byte, so it is rare: reported, and
-  // the properties every policy must keep are checked.
+  // With Any, corruption can turn a CRC frame into a seed frame (the worked example in
+  // hub_decoder_test.cpp); in a random stream it takes a 16/16-bit frame and a zeroed code byte, so
+  // it is rare: reported, and the properties every policy must keep are checked.
   const StreamReport rep = run_stream(0xA27E1, HubFrameVersion::Crc8, HubAccept::Any, 20000);
   expect_common(rep);
   RecordProperty("crc8_any_downgraded_to_seed", std::to_string(rep.counters.frames_seed));
