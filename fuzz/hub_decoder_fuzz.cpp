@@ -15,7 +15,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "azt/proto/hub_frame.hpp"
+#include "azt/proto/hub_decoder.hpp"
 
 namespace {
 

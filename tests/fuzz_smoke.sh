@@ -14,7 +14,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/corpus"
 
-# Frames as tests/unit/hub_frame_test.cpp derives them (seed 000 layout, standard COBS).
+# Frames as tests/unit/proto/hub_frame_test.cpp derives them (seed 000 layout, standard COBS).
 seed_frame='\x03\xcc\x04\x02\x08\x01\x00'           # az 12 bits 2048, el 12 bits 1024
 crc_frame='\x03\xcc\x04\x02\x08\x02\x6c\x00'        # the same with its CRC-8/AUTOSAR byte
 sixteen='\x01\x05\x12\x34\xff\xff\x00'              # 16/16 bits: EncBITS nibbles 0

@@ -31,7 +31,7 @@ lines_check() {
   fi
 }
 
-# Frames worked out by hand in tests/unit/hub_frame_test.cpp (seed 000 layout, standard COBS).
+# Frames worked out by hand in tests/unit/proto/hub_frame_test.cpp (seed 000 layout, standard COBS).
 expect_text "seed frame, 12/12 bits" "03 cc 04 02 08 01 00" \
   hub encode --az-bits 12 --el-bits 12 --az-raw 2048 --el-raw 1024
 expect_text "crc frame, 12/12 bits" "03 cc 04 02 08 02 6c 00" \

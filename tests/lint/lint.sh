@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # House style, checked by the test command (docs/architecture.md, "Rules that hold everywhere"):
-# clang-format on every first-party C++ file, clang-tidy (naming, function size, bugprone,
-# performance) on the core and the program.
+# no source file over 500 lines, clang-format on every first-party C++ file, clang-tidy (naming,
+# function size, bugprone, performance) on the core and the program.
 # Usage: lint.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
 src=${1:?usage: lint.sh SOURCE_DIR BUILD_DIR}
 build=${2:?usage: lint.sh SOURCE_DIR BUILD_DIR}
 cd "$src"
-# Citations first: a grep of the tracked files, well under a second.
+# Citations and file lengths first: greps and counts of the tracked files, well under a second.
 "$src/tests/lint/check_citations.sh" "$src"
+"$src/tests/lint/check_file_length.sh" "$src"
 mapfile -t files < <(find core platform apps tests bench fuzz firmware -name '*.cpp' -o -name '*.hpp' | sort)
 [ ${#files[@]} -gt 10 ] || { echo "lint: found only ${#files[@]} files" >&2; exit 1; }
 clang-format --dry-run --Werror "${files[@]}"

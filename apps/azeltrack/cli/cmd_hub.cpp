@@ -5,7 +5,8 @@
 //   hub decode [--hex] [--accept any|seed|crc8] [--await-delimiter]
 //     reads a byte stream on stdin and prints one JSON line per accepted frame, then one line
 //     {"counters":{...},"bytes_read":N,"trailing_bytes":M}.
-// The codec is core/include/azt/proto/hub_frame.hpp; this file only parses options and prints.
+// The codec is core/include/azt/proto/hub_frame.hpp and hub_decoder.hpp; this file only parses
+// options and prints.
 #include <unistd.h>
 
 #include <cerrno>
@@ -18,7 +19,7 @@
 #include <string>
 #include <string_view>
 
-#include "azt/proto/hub_frame.hpp"
+#include "azt/proto/hub_decoder.hpp"
 #include "cli/commands.hpp"
 #include "common/usage_error.hpp"
 

@@ -21,9 +21,12 @@
 #include "config/config_file.hpp"
 #include "config/daemon_config.hpp"
 #include "support/fake_gpio.hpp"
+#include "support/hardware_station.hpp"
 
 namespace azt::app {
 namespace {
+
+using testing::kHardwareStation;
 
 /// An SPI chip on one chip-select: the MCP3008 answers reads, the MCP41010 records frames.
 class SimSpi final : public linux_os::SpiBus {
@@ -67,44 +70,9 @@ class SimI2c final : public linux_os::I2cBus {
   }
 };
 
-const char* const kStation = R"([station]
-grid = "FN06HE"
-[target]
-name = "stop"
-[antenna]
-backend = "hardware"
-[mount.az]
-max_rate_deg_s = 3.0
-[mount.el]
-max_rate_deg_s = 2.0
-[sim.az]
-start_deg = 100.0
-[sim.el]
-start_deg = 10.0
-[hardware.az]
-drive = "relay"
-relay_forward = 5
-relay_reverse = 6
-window_deg = 1.0
-lsb_deg = 0.44
-coast_deg = 0.2
-sensor = "mcp3008"
-adc_device = "/dev/spidev0.1"
-pot_calibration = [0, 0.0, 1023, 450.0]
-open_below_counts = 3
-[hardware.el]
-drive = "pot"
-spi_device = "/dev/spidev0.0"
-wiper_calibration = [0, 0.0, 255, 180.0]
-setpoint_band_deg = 1.5
-sensor = "ads1115"
-adc_device = "/dev/i2c-1"
-pot_calibration = [0, 0.0, 26000, 90.0]
-)";
-
 struct Rig {
   explicit Rig(const std::string& extra = "")
-      : config(daemon_config_from(ConfigFile::parse(kStation + extra, "hw.toml"))),
+      : config(daemon_config_from(ConfigFile::parse(kHardwareStation + extra, "hw.toml"))),
         az(config.sim.az),
         el(config.sim.el) {
     ports.gpio = &gpio;
@@ -343,7 +311,7 @@ sensor = "ads1115"
 adc_device = "/dev/i2c-1"
 pot_calibration = [0, 0.0, 26000, 90.0]
 )";
-  std::string text = kStation;
+  std::string text = kHardwareStation;
   text = text.substr(0, text.find("[hardware.el]")) + el;
   Rig rig;
   rig.config = daemon_config_from(ConfigFile::parse(text, "pp.toml"));
@@ -374,249 +342,6 @@ pot_calibration = [0, 0.0, 26000, 90.0]
     }
   }
   EXPECT_GE(polarity_changes, 3);
-}
-
-// ---- the ADS1115 sensor, tick by tick -------------------------------------------------------
-
-// No wait between polls to configure: nothing waits.
-template <typename P>
-constexpr bool kHasAdcWait = requires(P p) {
-  p.adc_wait;
-};
-static_assert(!kHasAdcWait<HardwarePorts>);
-
-using Lines = std::vector<std::string>;
-
-/// An ADS1115 behind a recording bus: each I2C message is logged ("W 48: 01 c3 83", "R 48: 2").
-/// A Config write starts a conversion of the channel in its MUX bits, which holds that channel's
-/// entry of `codes` as it is then; a Config read says done when `ready`.
-class RecordingAds1115 final : public linux_os::I2cBus {
- public:
-  std::array<int, 4> codes{};
-  bool ready = true;
-  std::string error;
-
-  Result<bool> write(std::uint8_t addr, std::span<const std::uint8_t> bytes) override {
-    std::string line = "W " + hex(addr) + ":";
-    for (const auto b : bytes) line += " " + hex(b);
-    log_.push_back(line);
-    if (!error.empty()) return fail(error);
-    pointer_ = bytes[0];
-    if (pointer_ == 0x01 && bytes.size() == 3) {
-      converted_ = codes.at(((bytes[1] >> 4U) & 0x7U) - 4U);  // MUX 1xx: AINx against GND
-    }
-    return true;
-  }
-  Result<bool> read(std::uint8_t addr, std::span<std::uint8_t> bytes) override {
-    log_.push_back("R " + hex(addr) + ": " + std::to_string(bytes.size()));
-    if (!error.empty()) return fail(error);
-    const auto v = static_cast<std::uint16_t>(pointer_ == 0x01 ? (ready ? 0x8000 : 0) : converted_);
-    bytes[0] = static_cast<std::uint8_t>(v >> 8U);
-    bytes[1] = static_cast<std::uint8_t>(v & 0xFFU);
-    return true;
-  }
-  /// The messages since the last call: one tick's.
-  Lines take() { return std::exchange(log_, {}); }
-
- private:
-  static std::string hex(std::uint8_t b) {
-    const char* digits = "0123456789abcdef";
-    return {digits[b >> 4U], digits[b & 0xFU]};
-  }
-
-  Lines log_;
-  std::uint8_t pointer_ = 0;
-  int converted_ = 0;
-};
-
-/// [hardware.el] of kStation (an ADS1115 at 0x48, channel 0, 0–26000 counts for 0–90°)
-/// unaveraged, its chips recorded.
-struct AdsRig {
-  AdsRig() : el(daemon_config_from(ConfigFile::parse(kStation, "hw.toml")).hardware.el) {
-    el.pot.average_samples = 1;
-    ports.open_i2c = [this](const std::string&) -> Result<std::unique_ptr<linux_os::I2cBus>> {
-      auto bus = std::make_unique<RecordingAds1115>();
-      chips.push_back(bus.get());
-      return std::unique_ptr<linux_os::I2cBus>(std::move(bus));
-    };
-  }
-  /// The elevation's settings for azimuth, on `channel` at `address`.
-  [[nodiscard]] HardwareAxisConfig az(unsigned channel, std::uint8_t address = 0x48) const {
-    HardwareAxisConfig a = el;
-    a.name = "az";
-    a.adc_channel = channel;
-    a.adc_address = address;
-    return a;
-  }
-
-  HardwareAxisConfig el;
-  HardwarePorts ports;
-  std::vector<RecordingAds1115*> chips;
-};
-
-TEST(Ads1115Sensor, AConversionStartedAtOneTickIsReadAtTheNext) {
-  AdsRig rig;
-  auto sensor = open_adc_sensor(rig.el, rig.ports);
-  ASSERT_EQ(rig.chips.size(), 1U);
-  RecordingAds1115& chip = *rig.chips[0];
-  const Lines start = {"W 48: 01 c3 83"};  // AIN0, ±4.096 V, single shot, 128 SPS
-  const Lines poll_fetch_start = {"W 48: 01", "R 48: 2", "W 48: 00", "R 48: 2", "W 48: 01 c3 83"};
-
-  chip.codes[0] = 13000;  // 45°
-  auto first = sensor->read(0.0);
-  ASSERT_TRUE(first.ok()) << first.error().message;
-  EXPECT_FALSE(first.value().has_value()) << "nothing to read at the first tick";
-  EXPECT_EQ(chip.take(), start);
-
-  chip.codes[0] = 26000;  // moved on after tick 0's conversion: in tick 1's, not in this one
-  auto second = sensor->read(0.05);
-  ASSERT_TRUE(second.ok()) << second.error().message;
-  ASSERT_TRUE(second.value().has_value());
-  EXPECT_DOUBLE_EQ(second.value()->deg, 45.0);
-  EXPECT_EQ(chip.take(), poll_fetch_start);
-
-  auto third = sensor->read(0.10);
-  ASSERT_TRUE(third.ok() && third.value().has_value());
-  EXPECT_DOUBLE_EQ(third.value()->deg, 90.0);
-  EXPECT_EQ(chip.take(), poll_fetch_start);
-}
-
-TEST(Ads1115Sensor, NeverReadyIsAnErrorAtTheThirdPollThenItStartsAgain) {
-  AdsRig rig;
-  auto sensor = open_adc_sensor(rig.el, rig.ports);
-  RecordingAds1115& chip = *rig.chips[0];
-  chip.ready = false;
-  chip.codes[0] = 13000;
-  ASSERT_TRUE(sensor->read(0.0).ok());
-  EXPECT_EQ(chip.take().size(), 1U);  // start
-  for (const double t : {0.05, 0.10}) {
-    auto pending = sensor->read(t);
-    ASSERT_TRUE(pending.ok()) << "at " << t << ": " << pending.error().message;
-    EXPECT_FALSE(pending.value().has_value());
-    EXPECT_EQ(chip.take(), (Lines{"W 48: 01", "R 48: 2"})) << "one poll at " << t;
-  }
-  auto lost = sensor->read(0.15);
-  ASSERT_FALSE(lost.ok());
-  EXPECT_EQ(lost.error().message, "ADS1115 at 0x48 channel 0: conversion not done after 3 ticks");
-  EXPECT_EQ(chip.take(), (Lines{"W 48: 01", "R 48: 2"})) << "the Conversion is never read";
-
-  chip.ready = true;
-  auto restart = sensor->read(0.20);
-  ASSERT_TRUE(restart.ok());
-  EXPECT_FALSE(restart.value().has_value());
-  EXPECT_EQ(chip.take(), (Lines{"W 48: 01 c3 83"}));
-  auto back = sensor->read(0.25);
-  ASSERT_TRUE(back.ok() && back.value().has_value());
-  EXPECT_DOUBLE_EQ(back.value()->deg, 45.0);
-}
-
-TEST(Ads1115Sensor, ABusErrorIsReportedAtItsTickAndTheNextStartsAgain) {
-  AdsRig rig;
-  auto sensor = open_adc_sensor(rig.el, rig.ports);
-  RecordingAds1115& chip = *rig.chips[0];
-  chip.codes[0] = 26000;
-  ASSERT_TRUE(sensor->read(0.0).ok());
-  chip.error = "/dev/i2c-1 addr 0x48: Remote I/O error (nothing answers at this address?)";
-  (void)chip.take();
-  auto r = sensor->read(0.05);
-  ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error().message, "ADS1115 at 0x48 channel 0: " + chip.error);
-  EXPECT_EQ(chip.take().size(), 1U) << "stops at the failed pointer write";
-  chip.error.clear();
-  auto restart = sensor->read(0.10);
-  ASSERT_TRUE(restart.ok());
-  EXPECT_FALSE(restart.value().has_value());
-  auto back = sensor->read(0.15);
-  ASSERT_TRUE(back.ok() && back.value().has_value());
-  EXPECT_DOUBLE_EQ(back.value()->deg, 90.0);
-}
-
-TEST(Ads1115Sensor, TwoAxesOnOneChipTakeTurnsAndNeverGetEachOthersChannel) {
-  AdsRig rig;
-  auto az = open_adc_sensor(rig.az(1), rig.ports);  // the backend's order: az, then el
-  auto el = open_adc_sensor(rig.el, rig.ports);
-  ASSERT_EQ(rig.chips.size(), 1U) << "one chip, opened once";
-  RecordingAds1115& chip = *rig.chips[0];
-  chip.codes = {13000, 26000, 0, 0};  // el on AIN0: 45°, az on AIN1: 90°
-  std::vector<std::string> got;       // per tick: which axes had a reading
-  for (int tick = 0; tick < 8; ++tick) {
-    const double t = 0.05 * tick;
-    auto a = az->read(t);
-    auto e = el->read(t);
-    ASSERT_TRUE(a.ok() && e.ok()) << "tick " << tick;
-    if (a.value()) {
-      EXPECT_DOUBLE_EQ(a.value()->deg, 90.0);
-    }
-    if (e.value()) {
-      EXPECT_DOUBLE_EQ(e.value()->deg, 45.0);
-    }
-    got.push_back(std::string(a.value() ? "a" : "") + (e.value() ? "e" : ""));
-    EXPECT_LE(chip.take().size(), 5U) << "tick " << tick;
-  }
-  EXPECT_EQ(got, (Lines{"", "a", "e", "a", "e", "a", "e", "a"}));
-}
-
-TEST(Ads1115Sensor, TwoAxesOnOneChannelAreRefusedAndTwoAddressesAreTwoChips) {
-  AdsRig rig;
-  auto el = open_adc_sensor(rig.el, rig.ports);
-  try {
-    (void)open_adc_sensor(rig.az(0), rig.ports);
-    FAIL() << "two axes on AIN0";
-  } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find("[hardware.az] adc_channel"), std::string::npos)
-        << e.what();
-  }
-  auto az = open_adc_sensor(rig.az(0, 0x49), rig.ports);
-  EXPECT_EQ(rig.chips.size(), 2U);
-}
-
-TEST(HardwareConfig, MistakesNameTheKey) {
-  const auto error_of = [](const std::string& extra) {
-    try {
-      (void)daemon_config_from(ConfigFile::parse(
-          "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"hardware\"\n[hub]\ndevice = "
-          "\"/dev/null\"\n" +
-              extra,
-          "c.toml"));
-    } catch (const UsageError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
-  EXPECT_EQ(error_of(""), "");
-  EXPECT_NE(
-      error_of("[hardware.az]\ndrive = \"relay\"\nrelay_forward = 5\n").find("[hardware.az].drive"),
-      std::string::npos);
-  EXPECT_NE(error_of("[hardware.el]\ndrive = \"pot\"\nspi_device = \"/dev/spidev0.0\"\n")
-                .find("[hardware.el].wiper_calibration"),
-            std::string::npos);
-  EXPECT_NE(error_of("[hardware.az]\nsensor = \"mcp3008\"\nadc_device = \"/dev/spidev0.1\"\n")
-                .find("[hardware.az].pot_calibration"),
-            std::string::npos);
-  EXPECT_NE(error_of("[hardware.az]\nsensor = \"ads1115\"\nadc_device = \"/dev/i2c-1\"\n"
-                     "adc_channel = 4\npot_calibration = [0, 0, 100, 90]\n")
-                .find("[hardware.az].adc_channel"),
-            std::string::npos);
-  EXPECT_NE(error_of("[hardware.az]\ndrive = \"stepper\"\n").find("[hardware.az].drive must be"),
-            std::string::npos);
-  EXPECT_NE(error_of("[gpio]\nestop = 5\n[hardware.az]\ndrive = \"relay\"\nrelay_forward = 5\n"
-                     "relay_reverse = 6\n")
-                .find("same line as [gpio] estop"),
-            std::string::npos);
-  // Numbers are checked before they are narrowed: 4294967297 is not 1 (docs/reliability.md
-  // "Hardening" row 9).
-  const std::string pot =
-      "[hardware.az]\nsensor = \"mcp3008\"\nadc_device = \"/dev/spidev0.1\"\n"
-      "pot_calibration = [0, 0, 1000, 450]\n";
-  EXPECT_EQ(error_of(pot + "open_below_counts = 1\n"), "");
-  EXPECT_NE(
-      error_of(pot + "open_below_counts = 4294967297\n").find("[hardware.az].open_below_counts"),
-      std::string::npos);
-  EXPECT_NE(
-      error_of(pot + "open_above_counts = -4294967295\n").find("[hardware.az].open_above_counts"),
-      std::string::npos);
-  EXPECT_NE(error_of(pot + "average_samples = -1\n").find("[hardware.az].average_samples"),
-            std::string::npos);
 }
 
 }  // namespace

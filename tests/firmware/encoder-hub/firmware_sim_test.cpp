@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "azt/avr/avr_hub.hpp"
-#include "azt/proto/hub_frame.hpp"
+#include "azt/proto/hub_decoder.hpp"
 
 namespace azt::avr {
 namespace {

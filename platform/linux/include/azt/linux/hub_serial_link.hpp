@@ -10,7 +10,7 @@
 #include <string>
 
 #include "azt/linux/asio.hpp"
-#include "azt/proto/hub_frame.hpp"
+#include "azt/proto/hub_decoder.hpp"
 #include "azt/util/result.hpp"
 
 namespace azt::linux_os {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "azt/proto/hub_frame.hpp"
+#include "azt/proto/hub_decoder.hpp"
 #include "azt/sim/sim_antenna.hpp"
 
 namespace azt::sim {

@@ -13,7 +13,7 @@
 #include "azt/control/station_controller.hpp"
 #include "azt/control/station_setup.hpp"
 #include "azt/control/supervisor.hpp"
-#include "azt/proto/hub_frame.hpp"
+#include "azt/proto/hub_decoder.hpp"
 #include "azt/sim/axis_plant.hpp"
 #include "azt/sim/plant_setup.hpp"
 #include "azt/sim/simulated_hub.hpp"

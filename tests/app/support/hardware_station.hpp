@@ -1,0 +1,43 @@
+#pragma once
+// The station the `hardware` backend's tests run (tests/app/antenna/hardware_backend_test.cpp,
+// ads1115_sensor_test.cpp): azimuth on relays read by a pot on an MCP3008 (spidev), elevation by a
+// rotator box whose control pot is an MCP41010 (spidev) read by a pot on an ADS1115 (i2c-dev).
+
+namespace azt::app::testing {
+
+inline constexpr const char* kHardwareStation = R"([station]
+grid = "FN06HE"
+[target]
+name = "stop"
+[antenna]
+backend = "hardware"
+[mount.az]
+max_rate_deg_s = 3.0
+[mount.el]
+max_rate_deg_s = 2.0
+[sim.az]
+start_deg = 100.0
+[sim.el]
+start_deg = 10.0
+[hardware.az]
+drive = "relay"
+relay_forward = 5
+relay_reverse = 6
+window_deg = 1.0
+lsb_deg = 0.44
+coast_deg = 0.2
+sensor = "mcp3008"
+adc_device = "/dev/spidev0.1"
+pot_calibration = [0, 0.0, 1023, 450.0]
+open_below_counts = 3
+[hardware.el]
+drive = "pot"
+spi_device = "/dev/spidev0.0"
+wiper_calibration = [0, 0.0, 255, 180.0]
+setpoint_band_deg = 1.5
+sensor = "ads1115"
+adc_device = "/dev/i2c-1"
+pot_calibration = [0, 0.0, 26000, 90.0]
+)";
+
+}  // namespace azt::app::testing
