@@ -29,7 +29,9 @@ toml::table schedule_item(const json& e, std::size_t i) {
     } else if (key == "preempt" && value.is_string()) {
       t.insert_or_assign("preempt", value.get<std::string>());
     } else {
-      throw ApiError(400, field + "." + key, field + "." + key + ": not a valid schedule key");
+      std::string where = field;
+      where.append(".").append(key);
+      throw ApiError(400, where, where + ": not a valid schedule key");
     }
   }
   if (!t.contains("sat")) throw ApiError(400, field + ".sat", field + ": `sat` is required");

@@ -10,7 +10,7 @@ using json = nlohmann::json;
 
 /// The plan is made again this often: the passes' times drift little, but a day-long plan must
 /// keep reaching a day ahead, and the antenna's place is taken afresh.
-constexpr double kReplanEvery_s = 300.0;
+constexpr double kReplanEveryS = 300.0;
 constexpr double kPlanHours = 24.0;
 
 CommandSource schedule_source() {
@@ -69,7 +69,7 @@ void ScheduleFollower::tick() {
 void ScheduleFollower::start_replan(double unix_s) {
   planning_ = true;
   replan_due_ = false;
-  next_replan_unix_s_ = unix_s + kReplanEvery_s;
+  next_replan_unix_s_ = unix_s + kReplanEveryS;
   // The element sets are copied here, on the loop; the pass searches (a few milliseconds per
   // satellite) run on the worker.
   auto sats = std::make_shared<ScheduledSatellites>(
