@@ -1,8 +1,10 @@
 """What the daemon's integration tests share: pass/fail counting, free ports, the console's HTTP
 API with a bearer token, waiting for a condition, and a rotctld conversation."""
+import atexit
 import http.client
 import json
 import os
+import shutil
 import socket
 import subprocess
 import sys
@@ -36,6 +38,21 @@ class Checks:
     def summary(self, name):
         print(f"{name}: {self.passed} passed, {self.failed} failed")
         return 1 if self.failed else 0
+
+
+
+def stop_at_exit(procs, tmp):
+    """At exit: each process still running is terminated (killed after 5 s), then `tmp` removed."""
+    def cleanup():
+        for p in procs:
+            if p.poll() is None:
+                p.terminate()
+                try:
+                    p.wait(5)
+                except subprocess.TimeoutExpired:
+                    p.kill()
+        shutil.rmtree(tmp, ignore_errors=True)
+    atexit.register(cleanup)
 
 
 def free_port():

@@ -26,11 +26,9 @@ so that near the closest approach, where the daemon writes every 200 ms cycle, t
 before or after still says what the rig holds.
 
 Usage: radio_satellite_test.py AZELTRACK"""
-import atexit
 import datetime
 import math
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -38,7 +36,7 @@ import time
 
 from skyfield.api import EarthSatellite, load, wgs84
 
-from daemon_harness import Checks, free_port, http_json, wait_until
+from daemon_harness import Checks, free_port, http_json, wait_until, stop_at_exit
 
 BIN = os.path.realpath(sys.argv[1])
 HERE = os.path.dirname(os.path.realpath(__file__))
@@ -56,18 +54,7 @@ INVERTING = {"downlink_mhz": 435.850, "uplink_mhz": 145.950, "mode": "linear_inv
 LINEAR = {"downlink_mhz": 435.850, "uplink_mhz": 145.950, "mode": "linear"}
 
 
-def cleanup():
-    for p in procs:
-        if p.poll() is None:
-            p.terminate()
-            try:
-                p.wait(5)
-            except subprocess.TimeoutExpired:
-                p.kill()
-    shutil.rmtree(TMP, ignore_errors=True)
-
-
-atexit.register(cleanup)
+stop_at_exit(procs, TMP)
 
 
 def locator_centre(grid):

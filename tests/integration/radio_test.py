@@ -13,9 +13,7 @@ dummy rig (`rigctld -m 1`), and WSJT-X datagrams built here as QDataStream write
  5  garbage, truncated and oversized datagrams: counted as malformed, the daemon runs on
 
 Usage: radio_test.py AZELTRACK"""
-import atexit
 import os
-import shutil
 import socket
 import struct
 import subprocess
@@ -23,7 +21,8 @@ import sys
 import tempfile
 import time
 
-from daemon_harness import Checks, free_port, http_json, rotctld, station_toml, wait_until
+from daemon_harness import (Checks, free_port, http_json, rotctld, station_toml, stop_at_exit,
+                            wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-radio-")
@@ -32,18 +31,7 @@ procs = []
 DIAL_MHZ = 1296.1  # [sky] band "1296" is 1296.100 MHz: the state's moon figures are at the dial
 
 
-def cleanup():
-    for p in procs:
-        if p.poll() is None:
-            p.terminate()
-            try:
-                p.wait(5)
-            except subprocess.TimeoutExpired:
-                p.kill()
-    shutil.rmtree(TMP, ignore_errors=True)
-
-
-atexit.register(cleanup)
+stop_at_exit(procs, TMP)
 
 
 def start_rigctld(port):

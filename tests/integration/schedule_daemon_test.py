@@ -15,17 +15,15 @@ t0+45 s to t0+80 s, C from t0+165 s), the daemon's clock started 40 s before t0:
  5  a PC program's command holds the schedule
 
 Usage: schedule_daemon_test.py AZELTRACK SCENARIO_DIR"""
-import atexit
 import datetime
 import json
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
 import time
 
-from daemon_harness import Checks, free_port, http_json, rotctld, wait_until
+from daemon_harness import Checks, free_port, http_json, rotctld, wait_until, stop_at_exit
 
 BIN = os.path.realpath(sys.argv[1])
 DATA = os.path.realpath(sys.argv[2])
@@ -35,18 +33,7 @@ check = Checks()
 procs = []
 
 
-def cleanup():
-    for p in procs:
-        if p.poll() is None:
-            p.terminate()
-            try:
-                p.wait(5)
-            except subprocess.TimeoutExpired:
-                p.kill()
-    shutil.rmtree(TMP, ignore_errors=True)
-
-
-atexit.register(cleanup)
+stop_at_exit(procs, TMP)
 
 
 def iso_to_unix(text):

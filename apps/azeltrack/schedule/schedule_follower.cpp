@@ -162,9 +162,9 @@ void ScheduleFollower::follow(const schedule::PlanStep& step) {
   power_on();
   const schedule::Priority* p = priority_of(step);
   if (p == nullptr) return;
-  if (p_.commands.tracking_satellite() && p_.commands.commander() == kSourceName) {
-    const json followed = p_.satellites.status(p_.unix_s());
-    if (followed.is_object() && followed.value("norad", "") == p->norad) return;
+  if (p_.commands.tracking_satellite() && p_.commands.commander() == kSourceName &&
+      p_.satellites.followed_norad() == p->norad) {
+    return;
   }
   command(SatelliteTarget{p->norad});
 }

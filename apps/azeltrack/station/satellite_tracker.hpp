@@ -50,6 +50,8 @@ class SatelliteTracker {
   /// could choose the other wrap side and swing the antenna), and the next uses the new place.
   void set_site(const astro::Observer& site);
   [[nodiscard]] bool following() const { return following_.has_value(); }
+  /// The NORAD number of the followed satellite ("" when none).
+  [[nodiscard]] std::string followed_norad() const { return following_.value_or(""); }
 
   /// The demand at `unix_s`: the planned mount position (pre-positioning before AOS), or
   /// nothing to do (hold) when no pass is found. `rate` gets the plan's rate for feed-forward.
