@@ -17,8 +17,8 @@ import tempfile
 import threading
 import time
 
-from daemon_harness import (FIXED_UTC, Checks, cross_scan_of_a_source, free_port, http_json,
-                            station_toml, wait_until)
+from daemon_harness import (FIXED_UTC, START_NEAR_SCAN_SOURCE, Checks, cross_scan_of_a_source,
+                            free_port, http_json, station_toml, wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-scan-")
@@ -28,7 +28,7 @@ TRUE_AZ, TRUE_EL, BEAM = 0.4, -0.25, 2.0
 web, udp_port = free_port(), free_port()
 config = os.path.join(TMP, "scan.toml")
 with open(config, "w", encoding="utf-8") as f:
-    f.write(station_toml(web_port=web, mount_rate_deg_s=4.0))
+    f.write(station_toml(web_port=web, mount_rate_deg_s=4.0) + START_NEAR_SCAN_SOURCE)
     f.write(f'[receiver]\nsource = "udp"\nport = {udp_port}\nstale_s = 2.0\n')
 token = subprocess.run([BIN, "web", "token", "--config", config], check=True,
                        capture_output=True).stdout.decode().strip()

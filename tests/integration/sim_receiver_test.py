@@ -15,8 +15,8 @@ import sys
 import tempfile
 import time
 
-from daemon_harness import (FIXED_UTC, Checks, cross_scan_of_a_source, free_port, http_json,
-                            station_toml, wait_until)
+from daemon_harness import (FIXED_UTC, START_NEAR_SCAN_SOURCE, Checks, cross_scan_of_a_source,
+                            free_port, http_json, station_toml, wait_until)
 
 BIN = os.path.realpath(sys.argv[1])
 TMP = tempfile.mkdtemp(prefix="azt-simrx-")
@@ -26,7 +26,7 @@ ERR_AZ, ERR_EL, BEAM = 0.4, -0.25, 2.0
 web = free_port()
 config = os.path.join(TMP, "simrx.toml")
 with open(config, "w", encoding="utf-8") as f:
-    f.write(station_toml(web_port=web, mount_rate_deg_s=4.0))
+    f.write(station_toml(web_port=web, mount_rate_deg_s=4.0) + START_NEAR_SCAN_SOURCE)
     f.write('[receiver]\nsource = "sim"\n')
     f.write(f"[sim.mount_errors]\naz_offset_deg = {ERR_AZ}\nel_offset_deg = {ERR_EL}\n")
     # A 25 m dish: the weakest catalogue source then rises some 8 dB over the noise, so the
