@@ -10,6 +10,7 @@ cd "$src"
 # Citations and file lengths first: greps and counts of the tracked files, well under a second.
 "$src/tests/lint/check_citations.sh" "$src"
 "$src/tests/lint/check_file_length.sh" "$src"
+"$src/tests/lint/check_kind_switches.sh" "$src"
 mapfile -t files < <(find core platform apps tests bench fuzz firmware -name '*.cpp' -o -name '*.hpp' | sort)
 [ ${#files[@]} -gt 10 ] || { echo "lint: found only ${#files[@]} files" >&2; exit 1; }
 clang-format --dry-run --Werror "${files[@]}"

@@ -1,5 +1,7 @@
 #include "antenna/axis_devices.hpp"
 
+#include <stdexcept>
+
 #include "azt/linux/axis_drives.hpp"
 #include "azt/linux/pwm_hbridge.hpp"
 #include "common/usage_error.hpp"
@@ -52,25 +54,31 @@ HardwarePorts HardwarePorts::linux_devices(linux_os::GpioProvider* gpio) {
   return p;
 }
 
-std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& a, const PwmConfig& pwm,
-                                                  HardwarePorts& ports) {
-  if (a.drive == AxisDriveKind::Relay) {
-    const bool pp = a.relay_power.has_value();
-    auto first = output_line(ports, pp ? *a.relay_power : *a.relay_forward);
-    auto second = output_line(ports, pp ? *a.relay_polarity : *a.relay_reverse);
-    std::optional<control::PowerPolarityConfig> power_polarity;
-    if (pp)
-      power_polarity = control::PowerPolarityConfig{a.relay.reversal_dead_s, a.polarity_settle_s};
-    return linux_os::make_relay_lines_drive(
-        std::move(first), std::move(second), power_polarity,
-        pp ? "relays (power + polarity)" : "relays (forward/reverse)");
-  }
-  if (a.drive == AxisDriveKind::Pot) {
-    auto bus = ports.open_spi(a.spi_device, a.spi_hz);
-    if (!bus) throw UsageError(a.key("spi_device") + ": " + bus.error().message);
-    return linux_os::make_mcp41010_drive(std::move(bus).value(), a.wiper,
-                                         "MCP41010 on " + a.spi_device);
-  }
+namespace {
+
+std::unique_ptr<ports::AxisDrive> open_relay_drive(const HardwareAxisConfig& a,
+                                                   HardwarePorts& ports) {
+  const bool pp = a.relay_power.has_value();
+  auto first = output_line(ports, pp ? *a.relay_power : *a.relay_forward);
+  auto second = output_line(ports, pp ? *a.relay_polarity : *a.relay_reverse);
+  std::optional<control::PowerPolarityConfig> power_polarity;
+  if (pp)
+    power_polarity = control::PowerPolarityConfig{a.relay.reversal_dead_s, a.polarity_settle_s};
+  return linux_os::make_relay_lines_drive(
+      std::move(first), std::move(second), power_polarity,
+      pp ? "relays (power + polarity)" : "relays (forward/reverse)");
+}
+
+std::unique_ptr<ports::AxisDrive> open_pot_drive(const HardwareAxisConfig& a,
+                                                 HardwarePorts& ports) {
+  auto bus = ports.open_spi(a.spi_device, a.spi_hz);
+  if (!bus) throw UsageError(a.key("spi_device") + ": " + bus.error().message);
+  return linux_os::make_mcp41010_drive(std::move(bus).value(), a.wiper,
+                                       "MCP41010 on " + a.spi_device);
+}
+
+std::unique_ptr<ports::AxisDrive> open_pwm_drive(const HardwareAxisConfig& a, const PwmConfig& pwm,
+                                                 HardwarePorts& ports) {
   auto bridge = linux_os::PwmHBridge::open(pwm.of(a.name));
   if (!bridge) {
     throw UsageError(std::string("[pwm] ") + (a.name == "az" ? "azimuth" : "elevation") + ": " +
@@ -90,16 +98,37 @@ std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& a, c
       a.enable ? "IBT-2 on sysfs PWM, enables on GPIO" : "IBT-2 on sysfs PWM");
 }
 
+}  // namespace
+
+std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& a, const PwmConfig& pwm,
+                                                  HardwarePorts& ports) {
+  switch (a.drive) {
+    case AxisDriveKind::Relay:
+      return open_relay_drive(a, ports);
+    case AxisDriveKind::Pot:
+      return open_pot_drive(a, ports);
+    case AxisDriveKind::Pwm:
+      return open_pwm_drive(a, pwm, ports);
+  }
+  throw std::logic_error("an axis drive of no known kind");
+}
+
 std::unique_ptr<ports::AxisSensor> open_adc_sensor(const HardwareAxisConfig& a,
                                                    HardwarePorts& ports) {
   const std::string what = a.name + " pot (" + std::string(name_of(kAxisSensorKinds, a.sensor)) +
                            " " + a.adc_device + " channel " + std::to_string(a.adc_channel) + ")";
-  if (a.sensor == AxisSensorKind::Mcp3008) {
-    auto bus = ports.open_spi(a.adc_device, 1'000'000);
-    if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
-    return linux_os::make_mcp3008_pot_sensor(std::move(bus).value(), a.adc_channel, a.pot, what);
+  switch (a.sensor) {
+    case AxisSensorKind::Mcp3008: {
+      auto bus = ports.open_spi(a.adc_device, 1'000'000);
+      if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
+      return linux_os::make_mcp3008_pot_sensor(std::move(bus).value(), a.adc_channel, a.pot, what);
+    }
+    case AxisSensorKind::Ads1115:
+      return linux_os::make_ads1115_pot_sensor(ads1115_chip(a, ports), a.adc_channel, a.pot, what);
+    case AxisSensorKind::Hub:
+      break;
   }
-  return linux_os::make_ads1115_pot_sensor(ads1115_chip(a, ports), a.adc_channel, a.pot, what);
+  throw std::logic_error("the EncoderHub is not an ADC: " + what);
 }
 
 }  // namespace azt::app

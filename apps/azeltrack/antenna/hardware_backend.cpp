@@ -15,12 +15,18 @@ namespace {
 
 control::AxisDriveConfig drive_config(const HardwareAxisConfig& a) {
   control::AxisDriveConfig d;
-  if (a.drive == AxisDriveKind::Relay) {
-    d.kind = control::DriveKind::Relay;
-    d.relay = a.relay;
-  } else if (a.drive == AxisDriveKind::Pot) {
-    d.kind = control::DriveKind::Setpoint;
-    d.setpoint_band_deg = a.setpoint_band_deg;
+  switch (a.drive) {
+    case AxisDriveKind::Pwm:
+      d.kind = control::DriveKind::Pwm;
+      break;
+    case AxisDriveKind::Relay:
+      d.kind = control::DriveKind::Relay;
+      d.relay = a.relay;
+      break;
+    case AxisDriveKind::Pot:
+      d.kind = control::DriveKind::Setpoint;
+      d.setpoint_band_deg = a.setpoint_band_deg;
+      break;
   }
   return d;
 }
@@ -29,7 +35,7 @@ control::StationControlConfig control_config(const DaemonConfig& config) {
   control::StationControlConfig c = config.station.control_config();
   c.az_drive = drive_config(config.hardware.az);
   c.el_drive = drive_config(config.hardware.el);
-  c.az_absolute = config.hardware.az.sensor != AxisSensorKind::Hub;
+  c.az_absolute = !read_by_hub(config.hardware.az.sensor);
   return c;
 }
 
@@ -40,17 +46,15 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
   const std::array<const HardwareAxisConfig*, 2> axes{&config.hardware.az, &config.hardware.el};
   ports::StationPorts p;
   if (config.hardware.uses_hub()) {
-    linux_os::HubSensorsConfig hub{
-        config.hub,
-        {config.mount.az.encoder_bits, config.mount.el.encoder_bits},
-        {axes[0]->sensor == AxisSensorKind::Hub, axes[1]->sensor == AxisSensorKind::Hub}};
+    linux_os::HubSensorsConfig hub{config.hub,
+                                   {config.mount.az.encoder_bits, config.mount.el.encoder_bits},
+                                   {read_by_hub(axes[0]->sensor), read_by_hub(axes[1]->sensor)}};
     auto sensors = linux_os::open_hub_sensors(io, hub);
     if (!sensors) throw UsageError("[hub] device: " + sensors.error().message);
     p.sensors = std::move(sensors).value();
   }
   for (std::size_t i = 0; i < 2; ++i) {
-    if (axes.at(i)->sensor != AxisSensorKind::Hub)
-      p.sensors.at(i) = open_adc_sensor(*axes.at(i), devices);
+    if (!read_by_hub(axes.at(i)->sensor)) p.sensors.at(i) = open_adc_sensor(*axes.at(i), devices);
   }
   for (std::size_t i = 0; i < 2; ++i)
     p.drives.at(i) = open_axis_drive(*axes.at(i), config.pwm, devices);

@@ -1,6 +1,8 @@
 #include "config/hardware_config.hpp"
 
 #include <array>
+#include <stdexcept>
+#include <string_view>
 
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
@@ -60,21 +62,36 @@ void read_pot_drive(const ConfigSection& s, HardwareAxisConfig& a) {
   a.setpoint_band_deg = s.number("setpoint_band_deg").value_or(a.setpoint_band_deg);
 }
 
-void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
-  a.adc_device = s.text("adc_device").value_or("");
-  if (a.adc_device.empty()) {
-    s.fail("adc_device", a.sensor == AxisSensorKind::Mcp3008
-                             ? "is needed for sensor = \"mcp3008\" (/dev/spidevB.C)"
-                             : "is needed for sensor = \"ads1115\" (/dev/i2c-N)");
+/// What reading a pot through each converter needs.
+struct AdcKind {
+  std::string_view device_needed;
+  unsigned channels = 0;
+  control::AdcSpec spec;
+};
+
+AdcKind adc_kind(AxisSensorKind sensor) {
+  // The ADS1115 at ±4.096 V reads a 3.3 V pot in 15 bits; the MCP3008 is 10 bits of its VREF.
+  switch (sensor) {
+    case AxisSensorKind::Mcp3008:
+      return {"is needed for sensor = \"mcp3008\" (/dev/spidevB.C)", 8, {10, 3.3}};
+    case AxisSensorKind::Ads1115:
+      return {"is needed for sensor = \"ads1115\" (/dev/i2c-N)", 4, {15, 4.096}};
+    case AxisSensorKind::Hub:
+      break;
   }
-  const unsigned channels = a.sensor == AxisSensorKind::Mcp3008 ? 8 : 4;
+  throw std::logic_error("the EncoderHub is not an ADC");
+}
+
+void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
+  const AdcKind kind = adc_kind(a.sensor);
+  a.adc_device = s.text("adc_device").value_or("");
+  if (a.adc_device.empty()) s.fail("adc_device", std::string(kind.device_needed));
   const auto ch = s.integer("adc_channel").value_or(0);  // 0 to 7 (the schema)
-  if (ch >= channels) s.fail("adc_channel", "must be 0 to " + std::to_string(channels - 1));
+  if (ch >= kind.channels)
+    s.fail("adc_channel", "must be 0 to " + std::to_string(kind.channels - 1));
   a.adc_channel = static_cast<unsigned>(ch);
   a.adc_address = static_cast<std::uint8_t>(s.integer("adc_address").value_or(0x48));
-  // The ADS1115 at ±4.096 V reads a 3.3 V pot in 15 bits; the MCP3008 is 10 bits of its VREF.
-  a.pot.adc =
-      a.sensor == AxisSensorKind::Mcp3008 ? control::AdcSpec{10, 3.3} : control::AdcSpec{15, 4.096};
+  a.pot.adc = kind.spec;
   const auto p = two_points(s, "pot_calibration");
   if (!p) {
     s.fail("pot_calibration",
@@ -98,6 +115,10 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
     s.fail("pot_calibration", ok.error().message);
 }
 
+void refuse_enable(const ConfigSection& s, const HardwareAxisConfig& a) {
+  if (a.enable) s.fail("enable", "is for drive = \"pwm\" (the IBT-2's enables)");
+}
+
 HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
                              const std::string& chip) {
   HardwareAxisConfig a;
@@ -105,11 +126,19 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
   a.drive = s.choice("drive", kAxisDriveKinds, AxisDriveKind::Pwm);
   a.sensor = s.choice("sensor", kAxisSensorKinds, AxisSensorKind::Hub);
   a.enable = read_gpio_line(s, "enable", chip, false);
-  if (a.enable && a.drive != AxisDriveKind::Pwm)
-    s.fail("enable", "is for drive = \"pwm\" (the IBT-2's enables)");
-  if (a.drive == AxisDriveKind::Relay) read_relay(s, a, chip);
-  if (a.drive == AxisDriveKind::Pot) read_pot_drive(s, a);
-  if (a.sensor != AxisSensorKind::Hub) read_adc(s, a);
+  switch (a.drive) {
+    case AxisDriveKind::Pwm:
+      break;
+    case AxisDriveKind::Relay:
+      refuse_enable(s, a);
+      read_relay(s, a, chip);
+      break;
+    case AxisDriveKind::Pot:
+      refuse_enable(s, a);
+      read_pot_drive(s, a);
+      break;
+  }
+  if (!read_by_hub(a.sensor)) read_adc(s, a);
   return a;
 }
 

@@ -24,6 +24,19 @@ enum class AxisDriveKind { Pwm, Relay, Pot };
 /// How an axis is read: the EncoderHub on [hub], or a potentiometer on an MCP3008 or ADS1115.
 enum class AxisSensorKind { Hub, Mcp3008, Ads1115 };
 
+/// Whether the axis is read through the EncoderHub rather than by the Pi itself. A switch, so that
+/// a new kind of sensor is a compile error here rather than a pot assumed.
+constexpr bool read_by_hub(AxisSensorKind sensor) {
+  switch (sensor) {
+    case AxisSensorKind::Hub:
+      return true;
+    case AxisSensorKind::Mcp3008:
+    case AxisSensorKind::Ads1115:
+      return false;
+  }
+  return false;
+}
+
 inline constexpr ConfigChoices<AxisDriveKind, 3> kAxisDriveKinds{
     {{"pwm", AxisDriveKind::Pwm}, {"relay", AxisDriveKind::Relay}, {"pot", AxisDriveKind::Pot}}};
 inline constexpr ConfigChoices<AxisSensorKind, 3> kAxisSensorKinds{
@@ -86,9 +99,7 @@ struct MotorPowerConfig {
 struct HardwareConfig {
   HardwareAxisConfig az = default_axis("az");
   HardwareAxisConfig el = default_axis("el");
-  [[nodiscard]] bool uses_hub() const {
-    return az.sensor == AxisSensorKind::Hub || el.sensor == AxisSensorKind::Hub;
-  }
+  [[nodiscard]] bool uses_hub() const { return read_by_hub(az.sensor) || read_by_hub(el.sensor); }
   std::optional<MotorPowerConfig> power;
   [[nodiscard]] bool uses_gpio() const {
     return !az.gpio_lines().empty() || !el.gpio_lines().empty() || (power && !power->simulated());

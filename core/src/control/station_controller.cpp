@@ -45,6 +45,17 @@ std::string_view to_string(DriveKind kind) {
   return "?";
 }
 
+bool sends_setpoint(DriveKind kind) {
+  switch (kind) {
+    case DriveKind::Pwm:
+    case DriveKind::Relay:
+      return false;
+    case DriveKind::Setpoint:
+      return true;
+  }
+  return false;
+}
+
 double StationController::Axis::duty() const {
   switch (drive.kind) {
     case DriveKind::Relay:
@@ -58,13 +69,20 @@ double StationController::Axis::duty() const {
 }
 
 bool StationController::Axis::moving() const {
-  return drive.kind == DriveKind::Pwm ? controller.moving() : duty() != 0.0;
+  switch (drive.kind) {
+    case DriveKind::Pwm:
+      return controller.moving();  // through its soft stop, while the duty winds down
+    case DriveKind::Relay:
+    case DriveKind::Setpoint:
+      return duty() != 0.0;
+  }
+  return duty() != 0.0;
 }
 
 void StationController::Axis::halt(double now_s) {
   controller.halt();
   relay.halt(now_s);
-  if (drive.kind == DriveKind::Setpoint) {
+  if (sends_setpoint(drive.kind)) {
     setpoint_deg = mount_deg;
     setpoint_duty = 0.0;
   }
@@ -155,8 +173,8 @@ Duties StationController::tick(double now_s, const Demand& demand, const AzEl& r
 
 Duties StationController::duties() const {
   Duties d{az_.duty(), el_.duty(), std::nullopt, std::nullopt};
-  if (az_.drive.kind == DriveKind::Setpoint) d.az_setpoint_deg = az_.setpoint_deg;
-  if (el_.drive.kind == DriveKind::Setpoint) d.el_setpoint_deg = el_.setpoint_deg;
+  if (sends_setpoint(az_.drive.kind)) d.az_setpoint_deg = az_.setpoint_deg;
+  if (sends_setpoint(el_.drive.kind)) d.el_setpoint_deg = el_.setpoint_deg;
   return d;
 }
 
@@ -166,11 +184,12 @@ double StationController::drive(Axis& axis, double now_s, std::optional<double> 
     // Holding: a PWM move finishes its soft stop at the present position. A setpoint axis is
     // sent where it stands when the hold begins (a STOP mid-move stops the box there), then
     // keeps that setpoint: re-sending the moving reading every tick would chase the coast.
-    if (axis.drive.kind == DriveKind::Setpoint && (!axis.holding || !axis.setpoint_deg)) {
+    const bool setpoint = sends_setpoint(axis.drive.kind);
+    if (setpoint && (!axis.holding || !axis.setpoint_deg)) {
       axis.setpoint_deg = axis.mount_deg;
     }
     axis.holding = true;
-    target_deg = axis.drive.kind == DriveKind::Setpoint ? *axis.setpoint_deg : axis.mount_deg;
+    target_deg = setpoint ? *axis.setpoint_deg : axis.mount_deg;
     rate_deg_s = 0.0;
   } else {
     axis.holding = false;
@@ -293,7 +312,14 @@ AxisStatus StationController::status(const Axis& axis) {
 }
 
 std::uint64_t StationController::starts(const Axis& axis) {
-  return axis.drive.kind == DriveKind::Relay ? axis.relay.starts() : axis.controller.starts();
+  switch (axis.drive.kind) {
+    case DriveKind::Relay:
+      return axis.relay.starts();
+    case DriveKind::Pwm:
+    case DriveKind::Setpoint:
+      return axis.controller.starts();
+  }
+  return axis.controller.starts();
 }
 
 void StationController::emergency_stop(double now_s, std::string_view reason) {

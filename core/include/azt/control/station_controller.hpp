@@ -25,6 +25,8 @@ namespace azt::control {
 enum class DriveKind : std::uint8_t { Pwm, Relay, Setpoint };
 
 std::string_view to_string(DriveKind kind);
+/// Whether the drive is sent an angle (the box closes the loop) rather than a duty.
+bool sends_setpoint(DriveKind kind);
 
 struct AxisDriveConfig {
   DriveKind kind = DriveKind::Pwm;
