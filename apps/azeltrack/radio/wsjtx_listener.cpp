@@ -5,6 +5,7 @@
 
 #include "azt/astro/time_scales.hpp"
 #include "azt/radio/wsjtx_message.hpp"
+#include "azt/radio/wsjtx_tr_period.hpp"
 
 namespace azt::app {
 namespace {
@@ -64,7 +65,9 @@ void WsjtxListener::on_status(const radio::WsjtxStatus& status) {
     p_.log(std::string("wsjtx: ") + (status.transmitting ? "transmitting" : "receiving"));
   }
   transmitting_ = status.transmitting;
-  if (const auto period = radio::tr_period_s(status)) tr_period_s_ = *period;
+  // Each Status says the period now: given, or the mode's own (FT8's 15 s is never sent), or
+  // unknown after a change to a mode whose period WSJT-X does not say.
+  tr_period_s_ = radio::tr_period_s(status);
   const std::string grid = status.stations ? status.stations->dx_grid : "";
   if (grid != dx_grid_) {
     dx_grid_ = grid;

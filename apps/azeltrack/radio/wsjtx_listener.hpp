@@ -13,7 +13,9 @@
 //
 // move_in_last_s (K3NG #62's "move only at the end of the period"): with a T/R period known,
 // motion is held except in the last move_in_last_s seconds of each period (periods start at
-// multiples of the period in UTC seconds, as WSJT-X counts them).
+// multiples of the period in UTC seconds, as WSJT-X counts them). The period is the Status's, or
+// the one WSJT-X fixes for its mode when the Status does not say it (FT8, FT4:
+// azt/radio/wsjtx_tr_period.hpp).
 
 #include <cstdint>
 #include <functional>
