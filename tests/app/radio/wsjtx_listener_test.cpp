@@ -76,8 +76,13 @@ TEST(WsjtxListener, TransmittingHoldsUntilAStatusACloseOrSilence) {
   Rig r;
   r.listener.on_datagram(status("", true));
   EXPECT_TRUE(r.listener.motion_hold());
+  EXPECT_EQ(r.listener.to_json()["transmitting_since_unix_s"], 1.7e9 + 100.0);
+  r.now_s += 5.0;
+  r.listener.on_datagram(status("", true));  // still: the start is the first Status's receipt
+  EXPECT_EQ(r.listener.to_json()["transmitting_since_unix_s"], 1.7e9 + 100.0);
   r.listener.on_datagram(status("", false));
   EXPECT_FALSE(r.listener.motion_hold());
+  EXPECT_TRUE(r.listener.to_json()["transmitting_since_unix_s"].is_null());
 
   r.listener.on_datagram(status("", true));
   r.listener.on_datagram(header(6));  // Close
