@@ -137,6 +137,12 @@ async function main() {
       if (nominal !== `${dots(DOWNLINK_MHZ * 1e6)} / ${dots(UPLINK_MHZ * 1e6)}`) throw new Error(`nominal: ${nominal}`);
       if (!/^[+-]\d+ Hz Doppler$/.test(await text(page, '#radio-rx-corr'))) throw new Error(`RX correction: ${await text(page, '#radio-rx-corr')}`);
       if (!(await text(page, '#radio-sat')).includes('NORAD 25544')) throw new Error(`satellite: ${await text(page, '#radio-sat')}`);
+      // The rig's address and the transmitter followed, from /api/state `radio` itself.
+      if (r.rigctld !== `127.0.0.1:${rigPort}` || (await text(page, '#radio-rigctld')) !== r.rigctld) throw new Error(`rigctld: ${await text(page, '#radio-rigctld')} (state: ${r.rigctld})`);
+      const t = r.transmitter || {};
+      if (t.norad !== '25544' || t.downlink_mhz !== DOWNLINK_MHZ || t.uplink_mhz !== UPLINK_MHZ || t.mode !== 'fm') throw new Error(`the state's transmitter: ${JSON.stringify(r.transmitter)}`);
+      const followed = await text(page, '#radio-transmitter');
+      if (followed !== `${dots(DOWNLINK_MHZ * 1e6)} / ${dots(UPLINK_MHZ * 1e6)} MHz · fm`) throw new Error(`transmitter: ${followed}`);
       // The instant in UTC and, beside it, in the browser's zone (UTC+05:30).
       const at = new Date(r.at);
       const local = new Date(at.getTime() + 5.5 * 3600e3);

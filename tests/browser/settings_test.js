@@ -50,6 +50,8 @@ function changes(rotctldPort) {
     { name: '[sky] band, live', section: 'sky', route: 'sky', set: { band: '1296' }, expect: { band: '1296' }, live: (s) => s.moon.band === '1296' },
     { name: '[[park]] #1 added, live', section: 'park', route: 'park/1', add: true, set: { name: 'dish south', az_deg: '175', el_deg: '5' }, expect: { name: 'dish south', az_deg: 175, el_deg: 5 },
       live: async () => { const t = (await api('GET', '/api/targets')).json; return t.park[0].name === 'dish south' && t.park[0].az_deg === 175; } },
+    // An array of tables inside a table: saved in [satellites], read back from the file.
+    { name: '[[satellites.transmitter]] #1 added', section: 'satellites.transmitter', route: 'satellites.transmitter/1', add: true, set: { norad: '43017', downlink_mhz: '145.96', mode: 'linear_inverting', uplink_mhz: '435.65' }, expect: { norad: '43017', downlink_mhz: 145.96, mode: 'linear_inverting', uplink_mhz: 435.65 } },
   ];
 }
 // Refused: by the daemon, naming the key, or (`local`) by the page before anything is sent.

@@ -7,10 +7,15 @@ dummy rig (`rigctld -m 1`), and WSJT-X datagrams built here as QDataStream write
     rx_hz, which is the dial plus the Moon's echo Doppler of the state within 1 Hz
  2  rigctld killed and restarted on its port: the link goes down and is up again within 5 s, with
     one log line each way
- 3  a WSJT-X Status with a DX grid: the running DX follows (not saved to the file)
- 4  Status transmitting: the antenna holds (a rotctld `P` does not progress); not transmitting:
-    it moves
- 5  garbage, truncated and oversized datagrams: counted as malformed, the daemon runs on
+ 3  a WSJT-X Status with a DX grid, schema 2 (WSJT-X 1.7's short form) and schema 3 (every field
+    WSJT-X 2.6 sends): the running DX follows (not saved to the file)
+ 4  Status transmitting, schema 2 and 3: the antenna is held within 100 ms of the datagram's
+    receipt (the daemon's own instants: `wsjtx.transmitting_since_unix_s`, the receipt, and
+    `station_io.held_since_unix_s`, the first control tick that held the antenna), a rotctld `P`
+    does not progress; not transmitting: the hold lifts and the antenna moves
+ 5  garbage, truncated (schema 2 and 3), unknown-schema and oversized datagrams while WSJT-X
+    transmits: counted as malformed and nothing else changes (the DX, the hold and its start,
+    the counts of decoded messages), the daemon runs on
 
 Usage: radio_test.py AZELTRACK"""
 import os
@@ -68,6 +73,23 @@ def status(dx_grid="", dx_call="", transmitting=False):
     body += struct.pack(">???", True, transmitting, False) + struct.pack(">II", 1500, 1500)
     body += utf8("W1AW") + utf8("FN31") + utf8(dx_grid)
     return body
+
+
+def status3(dx_grid="", dx_call="", transmitting=False):
+    """A schema-3 Status with every field (WSJT-X 2.6's form, NetworkMessage.hpp's order): id,
+    dial, mode, DX call, report, Tx mode, Tx enabled, Transmitting, Decoding, Rx DF, Tx DF, DE call,
+    DE grid, DX grid, Tx watchdog, sub-mode, fast mode, special operation mode, frequency
+    tolerance, T/R period, configuration name, Tx message."""
+    body = struct.pack(">III", 0xADBCCBDA, 3, 1) + utf8("WSJT-X")
+    body += struct.pack(">Q", 1296100000) + utf8("Q65") + utf8(dx_call) + utf8("-20") + utf8("Q65")
+    body += struct.pack(">???", True, transmitting, False) + struct.pack(">II", 1500, 1500)
+    body += utf8("W1AW") + utf8("FN31") + utf8(dx_grid) + struct.pack(">?", False) + utf8("A")
+    body += struct.pack(">?B", False, 0) + struct.pack(">II", 100, 60) + utf8("EME 23cm")
+    body += utf8(f"{dx_call} W1AW FN31" if dx_call else "")
+    return body
+
+
+STATUS = {2: status, 3: status3}
 
 
 def state(base):
@@ -136,37 +158,75 @@ check(text.count(": link down:") == 1 and text.count(": link up") == 2,
       f"{[line for line in text.splitlines() if 'link' in line]}")
 check(daemon.poll() is None, "2: the daemon runs on")
 
-# 3: the DX grid follows WSJT-X, live, not saved.
+# 3: the DX grid follows WSJT-X, live, not saved: schema 2, then schema 3.
 udp = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-udp.sendto(status(dx_grid="JO65MR", dx_call="OZ1ABC"), ("127.0.0.1", UDP))
-check(wait_until(lambda: state(base)["wsjtx"]["dx_grid"] == "JO65MR", 2),
-      f"3: wsjtx dx_grid: {state(base)['wsjtx']}")
-check(wait_until(lambda: http_json(base, "GET", "/api/config")[1]["dx_grid"] == "JO65MR", 2),
-      "3: the running DX is WSJT-X's")
-check(wait_until(lambda: state(base)["moon"]["dx_echo_doppler_hz"] is not None, 3),
-      "3: the Moon's DX echo Doppler is computed for it")
-check("JO65MR" not in open(config, encoding="utf-8").read(), "3: not saved to the file")
+for schema, grid, call in [(2, "JO65MR", "OZ1ABC"), (3, "KP20LE", "OH2XYZ")]:
+    udp.sendto(STATUS[schema](dx_grid=grid, dx_call=call), ("127.0.0.1", UDP))
+    check(wait_until(lambda: state(base)["wsjtx"]["dx_grid"] == grid, 2),
+          f"3: schema {schema}: wsjtx dx_grid: {state(base)['wsjtx']}")
+    check(wait_until(lambda: http_json(base, "GET", "/api/config")[1]["dx_grid"] == grid, 2),
+          f"3: schema {schema}: the running DX is WSJT-X's")
+    check(wait_until(lambda: state(base)["moon"]["dx_echo_doppler_hz"] is not None, 3),
+          f"3: schema {schema}: the Moon's DX echo Doppler is computed for it")
+    check(grid not in open(config, encoding="utf-8").read(), f"3: {grid} not saved to the file")
+GRID = "KP20LE"
 
-# 4: transmitting holds the antenna.
-udp.sendto(status(dx_grid="JO65MR", transmitting=True), ("127.0.0.1", UDP))
-check(wait_until(lambda: state(base)["wsjtx"]["transmitting"], 1, 0.02), "4: transmitting")
-start = state(base)["antenna"]
-rotctld(ROT, [f"P {start['az_deg'] + 40:.1f} 30"])
-time.sleep(1.5)
-held = state(base)["antenna"]
-check(abs(held["az_deg"] - start["az_deg"]) < 0.5,
-      f"4: held while transmitting: {start['az_deg']:.2f} -> {held['az_deg']:.2f}")
-udp.sendto(status(dx_grid="JO65MR", transmitting=False), ("127.0.0.1", UDP))
+
+def hold_after(schema, transmitting):
+    """Sends a Status; returns the state once the antenna's hold says the same (None: never)."""
+    udp.sendto(STATUS[schema](dx_grid=GRID, transmitting=transmitting), ("127.0.0.1", UDP))
+    seen = {}
+
+    def probe():
+        seen["state"] = state(base)
+        return (seen["state"]["station_io"]["held_since_unix_s"] is not None) == transmitting
+    return seen["state"] if wait_until(probe, 2, 0.005) else None
+
+
+# 4: transmitting holds the antenna within 100 ms, schema 2 and 3; not transmitting releases it.
+for schema in (2, 3):
+    sent = time.monotonic()
+    held = hold_after(schema, True)
+    seen_s = time.monotonic() - sent
+    check(held is not None and held["wsjtx"]["transmitting"], f"4: schema {schema}: held")
+    if held is not None:
+        latency_ms = 1000 * (held["station_io"]["held_since_unix_s"]
+                             - held["wsjtx"]["transmitting_since_unix_s"])
+        print(f"4: schema {schema}: antenna held {latency_ms:.2f} ms after the Status's receipt "
+              f"(seen in /api/state {1000 * seen_s:.0f} ms after sending)")
+        check(-1 < latency_ms < 100, f"4: schema {schema}: held within 100 ms: {latency_ms:.1f} ms")
+    if schema == 2:  # a move asked for while held does not start
+        start = state(base)["antenna"]
+        rotctld(ROT, [f"P {start['az_deg'] + 40:.1f} 30"])
+        time.sleep(1.5)
+        now = state(base)["antenna"]
+        check(abs(now["az_deg"] - start["az_deg"]) < 0.5,
+              f"4: held while transmitting: {start['az_deg']:.2f} -> {now['az_deg']:.2f}")
+    released = hold_after(schema, False)
+    check(released is not None and released["wsjtx"]["transmitting_since_unix_s"] is None
+          and not released["wsjtx"]["hold"], f"4: schema {schema}: released: {released}")
 check(wait_until(lambda: abs(state(base)["antenna"]["az_deg"] - start["az_deg"]) > 2, 3),
       "4: moves once WSJT-X receives")
 
-# 5: garbage, truncated and oversized datagrams.
-malformed = state(base)["wsjtx"]["malformed"]
+# 5: garbage, truncated, unknown-schema and oversized datagrams while WSJT-X transmits.
+hold_after(3, True)
+before = state(base)
 udp.sendto(b"not wsjt-x at all", ("127.0.0.1", UDP))
 udp.sendto(status(dx_grid="JO65MR")[:-3], ("127.0.0.1", UDP))
+udp.sendto(status3(dx_grid="JO65MR")[:-9], ("127.0.0.1", UDP))
+udp.sendto(struct.pack(">III", 0xADBCCBDA, 4, 1) + status3()[12:], ("127.0.0.1", UDP))
 udp.sendto(b"\xad\xbc\xcb\xda" + b"\0" * 9000, ("127.0.0.1", UDP))
-check(wait_until(lambda: state(base)["wsjtx"]["malformed"] == malformed + 3, 2),
-      f"5: three counted malformed: {state(base)['wsjtx']}")
-check(state(base)["wsjtx"]["dx_grid"] == "JO65MR", "5: nothing changed by them")
+check(wait_until(lambda: state(base)["wsjtx"]["malformed"] == before["wsjtx"]["malformed"] + 5, 2),
+      f"5: five counted malformed: {state(base)['wsjtx']}")
+after = state(base)
+for key in ["dx_grid", "dx_call", "transmitting", "transmitting_since_unix_s", "hold", "received",
+            "tr_period_s", "last_heard"]:
+    check(after["wsjtx"][key] == before["wsjtx"][key],
+          f"5: wsjtx {key} unchanged: {before['wsjtx'][key]} -> {after['wsjtx'][key]}")
+# The same start, to the microseconds of converting the tick's steady clock to UTC per request.
+check(abs(after["station_io"]["held_since_unix_s"] - before["station_io"]["held_since_unix_s"])
+      < 1e-3, "5: the antenna's hold goes on from the same instant")
+check(http_json(base, "GET", "/api/config")[1]["dx_grid"] == GRID, "5: the running DX unchanged")
+check(hold_after(3, False) is not None, "5: a good Status still releases it")
 check(daemon.poll() is None, "5: the daemon runs on")
 sys.exit(check.summary("radio"))

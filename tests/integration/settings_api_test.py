@@ -79,9 +79,23 @@ try:
     code, r = request("PUT", "/api/config/park/2", {"name": "dish down", "el_deg": 5.0}, TOKEN)
     check(code == 200 and r["applied"] == ["park.2.el_deg", "park.2.name"], f"park: {code} {r}")
     check(request("GET", "/api/config")[1]["park"][1]["name"] == "dish down", "park slot applied")
+    # An item of an array of tables inside a table: saved as [[satellites.transmitter]] and
+    # read back by the schema (the items were once written and listed under the wrong name).
+    code, r = request("PUT", "/api/config/satellites.transmitter/1",
+                      {"norad": "43017", "downlink_mhz": 145.96, "uplink_mhz": 435.65,
+                       "mode": "linear_inverting"}, TOKEN)
+    check(code == 200 and "satellites.transmitter.1.norad" in r["restart"], f"sat: {code} {r}")
+    saved = open(CONFIG, encoding="utf-8").read()
+    check("[[satellites.transmitter]]" in saved and '"satellites.transmitter"' not in saved,
+          f"saved as an array of tables in [satellites]: {saved}")
+    items = next(s for s in request("GET", "/api/config/schema")[1]["sections"]
+                 if s["name"] == "satellites.transmitter")["items"]
+    check(len(items) == 1 and items[0].get("norad") == "43017"
+          and items[0].get("mode") == "linear_inverting", f"the schema's items: {items}")
     # Back to the value it started with: no longer waiting for a restart.
     code, r = request("PUT", "/api/config/mount.az", {"encoder_bits": None}, TOKEN)
-    check(code == 200 and r["restart_needed"] == ["mount.az.max_rate_deg_s"], f"undone: {r}")
+    check(code == 200 and "mount.az.encoder_bits" not in r["restart_needed"]
+          and "mount.az.max_rate_deg_s" in r["restart_needed"], f"undone: {r}")
 
     # Refusals name the key and save nothing.
     before = open(CONFIG, encoding="utf-8").read()

@@ -12,6 +12,8 @@ it runs with a HOME of its own in a temporary folder.
     id "WSJT-X", with the Status's T/R period read (Q65's: the Status read to its later fields)
  2  a second heartbeat, NetworkMessage.hpp's 15 s pulse later
  3  none of its datagrams counted malformed, and the daemon runs on
+ 4  WSJT-X restarted in FT8, whose Status says the T/R period is "not applicable": the period is
+    FT8's fixed 15 s (docs/radio.md "The T/R period")
 
 Prints how long each took. Exits 77 (skipped) when wsjtx or xvfb-run is not installed.
 
@@ -81,17 +83,26 @@ home = os.path.join(TMP, "home")
 os.makedirs(os.path.join(home, ".config"))
 runtime = os.path.join(TMP, "run")
 os.makedirs(runtime, mode=0o700)
-with open(os.path.join(home, ".config", "WSJT-X.ini"), "w", encoding="utf-8") as f:
-    # Q65, an EME mode whose T/R period WSJT-X puts in its Status (for FT8's fixed 15 s it sends
-    # the "not applicable" quint32 maximum, mainwindow.cpp statusUpdate).
-    f.write(f"[Configuration]\nMyCall=W1AW\nMyGrid=FN31PR\nUDPServer=127.0.0.1\n"
-            f"UDPServerPort={UDP}\n[Common]\nMode=Q65\n")
 env = {k: v for k, v in os.environ.items() if not k.startswith(("XDG_", "DISPLAY", "QT_"))}
 env.update(HOME=home, XDG_RUNTIME_DIR=runtime)
-started = time.monotonic()
 wsjtx_log = open(os.path.join(TMP, "wsjtx.log"), "w", encoding="utf-8")
-procs.append(subprocess.Popen(["xvfb-run", "-a", "wsjtx"], env=env, stdout=wsjtx_log,
-                              stderr=subprocess.STDOUT, start_new_session=True))
+
+
+def start_wsjtx(mode):
+    """WSJT-X under Xvfb in `mode`, sending to the daemon; the process."""
+    with open(os.path.join(home, ".config", "WSJT-X.ini"), "w", encoding="utf-8") as ini:
+        ini.write(f"[Configuration]\nMyCall=W1AW\nMyGrid=FN31PR\nUDPServer=127.0.0.1\n"
+                  f"UDPServerPort={UDP}\n[Common]\nMode={mode}\n")
+    p = subprocess.Popen(["xvfb-run", "-a", "wsjtx"], env=env, stdout=wsjtx_log,
+                         stderr=subprocess.STDOUT, start_new_session=True)
+    procs.append(p)
+    return p
+
+
+# Q65, an EME mode whose T/R period WSJT-X puts in its Status (for FT8's fixed 15 s it sends the
+# "not applicable" quint32 maximum, mainwindow.cpp statusUpdate).
+started = time.monotonic()
+q65 = start_wsjtx("Q65")
 
 
 def wsjtx():
@@ -130,5 +141,19 @@ check(second_heartbeat is not None and first_heartbeat is not None and
 check(state["malformed"] == 0, f"3: none malformed: {state['last_malformed']}")
 check(daemon.poll() is None, "3: the daemon runs on")
 check("malformed" not in open(log_path, encoding="utf-8").read(), "3: no malformed line in the log")
-print(f"took {time.monotonic() - started:.1f} s with WSJT-X")
+
+print(f"took {time.monotonic() - started:.1f} s with WSJT-X in Q65")
+
+# 4: FT8, whose Status leaves the period out.
+stop(q65)
+statuses = wsjtx()["received"]["status"]
+started = time.monotonic()
+start_wsjtx("FT8")
+ft8_status = seconds_until(lambda w: w["received"]["status"] > statuses, 30)
+state = wsjtx()
+print(f"WSJT-X in FT8: a Status {seconds(ft8_status)} after its start, T/R period "
+      f"{state['tr_period_s']} s, malformed {state['malformed']}")
+check(ft8_status is not None and state["tr_period_s"] == 15, f"4: FT8's 15 s: {state}")
+check(state["malformed"] == 0, f"4: none malformed: {state['last_malformed']}")
+print(f"took {time.monotonic() - started:.1f} s with WSJT-X in FT8")
 sys.exit(check.summary("wsjtx_xvfb"))

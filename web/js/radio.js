@@ -6,11 +6,7 @@
 import { S } from './state.js';
 import { $, setText } from './dom.js';
 import { ago, hz, isNum, mhzDots, utcLocal } from './format.js';
-import { loadJSON } from './api.js';
 
-// [radio] as the file says it (GET /api/config/schema): the rig's address and the EME mode, which
-// /api/state does not carry.
-let file = {};
 // WSJT-X sends a Heartbeat every 15 s: heard within two of them is heard now.
 const HEARD_S = 30;
 
@@ -19,12 +15,10 @@ const EME = {
   on_dx: 'on DX echo', call_dx: 'call DX',
 };
 
-export async function openRadio() {
-  renderRadio(true);
-  const j = await loadJSON('/api/config/schema');
-  const sec = j && Array.isArray(j.sections) ? j.sections.find((s) => s.name === 'radio') : null;
-  file = sec ? Object.fromEntries(sec.keys.map((k) => [k.key, k.value == null ? k.default : k.value])) : {};
-  renderRadio(true);
+// Everything shown comes with /api/state `radio`: the rigs' addresses, the EME mode and the
+// transmitter followed too.
+export function openRadio() {
+  renderRadio();
 }
 
 export function renderRadio() {
@@ -65,10 +59,10 @@ function renderLink(r) {
   const [cls, word, why] = linkWords(r.link);
   badge('radio-badge', cls, word);
   setText('radio-link-text', r.link && String(r.link).startsWith('down') ? `${why} (retrying)` : why);
-  setText('radio-rigctld', r.rigctld || file.rigctld || 'none');
+  setText('radio-rigctld', r.rigctld || 'none');
   $('radio-tx-link-row').hidden = !r.tx_link;
-  if (r.tx_link) setText('radio-tx-link', `${r.tx_rigctld || file.tx_rigctld || ''} ${linkWords(r.tx_link)[2]}`.trim());
-  const mode = r.eme_mode || file.eme_mode;
+  if (r.tx_link) setText('radio-tx-link', `${r.tx_rigctld || ''} ${linkWords(r.tx_link)[2]}`.trim());
+  const mode = r.eme_mode;
   const words = { off: 'off: azeltrack writes nothing to the rig', satellite: 'the tracked satellite’s transmitter',
     eme: `the Moon’s echo${EME[mode] ? `: ${EME[mode]}` : ''}` };
   setText('radio-doppler', words[r.doppler] || String(r.doppler || 'off'));
@@ -91,12 +85,22 @@ function renderFrequencies(r, st) {
   setText('radio-nominal', `${nominal(r.rx_hz, r.rx_correction_hz)} / ${nominal(r.tx_hz, r.tx_correction_hz)}`);
   const sat = st.mode === 'TRACK' && st.target ? st.target.satellite : null;
   $('radio-sat-row').hidden = r.doppler !== 'satellite';
+  $('radio-transmitter-row').hidden = r.doppler !== 'satellite';
   if (r.doppler === 'satellite') {
-    const t = r.transmitter;
-    setText('radio-sat', sat ? `${sat.sat} (NORAD ${sat.norad})${t && t.mode ? ` · ${t.mode}` : ''}` : 'none tracked');
+    setText('radio-sat', sat ? `${sat.sat} (NORAD ${sat.norad})` : 'none tracked');
+    setText('radio-transmitter', transmitterWords(r.transmitter));
   }
   const behind = isNum(r.at_unix_s) ? (Date.parse(st.utc) / 1000) - r.at_unix_s : NaN;
   setText('radio-at', r.at ? `${utcLocal(r.at, true)}${Number.isFinite(behind) ? ` · ${ago(Math.max(0, behind))} ago` : ''}` : 'nothing written yet');
+}
+
+// The [[satellites.transmitter]] followed, downlink / uplink in the satellite's frame:
+// "437.800.000 / 145.990.000 MHz · fm".
+function transmitterWords(t) {
+  if (!t) return 'none for this satellite';
+  const mhz = (f) => mhzDots(f * 1e6);
+  const up = isNum(t.uplink_mhz) ? ` / ${mhz(t.uplink_mhz)} MHz` : ' MHz, receive only';
+  return `${mhz(t.downlink_mhz)}${up} · ${t.mode}`;
 }
 
 function renderWsjtx(w, heard) {

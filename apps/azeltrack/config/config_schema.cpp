@@ -148,4 +148,17 @@ const toml::table* table_at(const toml::table& root, std::string_view name) {
   return t;
 }
 
+std::pair<std::string_view, std::string_view> parent_and_key(std::string_view name) {
+  const auto dot = name.rfind('.');
+  if (dot == std::string_view::npos) return {std::string_view(), name};
+  return {name.substr(0, dot), name.substr(dot + 1)};
+}
+
+const toml::array* array_at(const toml::table& root, std::string_view name) {
+  const auto [parent, key] = parent_and_key(name);
+  const toml::table* t = table_at(root, parent);
+  const toml::node* n = t != nullptr ? t->get(key) : nullptr;
+  return n != nullptr ? n->as_array() : nullptr;
+}
+
 }  // namespace azt::app

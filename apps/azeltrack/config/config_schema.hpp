@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace azt::app {
 
@@ -118,6 +119,11 @@ const KeySpec* find_key(const SectionSpec& section, std::string_view key);
 const SectionSpec* find_child(const SectionSpec& section, std::string_view key);
 /// The table a dotted section name ("mount.az") names in a file's `root`, or null.
 const toml::table* table_at(const toml::table& root, std::string_view name);
+/// The array of tables a dotted section name names in `root`, or null: "serial" at the top,
+/// "satellites.transmitter" inside [satellites] (never a top-level key spelled with a dot).
+const toml::array* array_at(const toml::table& root, std::string_view name);
+/// A dotted section name split at its last dot: ("satellites", "transmitter"), ("", "serial").
+std::pair<std::string_view, std::string_view> parent_and_key(std::string_view name);
 
 /// Why `value` cannot be `spec`'s value ("must be 0 to 2", "must be an integer"), or nullopt.
 std::optional<std::string> key_violation(const KeySpec& spec, const toml::node& value);

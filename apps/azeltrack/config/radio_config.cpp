@@ -53,6 +53,10 @@ const TransmitterConfig* RadioConfig::transmitter_of(const std::string& norad) c
 
 std::string_view doppler_source_name(DopplerSource source) { return name_of(kDoppler, source); }
 
+std::string_view transponder_mode_name(radio::TransponderMode mode) {
+  return name_of(kModes, mode);
+}
+
 RadioConfig radio_config_from(const ConfigFile& file) {
   const ConfigSection s = file.section("radio");
   RadioConfig c;

@@ -39,6 +39,8 @@ struct RadioConfig {
 };
 
 std::string_view doppler_source_name(DopplerSource source);
+/// "fm", "linear" or "linear_inverting", as `[[satellites.transmitter]] mode` spells it.
+std::string_view transponder_mode_name(radio::TransponderMode mode);
 
 /// Throws UsageError naming the key on any invalid value or combination.
 RadioConfig radio_config_from(const ConfigFile& file);

@@ -106,7 +106,7 @@ json values_of(const SectionSpec& spec, const toml::table* table) {
 
 void add_items(json& section, const SectionSpec& spec, const toml::table& root) {
   json items = json::array();
-  if (const toml::array* a = root[spec.name].as_array()) {
+  if (const toml::array* a = array_at(root, spec.name)) {
     for (const auto& item : *a) items.push_back(values_of(spec, item.as_table()));
   }
   section["items"] = items;

@@ -46,11 +46,6 @@ void compare_table(const SectionSpec& s, const std::string& prefix, const toml::
   }
 }
 
-const toml::array* items_of(const toml::table& root, std::string_view name) {
-  const toml::node* n = root.get(name);
-  return n != nullptr ? n->as_array() : nullptr;
-}
-
 const toml::table* item_at(const toml::array* a, std::size_t i) {
   return a != nullptr && i < a->size() ? a->get(i)->as_table() : nullptr;
 }
@@ -66,8 +61,8 @@ std::vector<std::string> restart_needed(const toml::table& started, const toml::
       compare_table(s, name + ".", table_at(started, s.name), table_at(saved, s.name), out);
       continue;
     }
-    const toml::array* a = items_of(started, s.name);
-    const toml::array* b = items_of(saved, s.name);
+    const toml::array* a = array_at(started, s.name);
+    const toml::array* b = array_at(saved, s.name);
     const std::size_t n = std::max(a != nullptr ? a->size() : 0, b != nullptr ? b->size() : 0);
     for (std::size_t i = 0; i < n; ++i) {
       compare_table(s, name + "." + std::to_string(i + 1) + ".", item_at(a, i), item_at(b, i), out);

@@ -109,11 +109,15 @@ toml::table& table_for(toml::table& root, std::string_view dotted) {
   return *t;
 }
 
+/// Item `item` (from 1) of the array of tables `name`, which may stand inside a table
+/// ([[satellites.transmitter]] in [satellites]); the next item is added.
 toml::table& item_for(toml::table& root, std::string_view name, std::size_t item,
                       const ItemFiller& fill) {
   const std::string key(name);
-  if (!root.contains(key)) root.insert(key, toml::array{});
-  toml::array* a = root[key].as_array();
+  const auto [parent_name, last] = parent_and_key(name);
+  toml::table& parent = table_for(root, parent_name);
+  if (!parent.contains(last)) parent.insert(last, toml::array{});
+  toml::array* a = parent[last].as_array();
   if (a == nullptr) throw UsageError("[[" + key + "]] is not an array of tables in the file");
   while (fill && a->size() + 1 < item) a->push_back(fill(a->size()));
   if (item > a->size() + 1) {

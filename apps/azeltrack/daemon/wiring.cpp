@@ -419,6 +419,11 @@ void StationDaemon::open_console() {
                    servers,
                    [this] {
                      nlohmann::json io = guard_->state();
+                     // The tick that began the hold, on the daemon's UTC (WSJT-X's transmit
+                     // hold measured against the datagram: tests/integration/radio_test.py).
+                     const auto held = guard_->held_since_s();
+                     io["held_since_unix_s"] = held ? nlohmann::json(unix_now_s() - now_s() + *held)
+                                                    : nlohmann::json(nullptr);
                      io["sequencer"] = sequencer_->state();
                      io["motor_power"] = power_ ? power_->to_json(now_s()) : nlohmann::json();
                      return io;

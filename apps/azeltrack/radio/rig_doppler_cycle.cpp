@@ -23,6 +23,22 @@ nlohmann::json correction_json(const std::optional<WrittenHz>& w) {
   return w ? nlohmann::json(w->correction_hz) : nlohmann::json(nullptr);
 }
 
+nlohmann::json address_json(const std::optional<HostPort>& where) {
+  return where ? nlohmann::json(where->text()) : nlohmann::json(nullptr);
+}
+
+/// The satellite-frame frequencies the rig follows: {norad, downlink_mhz, uplink_mhz (null:
+/// receive only), mode}.
+nlohmann::json transmitter_json(const TransmitterConfig* t) {
+  if (t == nullptr) return nullptr;
+  const auto& f = t->transmitter;
+  return {
+      {"norad", t->norad},
+      {"downlink_mhz", f.downlink_hz / 1e6},
+      {"uplink_mhz", f.uplink_hz ? nlohmann::json(*f.uplink_hz / 1e6) : nlohmann::json(nullptr)},
+      {"mode", std::string(transponder_mode_name(f.mode))}};
+}
+
 }  // namespace
 
 RigDopplerCycle::RigDopplerCycle(const RadioConfig& config, radio::RigctlSession& main,
@@ -57,8 +73,9 @@ bool RigDopplerCycle::queue_tx(double hz, double at_unix_s, double correction_hz
 }
 
 void RigDopplerCycle::run_satellite(const RadioInputs& in) {
+  transmitter_ = in.satellite ? config_.transmitter_of(in.satellite->norad) : nullptr;
   if (!in.satellite) return set_problem("no satellite is tracked");
-  const TransmitterConfig* t = config_.transmitter_of(in.satellite->norad);
+  const TransmitterConfig* t = transmitter_;
   if (t == nullptr) {
     return set_problem("no [[satellites.transmitter]] for NORAD " + in.satellite->norad);
   }
@@ -176,7 +193,13 @@ void RigDopplerCycle::on_read(Leg& leg, bool tx_leg, double hz, double now_s) {
 
 nlohmann::json RigDopplerCycle::to_json() const {
   const std::optional<WrittenHz>& when = rx_.written ? rx_.written : tx_.written;
+  const bool eme = config_.doppler == DopplerSource::Eme;
   return {{"doppler", std::string(doppler_source_name(config_.doppler))},
+          {"rigctld", address_json(config_.rigctld)},
+          {"tx_rigctld", address_json(config_.tx_rigctld)},
+          {"eme_mode",
+           eme ? nlohmann::json(radio::eme_mode_name(config_.eme_mode)) : nlohmann::json(nullptr)},
+          {"transmitter", transmitter_json(transmitter_)},
           {"rx_hz", hz_json(rx_.written)},
           {"tx_hz", hz_json(tx_.written)},
           {"at", at_json(when)},

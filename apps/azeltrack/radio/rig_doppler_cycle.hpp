@@ -74,8 +74,10 @@ class RigDopplerCycle {
   [[nodiscard]] const std::optional<WrittenHz>& tx() const { return tx_.written; }
   /// Why nothing is written now ("" when all is well): no satellite, no transmitter, no DX grid.
   [[nodiscard]] const std::string& problem() const { return problem_; }
-  /// {doppler, rx_hz, tx_hz, at, at_unix_s (rx_hz's instant, else tx_hz's), tx_at, tx_at_unix_s,
-  /// rx_correction_hz, tx_correction_hz, problem}
+  /// The tracked satellite's transmitter the last cycle followed, or null.
+  [[nodiscard]] const TransmitterConfig* transmitter() const { return transmitter_; }
+  /// {doppler, rigctld, tx_rigctld, eme_mode, transmitter, rx_hz, tx_hz, at, at_unix_s (rx_hz's
+  /// instant, else tx_hz's), tx_at, tx_at_unix_s, rx_correction_hz, tx_correction_hz, problem}
   [[nodiscard]] nlohmann::json to_json() const;
 
  private:
@@ -108,6 +110,7 @@ class RigDopplerCycle {
   /// Track the knob: the cycle whose dial read is in flight; it is planned on the answer.
   std::optional<SatelliteCycle> awaiting_dial_;
   std::string planner_norad_;
+  const TransmitterConfig* transmitter_ = nullptr;  ///< in config_, which outlives the cycle
   std::unique_ptr<radio::SatelliteDopplerPlanner> planner_;
   radio::TxOncePerPeriod tx_period_;
   std::string problem_;

@@ -5,6 +5,7 @@
 
 #include "azt/astro/time_scales.hpp"
 #include "azt/radio/wsjtx_message.hpp"
+#include "azt/radio/wsjtx_tr_period.hpp"
 
 namespace azt::app {
 namespace {
@@ -62,9 +63,14 @@ void WsjtxListener::on_status(const radio::WsjtxStatus& status) {
   dx_call_ = status.dx_call;
   if (status.transmitting != transmitting_) {
     p_.log(std::string("wsjtx: ") + (status.transmitting ? "transmitting" : "receiving"));
+    // The receipt of the Status that began it: the hold's latency is measured from here.
+    transmitting_since_unix_s_ =
+        status.transmitting ? std::optional<double>(p_.unix_s()) : std::nullopt;
   }
   transmitting_ = status.transmitting;
-  if (const auto period = radio::tr_period_s(status)) tr_period_s_ = *period;
+  // Each Status says the period now: given, or the mode's own (FT8's 15 s is never sent), or
+  // unknown after a change to a mode whose period WSJT-X does not say.
+  tr_period_s_ = radio::tr_period_s(status);
   const std::string grid = status.stations ? status.stations->dx_grid : "";
   if (grid != dx_grid_) {
     dx_grid_ = grid;
@@ -77,6 +83,7 @@ void WsjtxListener::on_close(const radio::WsjtxClose& close) {
   heard(close.id);
   if (transmitting_) p_.log("wsjtx: closed while transmitting; hold released");
   transmitting_ = false;
+  transmitting_since_unix_s_.reset();
 }
 
 void WsjtxListener::on_oversized(std::size_t bytes) {
@@ -118,6 +125,8 @@ nlohmann::json WsjtxListener::to_json() const {
       {"dx_call", dx_call_},
       {"dx_grid", dx_grid_},
       {"transmitting", transmitting()},
+      {"transmitting_since_unix_s",
+       transmitting() ? json(*transmitting_since_unix_s_) : json(nullptr)},
       {"hold", motion_hold()},
       {"tr_period_s", tr_period_s_ ? json(*tr_period_s_) : json(nullptr)},
       {"received",

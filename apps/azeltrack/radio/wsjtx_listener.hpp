@@ -13,7 +13,9 @@
 //
 // move_in_last_s (K3NG #62's "move only at the end of the period"): with a T/R period known,
 // motion is held except in the last move_in_last_s seconds of each period (periods start at
-// multiples of the period in UTC seconds, as WSJT-X counts them).
+// multiples of the period in UTC seconds, as WSJT-X counts them). The period is the Status's, or
+// the one WSJT-X fixes for its mode when the Status does not say it (FT8, FT4:
+// azt/radio/wsjtx_tr_period.hpp).
 
 #include <cstdint>
 #include <functional>
@@ -61,8 +63,8 @@ class WsjtxListener {
   [[nodiscard]] std::optional<double> tr_period_s() const { return tr_period_s_; }
   [[nodiscard]] std::uint64_t malformed() const { return malformed_; }
   [[nodiscard]] unsigned short port() const { return socket_ ? socket_->port() : 0; }
-  /// {listening, last_heard, id, dx_call, dx_grid, transmitting, hold, tr_period_s, received:
-  /// {heartbeat, status, close, other}, malformed, last_malformed}
+  /// {listening, last_heard, id, dx_call, dx_grid, transmitting, transmitting_since_unix_s, hold,
+  /// tr_period_s, received: {heartbeat, status, close, other}, malformed, last_malformed}
   [[nodiscard]] nlohmann::json to_json() const;
 
  private:
@@ -79,6 +81,7 @@ class WsjtxListener {
   std::string dx_call_;
   std::string dx_grid_;
   bool transmitting_ = false;
+  std::optional<double> transmitting_since_unix_s_;  ///< set whenever transmitting_ is
   std::optional<double> tr_period_s_;
   /// The datagrams decoded, by type (other: the types recognised and not read, Decode and the
   /// like).

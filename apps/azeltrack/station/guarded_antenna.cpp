@@ -97,6 +97,11 @@ void GuardedAntenna::latch(const std::string& why) {
 void GuardedAntenna::tick(double now_s, const control::Demand& demand, const control::AzEl& rate) {
   const bool hold = latched_ || (parts_.sequencer != nullptr && parts_.sequencer->motion_hold()) ||
                     (other_hold_ && other_hold_());
+  if (!hold) {
+    held_since_s_.reset();
+  } else if (!held_since_s_) {
+    held_since_s_ = now_s;
+  }
   // Held: no position and no jog, so the backend lets any move finish its soft stop (a latched
   // E-stop has already stopped the drives hard).
   inner_->tick(now_s, hold ? control::Demand{} : demand, hold ? control::AzEl{} : rate);

@@ -57,6 +57,9 @@ class GuardedAntenna final : public AntennaBackend {
   /// sequencer's motion hold is.
   void set_other_hold(std::function<bool()> hold) { other_hold_ = std::move(hold); }
   [[nodiscard]] bool estop_latched() const { return latched_; }
+  /// The instant (the tick's clock) of the first tick that held the antenna, for any cause, in
+  /// the hold that goes on now; none while not held. What /api/state shows as the hold's start.
+  [[nodiscard]] std::optional<double> held_since_s() const { return held_since_s_; }
   [[nodiscard]] const control::LimitSwitches& limits() const { return limits_; }
   /// {"estop": {"wired","input","latched"}, "limits": {...} | null}
   [[nodiscard]] nlohmann::json state() const;
@@ -79,6 +82,7 @@ class GuardedAntenna final : public AntennaBackend {
   std::function<bool()> other_hold_;
   bool latched_ = false;
   std::string latch_reason_;
+  std::optional<double> held_since_s_;
 };
 
 }  // namespace azt::app

@@ -249,10 +249,4 @@ Result<WsjtxMessage> decode_wsjtx_datagram(std::string_view datagram) {
   return read_body(r, static_cast<MessageType>(type), std::move(id));
 }
 
-std::optional<std::uint32_t> tr_period_s(const WsjtxStatus& status) {
-  if (!status.periods || status.periods->tr_period_s == kWsjtxNotApplicable) return std::nullopt;
-  if (status.periods->tr_period_s == 0) return std::nullopt;
-  return status.periods->tr_period_s;
-}
-
 }  // namespace azt::radio

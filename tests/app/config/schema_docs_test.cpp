@@ -98,5 +98,22 @@ TEST(SchemaDocs, TheJsonGivesValuesButNeverSecrets) {
   EXPECT_EQ(schema.dump().find("argon2id"), std::string::npos);
 }
 
+TEST(SchemaDocs, TheItemsOfAnArrayOfTablesInsideATableAreGiven) {
+  // [[satellites.transmitter]] is an array inside [satellites], not a top-level key named
+  // "satellites.transmitter": its items were once listed as none.
+  const toml::table root = toml::parse(
+      "[satellites]\n[[satellites.transmitter]]\nnorad = \"25544\"\ndownlink_mhz = 437.8\n"
+      "[[satellites.transmitter]]\nnorad = \"43017\"\ndownlink_mhz = 145.96\n"
+      "uplink_mhz = 435.65\nmode = \"linear_inverting\"\n");
+  const auto schema = schema_json_with_values(root);
+  const auto it = std::find_if(schema["sections"].begin(), schema["sections"].end(),
+                               [](const auto& j) { return j["name"] == "satellites.transmitter"; });
+  ASSERT_NE(it, schema["sections"].end());
+  ASSERT_EQ((*it)["items"].size(), 2u) << (*it)["items"].dump();
+  EXPECT_EQ((*it)["items"][0]["norad"], "25544");
+  EXPECT_EQ((*it)["items"][1]["mode"], "linear_inverting");
+  EXPECT_EQ((*it)["items"][1]["uplink_mhz"], 435.65);
+}
+
 }  // namespace
 }  // namespace azt::app

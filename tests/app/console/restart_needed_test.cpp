@@ -29,6 +29,15 @@ TEST(RestartNeeded, ListsChangedRestartKeysByTheirDottedNames) {
             (Keys{"serial.1.protocol", "serial.1.device"}));
 }
 
+TEST(RestartNeeded, ItemsOfAnArrayOfTablesInsideATableAreCompared) {
+  const std::string one = "[[satellites.transmitter]]\nnorad = \"25544\"\ndownlink_mhz = 437.8\n";
+  EXPECT_EQ(between(one, one), Keys{});
+  EXPECT_EQ(between(one, "[[satellites.transmitter]]\nnorad = \"25544\"\ndownlink_mhz = 437.9\n"),
+            Keys{"satellites.transmitter.1.downlink_mhz"});
+  EXPECT_EQ(between("", one),
+            (Keys{"satellites.transmitter.1.norad", "satellites.transmitter.1.downlink_mhz"}));
+}
+
 TEST(RestartNeeded, AnAbsentKeyIsItsDefault) {
   EXPECT_EQ(between("", "[control]\nwindow_deg = 0.0\ntick_hz = 20.0\n"), Keys{});
   EXPECT_EQ(between("[control]\ntick_hz = 20\n", ""), Keys{});

@@ -41,6 +41,12 @@ toml::table changed(const std::string& text, std::string_view route, const json&
   return root;
 }
 
+std::string toml_of(const toml::table& root) {
+  std::ostringstream text;
+  text << root;
+  return text.str();
+}
+
 const std::string kFile = "[station]\ngrid = \"FN06HE\"\n[target]\nname = \"stop\"\n";
 
 TEST(SettingsChange, AcceptsTheSchemasValues) {
@@ -140,6 +146,34 @@ TEST(SettingsChange, ItemsAreChangedOrAddedOneAtATime) {
   EXPECT_EQ(added["serial"].as_array()->size(), 2u);
   toml::table root = toml::parse(two);
   EXPECT_THROW(store_change(settings_change("serial/3", json{{"baud", 1200}}))(root), UsageError);
+}
+
+TEST(SettingsChange, AnItemOfAnArrayOfTablesInsideATableIsWrittenThere) {
+  // [[satellites.transmitter]] lives in [satellites]: never a top-level key with a dot in it.
+  const std::string sats = kFile + "[satellites]\nmin_el_deg = 5.0\n";
+  const toml::table added =
+      changed(sats, "satellites.transmitter/1", json{{"norad", "25544"}, {"downlink_mhz", 437.8}});
+  EXPECT_FALSE(added.contains("satellites.transmitter"));
+  ASSERT_TRUE(added["satellites"]["transmitter"].is_array_of_tables());
+  EXPECT_EQ(added["satellites"]["transmitter"][0]["norad"].value<std::string>(), "25544");
+  EXPECT_EQ(added["satellites"]["min_el_deg"].value<double>(), 5.0);
+  const toml::table second = changed(toml_of(added), "satellites.transmitter/2",
+                                     json{{"norad", "43017"},
+                                          {"downlink_mhz", 145.96},
+                                          {"uplink_mhz", 435.65},
+                                          {"mode", "linear_inverting"}});
+  const toml::table edited =
+      changed(toml_of(second), "satellites.transmitter/1", json{{"downlink_mhz", 437.805}});
+  const RadioConfig radio =
+      daemon_config_from(ConfigFile::parse(toml_of(edited), "saved.toml")).radio;
+  ASSERT_EQ(radio.transmitters.size(), 2u);
+  EXPECT_EQ(radio.transmitters[0].norad, "25544");
+  EXPECT_DOUBLE_EQ(radio.transmitters[0].transmitter.downlink_hz, 437.805e6);
+  EXPECT_EQ(radio.transmitters[1].transmitter.mode, radio::TransponderMode::LinearInverting);
+  toml::table root = toml::parse(sats);
+  EXPECT_THROW(
+      store_change(settings_change("satellites.transmitter/2", json{{"norad", "1"}}))(root),
+      UsageError);
 }
 
 TEST(SettingsChange, EveryLiveKeyHasAnApplyPathAndNoOtherKeyHasOne) {

@@ -68,6 +68,8 @@ TEST(RigDopplerCycle, EmeOwnEchoWritesDialPlusEchoAndSaysWhen) {
   EXPECT_DOUBLE_EQ(cycle.rx()->at_unix_s, 1000.0);
   EXPECT_NEAR(cycle.rx()->correction_hz, 1178.4, 1e-9);
   EXPECT_EQ(cycle.to_json()["doppler"], "eme");
+  EXPECT_EQ(cycle.to_json()["eme_mode"], "self");
+  EXPECT_TRUE(cycle.to_json()["transmitter"].is_null());
 
   // The same whole Hz: nothing written; a new whole Hz: written.
   cycle.run(eme_at(1000.2, 1178.3));
@@ -145,6 +147,40 @@ TEST(RigDopplerCycle, SatelliteFmCorrectsBothLegsAndNeedsItsTransmitter) {
   ASSERT_TRUE(cycle.tx());
   EXPECT_NEAR(cycle.tx()->correction_hz, 145.850e6 / (1.0 + 5.0 / kLightKmS) - 145.850e6, 1.0);
   EXPECT_TRUE(cycle.problem().empty());
+}
+
+TEST(RigDopplerCycle, TheStateNamesTheRigsTheModeAndTheTransmitterFollowed) {
+  RadioConfig config;
+  config.doppler = DopplerSource::Satellite;
+  config.rigctld = HostPort{"127.0.0.1", 4532};
+  config.tx_rigctld = HostPort{"::1", 4534};
+  config.transmitters.push_back({"43017", {145.96e6, 435.65e6, radio::TransponderMode::Linear}});
+  config.transmitters.push_back({"27607", {436.795e6, std::nullopt, radio::TransponderMode::Fm}});
+  RigctlSession rig;
+  RigDopplerCycle cycle(config, rig, nullptr);
+  nlohmann::json j = cycle.to_json();
+  EXPECT_EQ(j["rigctld"], "127.0.0.1:4532");
+  EXPECT_EQ(j["tx_rigctld"], "[::1]:4534");
+  EXPECT_TRUE(j["eme_mode"].is_null()) << "no EME mode while the Doppler is the satellite's";
+  EXPECT_TRUE(j["transmitter"].is_null()) << "nothing tracked yet";
+  RadioInputs in;
+  in.satellite = SatelliteNow{"27607", 1.0};
+  cycle.run(in);
+  j = cycle.to_json()["transmitter"];
+  EXPECT_EQ(j["norad"], "27607");
+  EXPECT_DOUBLE_EQ(j["downlink_mhz"].get<double>(), 436.795);
+  EXPECT_TRUE(j["uplink_mhz"].is_null()) << "receive only";
+  EXPECT_EQ(j["mode"], "fm");
+  in.satellite = SatelliteNow{"43017", 1.0};
+  cycle.run(in);
+  EXPECT_EQ(cycle.to_json()["transmitter"]["mode"], "linear");
+  EXPECT_DOUBLE_EQ(cycle.to_json()["transmitter"]["uplink_mhz"].get<double>(), 435.65);
+  in.satellite = SatelliteNow{"99999", 1.0};  // no transmitter for it: none followed
+  cycle.run(in);
+  EXPECT_TRUE(cycle.to_json()["transmitter"].is_null());
+  in.satellite.reset();
+  cycle.run(in);
+  EXPECT_TRUE(cycle.to_json()["transmitter"].is_null());
 }
 
 RadioConfig inverting_transponder() {

@@ -323,6 +323,28 @@ TEST_F(GuardTest, ALimitSwitchStopsTheDriveTowardsItAndReportsIt) {
   EXPECT_LT(antenna->position(now())->az_deg, held_at - 0.5) << "could not leave the switch";
 }
 
+TEST_F(GuardTest, AnotherProgramsHoldIsAppliedAtTheNextTickAndSaysSince) {
+  boost::asio::io_context io;
+  FakeGpio gpio(io);
+  auto antenna = guard(gpio, nullptr);
+  bool transmitting = false;
+  antenna->set_other_hold([&transmitting] { return transmitting; });
+  control::Demand cw;
+  cw.position = control::AzEl{260.0, 10.0};
+  run(io, *antenna, cw, 1.0);
+  EXPECT_EQ(antenna->held_since_s(), std::nullopt);
+  transmitting = true;
+  const double asked_at = now();
+  run(io, *antenna, cw, 0.05);
+  ASSERT_TRUE(antenna->held_since_s());
+  EXPECT_DOUBLE_EQ(*antenna->held_since_s(), asked_at + 0.05) << "the next tick holds";
+  run(io, *antenna, cw, 1.0);
+  EXPECT_DOUBLE_EQ(*antenna->held_since_s(), asked_at + 0.05) << "the start of the hold is kept";
+  transmitting = false;
+  run(io, *antenna, cw, 0.05);
+  EXPECT_EQ(antenna->held_since_s(), std::nullopt);
+}
+
 TEST_F(GuardTest, ALineThatCannotBeHadIsAnErrorNamingItsKey) {
   boost::asio::io_context io;
   FakeGpio gpio(io);

@@ -118,7 +118,7 @@ TEST(WsjtxMessage, AFullStatus) {
   EXPECT_EQ(s.special_op, 2);
   ASSERT_TRUE(s.periods);
   EXPECT_EQ(s.periods->frequency_tolerance_hz, 100U);
-  EXPECT_EQ(tr_period_s(s), 60U);
+  EXPECT_EQ(s.periods->tr_period_s, 60U);
   EXPECT_EQ(s.periods->configuration_name, "10 GHz EME");
   EXPECT_EQ(s.tx_message, "DL7ABC G4XYZ IO91");
 }
@@ -227,15 +227,6 @@ TEST(WsjtxMessage, StringLengthsPastTheEndOrTooLongOrNotUtf8AreRefused) {
   EXPECT_EQ(decode_wsjtx_datagram(latin1.data).error().message, "DX call at byte 37 is not UTF-8");
   Bytes just_long = header(6, 3, std::string(kMaxStringBytes, 'a'));
   EXPECT_TRUE(decode_wsjtx_datagram(just_long.data).ok());
-}
-
-TEST(WsjtxMessage, TheTrPeriodNotApplicable) {
-  WsjtxStatus s;
-  EXPECT_EQ(tr_period_s(s), std::nullopt);
-  s.periods = WsjtxStatus::Periods{};
-  EXPECT_EQ(tr_period_s(s), std::nullopt);  // 0xffffffff
-  s.periods->tr_period_s = 30;
-  EXPECT_EQ(tr_period_s(s), 30U);
 }
 
 }  // namespace

@@ -110,7 +110,6 @@ using WsjtxMessage = std::variant<WsjtxHeartbeat, WsjtxStatus, WsjtxClose, Wsjtx
 /// log line.
 Result<WsjtxMessage> decode_wsjtx_datagram(std::string_view datagram);
 
-/// The T/R period of a Status, when it has one that applies.
-std::optional<std::uint32_t> tr_period_s(const WsjtxStatus& status);
+/// The T/R period of a Status, given or inferred from its mode: azt/radio/wsjtx_tr_period.hpp.
 
 }  // namespace azt::radio
