@@ -25,8 +25,8 @@ nlohmann::json correction_json(const std::optional<WrittenHz>& w) {
 
 }  // namespace
 
-RigDopplerCycle::RigDopplerCycle(const RadioConfig& config, radio::RigctlSession& main,
-                                 radio::RigctlSession* uplink)
+RigDopplerCycle::RigDopplerCycle(const RadioConfig& config, radio::RigPort& main,
+                                 radio::RigPort* uplink)
     : config_(config), main_(main), uplink_(uplink) {}
 
 void RigDopplerCycle::run(const RadioInputs& in) {
@@ -69,7 +69,7 @@ void RigDopplerCycle::run_satellite(const RadioInputs& in) {
     planner_norad_ = t->norad;
     awaiting_dial_.reset();
   }
-  if (main_.link() != radio::RigLink::Up) return;
+  if (!main_.up()) return;
   const SatelliteCycle now{in.now_s, in.unix_s, in.satellite->range_rate_km_s};
   if (t->transmitter.mode == radio::TransponderMode::Fm) return plan_satellite(now, std::nullopt);
   // Track the knob: read the dial first and decide on its answer (on_event), as Gpredict reads
