@@ -56,9 +56,8 @@ struct Heard {
         events.begin(), events.end(), [kind](const RigEvent& e) { return e.kind == kind; }));
   }
   [[nodiscard]] std::size_t downs() const {
-    return static_cast<std::size_t>(std::count_if(links.begin(), links.end(), [](const auto& l) {
-      return l.first == RigLinkState::Down;
-    }));
+    return static_cast<std::size_t>(std::count_if(
+        links.begin(), links.end(), [](const auto& l) { return l.first == RigLinkState::Down; }));
   }
 };
 

@@ -52,22 +52,30 @@ function badge(id, cls, word) {
   setText(b, word);
 }
 
-// "up", "connecting", "down: why" or "off" (no rigctld in the file).
+// "up", "connecting", "down: why" or "off" (no rig in the file).
 function linkWords(link) {
   const l = String(link || 'off');
   if (l === 'up') return ['b-fix', 'LINK UP', 'the rig answers'];
-  if (l === 'connecting') return ['', 'CONNECTING', 'connecting to rigctld…'];
+  if (l === 'connecting') return ['', 'CONNECTING', 'connecting to the rig…'];
   if (l.startsWith('down')) return ['b-bad', 'LINK DOWN', l.replace(/^down:?\s*/, '') || 'no reason given'];
-  return ['b-off', 'NO RIG', 'no rig: [radio] rigctld is empty'];
+  return ['b-off', 'NO RIG', 'no rig: [radio] rigctld and model are empty'];
+}
+
+// How the file reaches a rig: rigctld's address, or a Hamlib model opened directly.
+function rigWhere(rigctld, model, device) {
+  if (rigctld) return rigctld;
+  if (model) return `Hamlib model ${model}${device ? ` on ${device}` : ''}, directly`;
+  return '';
 }
 
 function renderLink(r) {
   const [cls, word, why] = linkWords(r.link);
   badge('radio-badge', cls, word);
   setText('radio-link-text', r.link && String(r.link).startsWith('down') ? `${why} (retrying)` : why);
-  setText('radio-rigctld', r.rigctld || file.rigctld || 'none');
+  setText('radio-rigctld', r.rigctld || rigWhere(file.rigctld, file.model, file.device) || 'none');
   $('radio-tx-link-row').hidden = !r.tx_link;
-  if (r.tx_link) setText('radio-tx-link', `${r.tx_rigctld || file.tx_rigctld || ''} ${linkWords(r.tx_link)[2]}`.trim());
+  const uplink = r.tx_rigctld || rigWhere(file.tx_rigctld, file.tx_model, file.tx_device);
+  if (r.tx_link) setText('radio-tx-link', `${uplink} ${linkWords(r.tx_link)[2]}`.trim());
   const mode = r.eme_mode || file.eme_mode;
   const words = { off: 'off: azeltrack writes nothing to the rig', satellite: 'the tracked satellite’s transmitter',
     eme: `the Moon’s echo${EME[mode] ? `: ${EME[mode]}` : ''}` };

@@ -22,15 +22,16 @@ std::optional<HostPort> endpoint(const ConfigSection& s, std::string_view key) {
 
 /// `model`, `device`, `baud` (with `prefix`: `tx_model`, …): a rig through libhamlib, checked
 /// against Hamlib's own list of models now rather than when the daemon first opens it.
-std::optional<linux_os::HamlibRigConfig> direct_rig(const ConfigSection& s, const std::string& prefix,
-                                                    bool rigctld_too) {
+std::optional<linux_os::HamlibRigConfig> direct_rig(const ConfigSection& s,
+                                                    const std::string& prefix, bool rigctld_too) {
   const std::string model_key = prefix + "model";
   linux_os::HamlibRigConfig c;
   c.model = static_cast<int>(s.integer(model_key).value_or(0));  // 0 to 100000 (the schema)
   c.device = s.text(prefix + "device").value_or("");
   c.baud = static_cast<int>(s.integer(prefix + "baud").value_or(0));
   if (c.model == 0) {
-    if (!c.device.empty()) s.fail(prefix + "device", "needs " + model_key + " (the rig's Hamlib model)");
+    if (!c.device.empty())
+      s.fail(prefix + "device", "needs " + model_key + " (the rig's Hamlib model)");
     if (c.baud != 0) s.fail(prefix + "baud", "needs " + model_key + " (the rig's Hamlib model)");
     return std::nullopt;
   }

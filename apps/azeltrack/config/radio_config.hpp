@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "azt/radio/eme_doppler_modes.hpp"
 #include "azt/linux/hamlib_rig_model.hpp"
+#include "azt/radio/eme_doppler_modes.hpp"
 #include "azt/radio/satellite_doppler.hpp"
 #include "config/host_port.hpp"
 

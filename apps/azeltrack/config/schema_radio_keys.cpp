@@ -1,6 +1,6 @@
 // The schema's radio keys: the rig kept on frequency through rigctld or libhamlib, the
-// satellites' transmitters, and WSJT-X's UDP messages (radio_config.cpp and wsjtx_config.cpp read them;
-// docs/radio.md).
+// satellites' transmitters, and WSJT-X's UDP messages (radio_config.cpp and wsjtx_config.cpp read
+// them; docs/radio.md).
 #include <array>
 
 #include "config/schema_keys.hpp"
@@ -35,7 +35,7 @@ constexpr std::array<KeySpec, 13> kRadio{{
      .type = KeyType::Integer,
      .range = closed(0.0, 1000000.0),
      .default_toml = "0",
-     .help = "with `model`: the serial speed, within the model's range; 0: the model's default"},
+     .help = "with `model`: the serial speed (as set on the rig); 0: the model's default"},
     {.key = "tx_rigctld",
      .type = KeyType::Text,
      .default_toml = "\"\"",

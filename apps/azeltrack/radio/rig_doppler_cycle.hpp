@@ -60,7 +60,8 @@ struct WrittenHz {
 
 class RigDopplerCycle {
  public:
-  /// `uplink`: the second rig ([radio] tx_rigctld or tx_model), or null: the uplink is `main`'s split VFO.
+  /// `uplink`: the second rig ([radio] tx_rigctld or tx_model), or null: the uplink is `main`'s
+  /// split VFO.
   RigDopplerCycle(const RadioConfig& config, radio::RigPort& main, radio::RigPort* uplink);
 
   /// One cycle: queues what is due on the sessions (the caller flushes them).

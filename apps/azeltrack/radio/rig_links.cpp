@@ -19,8 +19,7 @@ const std::optional<HostPort>& rigctld_of(const RadioConfig& config, RigRole rol
   return config.rigctld;
 }
 
-const std::optional<linux_os::HamlibRigConfig>& hamlib_of(const RadioConfig& config,
-                                                          RigRole role) {
+const std::optional<linux_os::HamlibRigConfig>& hamlib_of(const RadioConfig& config, RigRole role) {
   switch (role) {
     case RigRole::Main:
       return config.hamlib;
@@ -52,7 +51,8 @@ std::unique_ptr<linux_os::RigConnection> open_rig_link(boost::asio::io_context& 
 std::string rig_link_name(const RadioConfig& config, RigRole role) {
   const std::string prefix = role == RigRole::Main ? "radio: " : "radio: uplink ";
   if (const auto& where = rigctld_of(config, role)) return prefix + "rigctld at " + where->text();
-  if (const auto& rig = hamlib_of(config, role)) return prefix + linux_os::describe_hamlib_rig(*rig);
+  if (const auto& rig = hamlib_of(config, role))
+    return prefix + linux_os::describe_hamlib_rig(*rig);
   return prefix + "no rig";
 }
 

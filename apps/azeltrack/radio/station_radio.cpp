@@ -45,20 +45,19 @@ void StationRadio::close() {
 
 std::unique_ptr<linux_os::RigConnection> StationRadio::make_link(RigRole role) {
   const std::string name = rig_link_name(p_.radio, role);
-  return open_rig_link(
-      io_, p_.radio, role, p_.monotonic_s,
-      linux_os::RigLinkEvents{
-          [this, role, name](linux_os::RigLinkState state, const std::string& why) {
-            on_link(role, state, why, name);
-          },
-          [this, role, name](const radio::RigEvent& e) {
-            if (e.kind == radio::RigEventKind::Refused) p_.log(name + ": " + e.message);
-            cycle_->on_event(role, e, p_.monotonic_s());
-            // An answer may queue writes (the dial read plans the satellite cycle), on either
-            // rig: the answering link sends its own, the other one is told here.
-            if (main_) main_->flush();
-            if (uplink_) uplink_->flush();
-          }});
+  linux_os::RigLinkEvents events{
+      [this, role, name](linux_os::RigLinkState state, const std::string& why) {
+        on_link(role, state, why, name);
+      },
+      [this, role, name](const radio::RigEvent& e) {
+        if (e.kind == radio::RigEventKind::Refused) p_.log(name + ": " + e.message);
+        cycle_->on_event(role, e, p_.monotonic_s());
+        // An answer may queue writes (the dial read plans the satellite cycle), on either
+        // rig: the answering link sends its own, the other one is told here.
+        if (main_) main_->flush();
+        if (uplink_) uplink_->flush();
+      }};
+  return open_rig_link(io_, p_.radio, role, p_.monotonic_s, std::move(events));
 }
 
 void StationRadio::on_link(RigRole role, linux_os::RigLinkState state, const std::string& why,

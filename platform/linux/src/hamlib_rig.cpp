@@ -108,8 +108,8 @@ struct HamlibRig::Worker {
 
 // ---- the loop's side ---------------------------------------------------------------------------
 
-HamlibRig::HamlibRig(boost::asio::io_context& io, HamlibRigConfig config,
-                     HamlibRigOptions options, RigLinkEvents events)
+HamlibRig::HamlibRig(boost::asio::io_context& io, HamlibRigConfig config, HamlibRigOptions options,
+                     RigLinkEvents events)
     : config_(std::move(config)), events_(std::move(events)) {
   worker_ = std::make_shared<Worker>(config_, options, [this, &io, alive = alive_](Report r) {
     boost::asio::post(io, [this, alive, r = std::move(r)] {
@@ -272,6 +272,14 @@ Result<bool> HamlibRig::Worker::open() {
     close();
     return fail("rig_open of " + describe() + " failed: " + hamlib_status_text(rc));
   }
+  // Many backends open a port whose rig is switched off (an Icom on a silent port: 9 s, then
+  // RIG_OK). Up means the rig answers: a first read of the dial says so, or the link stays down
+  // with one report instead of an up and a down every retry.
+  freq_t hz = 0.0;
+  if (const int probe = rig_get_freq(rig_, RIG_VFO_CURR, &hz); is_hamlib_link_error(probe)) {
+    close();
+    return fail(describe() + " does not answer: rig_get_freq: " + hamlib_status_text(probe));
+  }
   split_on_ = false;
   split_refused_ = false;
   last_exchange_ = Clock::now();
@@ -308,9 +316,8 @@ void HamlibRig::Worker::close() {
 
 HamlibRig::Worker::Turn HamlibRig::Worker::take_turn() {
   std::unique_lock lock(mutex);
-  const bool woken =
-      wake.wait_until(lock, last_exchange_ + seconds(options.idle_check_s),
-                      [this] { return stopping || pending.any(); });
+  const bool woken = wake.wait_until(lock, last_exchange_ + seconds(options.idle_check_s),
+                                     [this] { return stopping || pending.any(); });
   Turn turn;
   turn.stop = stopping;
   turn.idle_check = !woken;
@@ -328,8 +335,8 @@ bool HamlibRig::Worker::wait_for_stop(double s) {
 bool HamlibRig::Worker::carry_out(const Requests& r) {
   bool dial_read = false;
   if (r.rx_hz) {
-    const Outcome set = check(rig_set_freq(rig_, RIG_VFO_CURR, *r.rx_hz), RigCommand::SetFreq,
-                              "rig_set_freq");
+    const Outcome set =
+        check(rig_set_freq(rig_, RIG_VFO_CURR, *r.rx_hz), RigCommand::SetFreq, "rig_set_freq");
     if (set == Outcome::Lost) return false;
     if (set == Outcome::Done) {
       written(RigCommand::SetFreq, *r.rx_hz);
@@ -367,14 +374,14 @@ bool HamlibRig::Worker::write_split(double hz) {
 bool HamlibRig::Worker::read(bool split, bool report) {
   freq_t hz = 0.0;
   const RigCommand command = split ? RigCommand::GetSplitFreq : RigCommand::GetFreq;
-  const int rc = split ? rig_get_split_freq(rig_, RIG_VFO_CURR, &hz)
-                       : rig_get_freq(rig_, RIG_VFO_CURR, &hz);
+  const int rc =
+      split ? rig_get_split_freq(rig_, RIG_VFO_CURR, &hz) : rig_get_freq(rig_, RIG_VFO_CURR, &hz);
   const Outcome got = check(rc, command, split ? "rig_get_split_freq" : "rig_get_freq", report);
   if (got != Outcome::Done) return got != Outcome::Lost;
   if (!radio::is_rig_frequency(hz)) {
     // Not a frequency: the rig's answers cannot be trusted, as rigctld's garbage fails its link.
-    lost_why_ = std::string(split ? "rig_get_split_freq" : "rig_get_freq") + " on " +
-                describe() + " answered " + std::to_string(hz) + " Hz";
+    lost_why_ = std::string(split ? "rig_get_split_freq" : "rig_get_freq") + " on " + describe() +
+                " answered " + std::to_string(hz) + " Hz";
     return false;
   }
   if (!report) return true;

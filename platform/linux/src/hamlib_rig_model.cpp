@@ -55,8 +55,6 @@ Result<HamlibRigModel> hamlib_rig_model(int model) {
   HamlibRigModel m;
   m.name = text_or_unknown(caps->mfg_name) + " " + text_or_unknown(caps->model_name);
   m.port = port_kind(caps->port_type);
-  m.serial_rate_min = caps->serial_rate_min;
-  m.serial_rate_max = caps->serial_rate_max;
   return m;
 }
 
@@ -66,10 +64,6 @@ std::string hamlib_rig_config_problem(const HamlibRigConfig& config) {
   if (config.baud == 0) return "";
   const std::string named = "model " + std::to_string(config.model) + " (" + model->name + ")";
   if (model->port != HamlibPortKind::Serial) return named + " is not a serial rig: baud must be 0";
-  if (config.baud < model->serial_rate_min || config.baud > model->serial_rate_max) {
-    return named + " takes " + std::to_string(model->serial_rate_min) + " to " +
-           std::to_string(model->serial_rate_max) + " baud";
-  }
   return "";
 }
 

@@ -142,15 +142,15 @@ TEST(RadioConfig, ADirectRigIsCheckedAgainstHamlibWhenLoaded) {
   EXPECT_NE(refusal("[radio]\ntx_rigctld = \"h:4534\"\nmodel = 1\ntx_model = 1\n")
                 .find("[radio].tx_model"),
             std::string::npos);
-  EXPECT_NE(refusal("[radio]\ndevice = \"/dev/ttyUSB0\"\n").find("needs model"),
-            std::string::npos);
+  EXPECT_NE(refusal("[radio]\ndevice = \"/dev/ttyUSB0\"\n").find("needs model"), std::string::npos);
   EXPECT_NE(refusal("[radio]\nmodel = 1\ntx_baud = 9600\n").find("needs tx_model"),
             std::string::npos);
   const std::string not_serial = refusal("[radio]\nmodel = 1\nbaud = 9600\n");
   EXPECT_NE(not_serial.find("model 1 (Hamlib Dummy) is not a serial rig"), std::string::npos)
       << not_serial;
-  const std::string too_fast = refusal("[radio]\nmodel = 1020\nbaud = 115200\n");
-  EXPECT_NE(too_fast.find("takes 4800 to 38400 baud"), std::string::npos) << too_fast;
+  // Faster than Hamlib's caps say (4800 to 38400 for the IC-9700) is the rig's business: its
+  // USB CI-V runs at 115200, and Hamlib itself opens it so.
+  EXPECT_EQ(refusal("[radio]\nmodel = 3081\nbaud = 115200\n"), "accepted");
   EXPECT_NE(refusal("[radio]\nmodel = 1020\ndevice = \"/dev/ttyS0\"\ntx_model = 1020\n"
                     "tx_device = \"/dev/ttyS0\"\n")
                 .find("[radio].tx_device"),
