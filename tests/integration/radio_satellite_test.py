@@ -27,25 +27,20 @@ before or after still says what the rig holds.
 
 Usage: radio_satellite_test.py AZELTRACK"""
 import datetime
-import math
 import os
 import subprocess
 import sys
 import tempfile
 import time
 
-from skyfield.api import EarthSatellite, load, wgs84
-
 from daemon_harness import Checks, free_port, http_json, wait_until, stop_at_exit
+from satellite_doppler_oracle import (C_KM_S, GRID, LAT, LON, TLE, heard_hz, high_pass, iso,
+                                      range_rate_km_s, sent_hz, ut1_minus_utc_s)
 
 BIN = os.path.realpath(sys.argv[1])
-HERE = os.path.dirname(os.path.realpath(__file__))
-TLE = os.path.join(HERE, "..", "data", "sat", "iss_2024.tle")
 TMP = tempfile.mkdtemp(prefix="azt-radio-sat-")
-C_KM_S = 299792.458
 TOLERANCE_HZ = 5.0
 TURN_HZ = 20000.0
-GRID = "FN06HE"
 check = Checks()
 procs = []
 
@@ -55,61 +50,6 @@ LINEAR = {"downlink_mhz": 435.850, "uplink_mhz": 145.950, "mode": "linear"}
 
 
 stop_at_exit(procs, TMP)
-
-
-def locator_centre(grid):
-    """The centre of a six-character Maidenhead square (lat, lon) in degrees."""
-    g = grid.upper()
-    lon = -180 + (ord(g[0]) - 65) * 20 + int(g[2]) * 2 + (ord(g[4]) - 65) / 12 + 1 / 24
-    lat = -90 + (ord(g[1]) - 65) * 10 + int(g[3]) + (ord(g[5]) - 65) / 24 + 1 / 48
-    return lat, lon
-
-
-ts = load.timescale()
-name, line1, line2 = open(TLE, encoding="utf-8").read().splitlines()[:3]
-ISS = EarthSatellite(line1, line2, name, ts)
-LAT, LON = locator_centre(GRID)
-SITE = wgs84.latlon(LAT, LON, 0.0)
-
-
-def skyfield_time(unix_s):
-    return ts.from_datetime(datetime.datetime.fromtimestamp(unix_s, datetime.timezone.utc))
-
-
-def range_rate_km_s(unix_s):
-    """d|r|/dt of the satellite seen from the site (the same in any frame)."""
-    seen = (ISS - SITE).at(skyfield_time(unix_s))
-    r = seen.position.km
-    v = seen.velocity.km_per_s
-    return sum(a * b for a, b in zip(r, v)) / math.sqrt(sum(a * a for a in r))
-
-
-def heard_hz(f_hz, unix_s):
-    return f_hz / (1 + range_rate_km_s(unix_s) / C_KM_S)
-
-
-def sent_hz(f_hz, unix_s):
-    return f_hz / (1 - range_rate_km_s(unix_s) / C_KM_S)
-
-
-def high_pass():
-    """(rise, set) in Unix seconds of the first pass after the elements' epoch above 40°."""
-    t0 = ISS.epoch
-    t, events = ISS.find_events(SITE, t0, t0 + 1.0, altitude_degrees=0.0)
-    rise, peak = None, 0.0
-    for ti, e in zip(t, events):
-        if e == 0:
-            rise = ti
-        elif e == 1 and rise is not None:
-            peak = (ISS - SITE).at(ti).altaz()[0].degrees
-        elif e == 2 and rise is not None and peak > 40.0:
-            return rise.utc_datetime().timestamp(), ti.utc_datetime().timestamp()
-    sys.exit("no pass above 40° within a day of the elements' epoch")
-
-
-def iso(unix_s):
-    return datetime.datetime.fromtimestamp(unix_s, datetime.timezone.utc).strftime(
-        "%Y-%m-%dT%H:%M:%SZ")
 
 
 def write_config(path, web, rig, transmitter, dut1_s):
@@ -242,7 +182,7 @@ def turn_the_dial(transmitter, before, sign):
 
 started = time.monotonic()
 rise, setting = high_pass()
-DUT1_S = float(skyfield_time((rise + setting) / 2).dut1)
+DUT1_S = ut1_minus_utc_s((rise + setting) / 2)
 print(f"pass {iso(rise)} to {iso(setting)} over {GRID} ({LAT:.4f}, {LON:.4f}), "
       f"UT1-UTC {DUT1_S:.4f} s")
 

@@ -46,22 +46,23 @@ function badge(id, cls, word) {
   setText(b, word);
 }
 
-// "up", "connecting", "down: why" or "off" (no rigctld in the file).
+// "up", "connecting", "down: why" or "off" (no rig in the file).
 function linkWords(link) {
   const l = String(link || 'off');
   if (l === 'up') return ['b-fix', 'LINK UP', 'the rig answers'];
-  if (l === 'connecting') return ['', 'CONNECTING', 'connecting to rigctld…'];
+  if (l === 'connecting') return ['', 'CONNECTING', 'connecting to the rig…'];
   if (l.startsWith('down')) return ['b-bad', 'LINK DOWN', l.replace(/^down:?\s*/, '') || 'no reason given'];
-  return ['b-off', 'NO RIG', 'no rig: [radio] rigctld is empty'];
+  return ['b-off', 'NO RIG', 'no rig: [radio] rigctld and model are empty'];
 }
+
 
 function renderLink(r) {
   const [cls, word, why] = linkWords(r.link);
   badge('radio-badge', cls, word);
   setText('radio-link-text', r.link && String(r.link).startsWith('down') ? `${why} (retrying)` : why);
-  setText('radio-rigctld', r.rigctld || 'none');
+  setText('radio-rigctld', r.rig || 'none');
   $('radio-tx-link-row').hidden = !r.tx_link;
-  if (r.tx_link) setText('radio-tx-link', `${r.tx_rigctld || ''} ${linkWords(r.tx_link)[2]}`.trim());
+  if (r.tx_link) setText('radio-tx-link', `${r.tx_rig || ''} ${linkWords(r.tx_link)[2]}`.trim());
   const mode = r.eme_mode;
   const words = { off: 'off: azeltrack writes nothing to the rig', satellite: 'the tracked satellite’s transmitter',
     eme: `the Moon’s echo${EME[mode] ? `: ${EME[mode]}` : ''}` };

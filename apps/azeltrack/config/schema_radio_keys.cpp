@@ -1,6 +1,6 @@
-// The schema's radio keys: the rig kept on frequency through rigctld, the satellites'
-// transmitters, and WSJT-X's UDP messages (radio_config.cpp and wsjtx_config.cpp read them;
-// docs/radio.md).
+// The schema's radio keys: the rig kept on frequency through rigctld or libhamlib, the
+// satellites' transmitters, and WSJT-X's UDP messages (radio_config.cpp and wsjtx_config.cpp read
+// them; docs/radio.md).
 #include <array>
 
 #include "config/schema_keys.hpp"
@@ -12,17 +12,50 @@ constexpr std::array<std::string_view, 3> kDoppler{"off", "satellite", "eme"};
 constexpr std::array<std::string_view, 5> kEmeModes{"dx", "self", "constant", "on_dx", "call_dx"};
 constexpr std::array<std::string_view, 3> kTransponders{"fm", "linear", "linear_inverting"};
 
-constexpr std::array<KeySpec, 7> kRadio{{
+constexpr std::array<KeySpec, 13> kRadio{{
     {.key = "rigctld",
      .type = KeyType::Text,
      .default_toml = "\"\"",
      .help = "the rig through Hamlib's rigctld: `\"HOST:PORT\"` (rigctld's port is 4532); "
-             "empty: no rig"},
+             "empty: no rig, or the rig is `model`"},
+    {.key = "model",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 100000.0),
+     .default_toml = "0",
+     .help = "or the rig through libhamlib directly: its Hamlib model number (`rigctl -l`: 1 "
+             "the dummy, 3073 IC-7300, 3081 IC-9700, 1020 FT-817, …); 0: none. Not with "
+             "`rigctld`; checked against Hamlib's list when the file is loaded "
+             "([radio.md](radio.md#through-rigctld-or-directly))"},
+    {.key = "device",
+     .type = KeyType::Text,
+     .default_toml = "\"\"",
+     .help = "with `model`: the rig's CAT port, a serial device (`/dev/ttyUSB0`, better "
+             "`/dev/serial/by-id/…`); empty: the model's default"},
+    {.key = "baud",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 1000000.0),
+     .default_toml = "0",
+     .help = "with `model`: the serial speed (as set on the rig); 0: the model's default"},
     {.key = "tx_rigctld",
      .type = KeyType::Text,
      .default_toml = "\"\"",
-     .help = "a second rig for the uplink (`\"HOST:PORT\"`); empty: the uplink goes to "
-             "`rigctld`'s split VFO"},
+     .help = "a second rig for the uplink (`\"HOST:PORT\"`); empty: the uplink goes to the "
+             "rig's split VFO (or to `tx_model`)"},
+    {.key = "tx_model",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 100000.0),
+     .default_toml = "0",
+     .help = "or the uplink's rig through libhamlib directly, as `model`; 0: none. Not with "
+             "`tx_rigctld`"},
+    {.key = "tx_device",
+     .type = KeyType::Text,
+     .default_toml = "\"\"",
+     .help = "with `tx_model`: the uplink rig's CAT port (not `device`)"},
+    {.key = "tx_baud",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 1000000.0),
+     .default_toml = "0",
+     .help = "with `tx_model`: its serial speed; 0: the model's default"},
     {.key = "doppler",
      .type = KeyType::Choice,
      .choices = kDoppler,
@@ -107,7 +140,8 @@ constexpr std::array<SectionSpec, 3> kSections{{
      .chapter = Chapter::Radio,
      .keys = kRadio,
      .title = "The rig",
-     .help = "Doppler to the rig over Hamlib's rigctld ([radio.md](radio.md))."},
+     .help = "Doppler to the rig over Hamlib's rigctld or libhamlib directly "
+             "([radio.md](radio.md))."},
     {.name = "satellites.transmitter",
      .chapter = Chapter::Radio,
      .array_of_tables = true,

@@ -140,7 +140,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
 }
 
 std::unique_ptr<StationRadio> StationDaemon::make_radio() {
-  if (!config_.radio.rigctld && !config_.wsjtx.listen) return nullptr;
+  if (!config_.radio.has_rig() && !config_.wsjtx.listen) return nullptr;
   return std::make_unique<StationRadio>(
       io_, StationRadioParts{
                config_.radio, config_.wsjtx, *ephemeris_, config_.sky, [this] { return now_s(); },

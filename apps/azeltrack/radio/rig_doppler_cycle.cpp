@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "azt/astro/time_scales.hpp"
+#include "azt/linux/hamlib_rig_model.hpp"
 
 namespace azt::app {
 namespace {
@@ -27,6 +28,14 @@ nlohmann::json address_json(const std::optional<HostPort>& where) {
   return where ? nlohmann::json(where->text()) : nlohmann::json(nullptr);
 }
 
+/// How a rig is reached, in words: rigctld's address, or the Hamlib model opened directly.
+nlohmann::json rig_json(const std::optional<HostPort>& rigctld,
+                        const std::optional<linux_os::HamlibRigConfig>& hamlib) {
+  if (rigctld) return rigctld->text();
+  if (hamlib) return linux_os::describe_hamlib_rig(*hamlib);
+  return nullptr;
+}
+
 /// The satellite-frame frequencies the rig follows: {norad, downlink_mhz, uplink_mhz (null:
 /// receive only), mode}.
 nlohmann::json transmitter_json(const TransmitterConfig* t) {
@@ -41,8 +50,8 @@ nlohmann::json transmitter_json(const TransmitterConfig* t) {
 
 }  // namespace
 
-RigDopplerCycle::RigDopplerCycle(const RadioConfig& config, radio::RigctlSession& main,
-                                 radio::RigctlSession* uplink)
+RigDopplerCycle::RigDopplerCycle(const RadioConfig& config, radio::RigPort& main,
+                                 radio::RigPort* uplink)
     : config_(config), main_(main), uplink_(uplink) {}
 
 void RigDopplerCycle::run(const RadioInputs& in) {
@@ -86,7 +95,7 @@ void RigDopplerCycle::run_satellite(const RadioInputs& in) {
     planner_norad_ = t->norad;
     awaiting_dial_.reset();
   }
-  if (main_.link() != radio::RigLink::Up) return;
+  if (!main_.up()) return;
   const SatelliteCycle now{in.now_s, in.unix_s, in.satellite->range_rate_km_s};
   if (t->transmitter.mode == radio::TransponderMode::Fm) return plan_satellite(now, std::nullopt);
   // Track the knob: read the dial first and decide on its answer (on_event), as Gpredict reads
@@ -197,6 +206,8 @@ nlohmann::json RigDopplerCycle::to_json() const {
   return {{"doppler", std::string(doppler_source_name(config_.doppler))},
           {"rigctld", address_json(config_.rigctld)},
           {"tx_rigctld", address_json(config_.tx_rigctld)},
+          {"rig", rig_json(config_.rigctld, config_.hamlib)},
+          {"tx_rig", rig_json(config_.tx_rigctld, config_.tx_hamlib)},
           {"eme_mode",
            eme ? nlohmann::json(radio::eme_mode_name(config_.eme_mode)) : nlohmann::json(nullptr)},
           {"transmitter", transmitter_json(transmitter_)},

@@ -2,8 +2,9 @@
 // What the station writes to its rig each radio cycle (docs/radio.md "In the daemon"): the
 // tracked satellite's transmitter through the core's SatelliteDopplerPlanner, or the Moon's echo
 // Doppler through WSJT-X's EME modes (azt/radio/eme_doppler_modes.hpp). No I/O of its own: it
-// queues frequencies on one or two RigctlSessions (the rigctld links carry them) and is told what
-// the rigs answered, so the tests drive it with sessions fed by hand and a clock of their own.
+// queues frequencies on one or two RigPorts (rigctld's sessions or libhamlib's workers carry
+// them) and is told what the rigs answered, so the tests drive it with sessions fed by hand and a
+// clock of their own.
 //
 // EME writes: a leg is written when its whole-Hz frequency differs from the last queued one
 // (rigctld takes whole Hz; the echo Doppler at 1296 MHz moves by a few Hz a minute, so this is a
@@ -24,7 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "azt/radio/eme_doppler_modes.hpp"
-#include "azt/radio/rigctl_session.hpp"
+#include "azt/radio/rig_port.hpp"
 #include "azt/radio/satellite_doppler_planner.hpp"
 #include "config/radio_config.hpp"
 
@@ -59,9 +60,9 @@ struct WrittenHz {
 
 class RigDopplerCycle {
  public:
-  /// `uplink`: the second rig ([radio] tx_rigctld), or null: the uplink is `main`'s split VFO.
-  RigDopplerCycle(const RadioConfig& config, radio::RigctlSession& main,
-                  radio::RigctlSession* uplink);
+  /// `uplink`: the second rig ([radio] tx_rigctld or tx_model), or null: the uplink is `main`'s
+  /// split VFO.
+  RigDopplerCycle(const RadioConfig& config, radio::RigPort& main, radio::RigPort* uplink);
 
   /// One cycle: queues what is due on the sessions (the caller flushes them).
   void run(const RadioInputs& in);
@@ -103,8 +104,8 @@ class RigDopplerCycle {
   void set_problem(std::string problem) { problem_ = std::move(problem); }
 
   const RadioConfig& config_;
-  radio::RigctlSession& main_;
-  radio::RigctlSession* uplink_;
+  radio::RigPort& main_;
+  radio::RigPort* uplink_;
   Leg rx_;
   Leg tx_;
   /// Track the knob: the cycle whose dial read is in flight; it is planned on the answer.

@@ -3,10 +3,11 @@
 #include "azt/astro/sky.hpp"
 #include "common/sky_report.hpp"
 #include "common/usage_error.hpp"
+#include "radio/rig_links.hpp"
 
 namespace azt::app {
 
-std::string link_text(const linux_os::RigctldLink* link) {
+std::string link_text(const linux_os::RigConnection* link) {
   if (link == nullptr) return "off";
   switch (link->state()) {
     case linux_os::RigLinkState::Connecting:
@@ -24,10 +25,10 @@ StationRadio::StationRadio(boost::asio::io_context& io, StationRadioParts parts)
       io_(io),
       timer_(io),
       wsjtx_(WsjtxParts{p_.wsjtx, p_.monotonic_s, p_.unix_s, p_.dx_grid, p_.log}) {
-  if (p_.radio.rigctld) main_ = make_link(RigRole::Main, *p_.radio.rigctld);
-  if (p_.radio.tx_rigctld) uplink_ = make_link(RigRole::Uplink, *p_.radio.tx_rigctld);
-  cycle_ = std::make_unique<RigDopplerCycle>(p_.radio, main_ ? main_->session() : idle_session_,
-                                             uplink_ ? &uplink_->session() : nullptr);
+  main_ = make_link(RigRole::Main);
+  uplink_ = make_link(RigRole::Uplink);
+  cycle_ = std::make_unique<RigDopplerCycle>(p_.radio, main_ ? main_->port() : idle_session_,
+                                             uplink_ ? &uplink_->port() : nullptr);
   if (auto opened = wsjtx_.open(io); !opened) throw UsageError(opened.error().message);
   if (main_) arm();
 }
@@ -42,27 +43,21 @@ void StationRadio::close() {
   uplink_.reset();
 }
 
-std::unique_ptr<linux_os::RigctldLink> StationRadio::make_link(RigRole role,
-                                                               const HostPort& where) {
-  linux_os::RigctldLinkConfig c;
-  c.host = where.host;
-  c.port = std::to_string(where.port);
-  const std::string name =
-      (role == RigRole::Main ? "radio: rigctld at " : "radio: uplink rigctld at ") + where.text();
-  return std::make_unique<linux_os::RigctldLink>(
-      io_, c, p_.monotonic_s,
-      linux_os::RigctldLinkEvents{
-          [this, role, name](linux_os::RigLinkState state, const std::string& why) {
-            on_link(role, state, why, name);
-          },
-          [this, role, name](const radio::RigEvent& e) {
-            if (e.kind == radio::RigEventKind::Refused) p_.log(name + ": " + e.message);
-            cycle_->on_event(role, e, p_.monotonic_s());
-            // An answer may queue writes (the dial read plans the satellite cycle), on either
-            // rig: the answering link sends its own, the other one is told here.
-            if (main_) main_->flush();
-            if (uplink_) uplink_->flush();
-          }});
+std::unique_ptr<linux_os::RigConnection> StationRadio::make_link(RigRole role) {
+  const std::string name = rig_link_name(p_.radio, role);
+  linux_os::RigLinkEvents events{
+      [this, role, name](linux_os::RigLinkState state, const std::string& why) {
+        on_link(role, state, why, name);
+      },
+      [this, role, name](const radio::RigEvent& e) {
+        if (e.kind == radio::RigEventKind::Refused) p_.log(name + ": " + e.message);
+        cycle_->on_event(role, e, p_.monotonic_s());
+        // An answer may queue writes (the dial read plans the satellite cycle), on either
+        // rig: the answering link sends its own, the other one is told here.
+        if (main_) main_->flush();
+        if (uplink_) uplink_->flush();
+      }};
+  return open_rig_link(io_, p_.radio, role, p_.monotonic_s, std::move(events));
 }
 
 void StationRadio::on_link(RigRole role, linux_os::RigLinkState state, const std::string& why,

@@ -1,7 +1,7 @@
 #pragma once
-// The station's radio (docs/radio.md "In the daemon"): the rig (or two) through rigctld, the
-// Doppler cycle every 200 ms, and WSJT-X's UDP messages. On the daemon's loop; nothing here
-// waits for a rig or a datagram. The radio never keys a transmitter.
+// The station's radio (docs/radio.md "In the daemon"): the rig (or two) through rigctld or
+// libhamlib (rig_links.hpp), the Doppler cycle every 200 ms, and WSJT-X's UDP messages. On the
+// daemon's loop; nothing here waits for a rig or a datagram. The radio never keys a transmitter.
 
 #include <functional>
 #include <memory>
@@ -12,7 +12,8 @@
 
 #include "azt/astro/ephemeris.hpp"
 #include "azt/linux/asio.hpp"
-#include "azt/linux/rigctld_link.hpp"
+#include "azt/linux/rig_connection.hpp"
+#include "azt/radio/rigctl_session.hpp"
 #include "config/radio_config.hpp"
 #include "config/sky_config.hpp"
 #include "radio/rig_doppler_cycle.hpp"
@@ -55,7 +56,7 @@ class StationRadio {
   void close();
 
  private:
-  std::unique_ptr<linux_os::RigctldLink> make_link(RigRole role, const HostPort& where);
+  std::unique_ptr<linux_os::RigConnection> make_link(RigRole role);
   void on_link(RigRole role, linux_os::RigLinkState state, const std::string& why,
                const std::string& name);
   void cycle();
@@ -65,8 +66,8 @@ class StationRadio {
   StationRadioParts p_;
   boost::asio::io_context& io_;
   boost::asio::steady_timer timer_;
-  std::unique_ptr<linux_os::RigctldLink> main_;
-  std::unique_ptr<linux_os::RigctldLink> uplink_;
+  std::unique_ptr<linux_os::RigConnection> main_;
+  std::unique_ptr<linux_os::RigConnection> uplink_;
   radio::RigctlSession idle_session_;  ///< stands in for the rig when none is configured
   std::unique_ptr<RigDopplerCycle> cycle_;
   WsjtxListener wsjtx_;
@@ -74,6 +75,6 @@ class StationRadio {
 };
 
 /// A link as the state says it: "off", "connecting", "up" or "down: why".
-std::string link_text(const linux_os::RigctldLink* link);
+std::string link_text(const linux_os::RigConnection* link);
 
 }  // namespace azt::app

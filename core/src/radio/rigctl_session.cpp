@@ -11,12 +11,7 @@
 namespace azt::radio {
 namespace {
 
-/// Above any rig Hamlib knows (its ranges stop in the hundreds of GHz) and well inside the
-/// integers a double holds exactly, so the whole-Hz text is always exact.
-constexpr double kMaxFrequencyHz = 1e12;
 constexpr std::size_t kMaxQuotedChars = 40;
-
-bool is_frequency(double hz) { return std::isfinite(hz) && hz > 0.0 && hz < kMaxFrequencyHz; }
 
 /// What rigctld sent, for a log line: printable ASCII only, cut short.
 std::string quoted(std::string_view line) {
@@ -126,14 +121,14 @@ void RigctlSession::remove_queued(RigCommand command) {
 }
 
 bool RigctlSession::set_rx_hz(double hz) {
-  if (!accepting() || !is_frequency(hz)) return false;
+  if (!accepting() || !is_rig_frequency(hz)) return false;
   enqueue(RigCommand::SetFreq, hz);
   read_back(RigCommand::GetFreq);
   return true;
 }
 
 bool RigctlSession::set_tx_hz(double hz) {
-  if (!accepting() || split_refused_ || !is_frequency(hz)) return false;
+  if (!accepting() || split_refused_ || !is_rig_frequency(hz)) return false;
   if (!split_on_) enqueue(RigCommand::SetSplit, 0.0);
   enqueue(RigCommand::SetSplitFreq, hz);
   read_back(RigCommand::GetSplitFreq);

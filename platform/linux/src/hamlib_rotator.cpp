@@ -18,51 +18,12 @@
 #include <hamlib/rotator.h>
 #pragma GCC diagnostic pop
 
+#include "hamlib_process.hpp"
+
 namespace azt::linux_os {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// Hamlib 4.5 keeps process-wide state without locks: the backend registry (rot_init), the list
-/// of opened rotators (rot_open/rot_close), the debug level and rigerror2()'s static buffer. All
-/// HamlibRotator instances take this lock around those calls; blocking I/O (get/set/stop) runs
-/// without it, so one slow box does not stall another.
-std::mutex& hamlib_global_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-/// Hamlib's one-line reason for a negative status. rigerror() is not used: in 4.5 it returns
-/// Hamlib's whole recent debug history (kilobytes, multi-line) even at RIG_DEBUG_NONE.
-std::string hamlib_error_text(int rc) {
-  std::string text;
-  {
-    const std::lock_guard lock(hamlib_global_mutex());
-    const char* reason = rigerror2(rc);
-    text = reason != nullptr ? reason : "unknown error";
-  }
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) {
-    text.pop_back();
-  }
-  return text + " (Hamlib status " + std::to_string(rc) + ")";
-}
-
-/// Errors that mean the link (port, box or peer) is gone or garbled, as opposed to a command
-/// the rotator refused (out of range, not implemented): the former close and reopen the handle.
-bool is_link_error(int rc) {
-  switch (-rc) {
-    case RIG_ETIMEOUT:
-    case RIG_EIO:
-    case RIG_EPROTO:
-    case RIG_EINTERNAL:
-    case RIG_BUSERROR:
-    case RIG_BUSBUSY:
-    case RIG_EPOWER:
-      return true;
-    default:
-      return false;
-  }
-}
 
 Result<bool> set_conf(ROT* rot, const char* name, const std::string& value,
                       const std::string& model) {
@@ -71,7 +32,7 @@ Result<bool> set_conf(ROT* rot, const char* name, const std::string& value,
   const int rc = rot_set_conf(rot, token, value.c_str());
   if (rc != RIG_OK) {
     return fail("setting " + std::string(name) + "=" + value + " on " + model +
-                " failed: " + hamlib_error_text(rc));
+                " failed: " + hamlib_status_text(rc));
   }
   return true;
 }
@@ -254,7 +215,7 @@ Result<bool> HamlibRotator::connect() {
   }
   if (rc != RIG_OK) {
     disconnect();
-    return fail("rot_open of " + describe() + " failed: " + hamlib_error_text(rc));
+    return fail("rot_open of " + describe() + " failed: " + hamlib_status_text(rc));
   }
   return true;
 }
@@ -347,8 +308,8 @@ void HamlibRotator::poll_position() {
 
 /// Records a failed call; closes the handle on a link error. Returns true if the link dropped.
 bool HamlibRotator::handle_failure(int rc, const std::string& what) {
-  const std::string error = what + " on " + describe() + ": " + hamlib_error_text(rc);
-  if (!is_link_error(rc)) {
+  const std::string error = what + " on " + describe() + ": " + hamlib_status_text(rc);
+  if (!is_hamlib_link_error(rc)) {
     record_error(error);
     return false;
   }

@@ -20,7 +20,7 @@ asio::steady_timer::duration seconds(double s) {
 }  // namespace
 
 RigctldLink::RigctldLink(asio::io_context& io, RigctldLinkConfig config,
-                         std::function<double()> now_s, RigctldLinkEvents events)
+                         std::function<double()> now_s, RigLinkEvents events)
     : resolver_(io),
       socket_(io),
       retry_timer_(io),

@@ -105,5 +105,61 @@ TEST(RadioConfig, BadValuesAreRefusedByName) {
   EXPECT_NE(refusal("[wsjtx]\nlisten = \"2237\"\n").find("[wsjtx].listen"), std::string::npos);
 }
 
+TEST(RadioConfig, ARigThroughLibhamlibIsReadWithItsPortAndSpeed) {
+  const RadioConfig dummy = from("[radio]\nmodel = 1\ndoppler = \"eme\"\ndial_mhz = 1296.1\n");
+  EXPECT_FALSE(dummy.rigctld);
+  ASSERT_TRUE(dummy.hamlib);
+  EXPECT_EQ(dummy.hamlib->model, 1);
+  EXPECT_EQ(dummy.hamlib->device, "");
+  EXPECT_EQ(dummy.hamlib->baud, 0);
+  EXPECT_TRUE(dummy.has_rig());
+  EXPECT_FALSE(dummy.tx_hamlib);
+
+  const RadioConfig pair = from(
+      "[radio]\nmodel = 1020\ndevice = \"/dev/ttyUSB0\"\nbaud = 38400\n"
+      "tx_model = 1041\ntx_device = \"/dev/ttyUSB1\"\n");
+  ASSERT_TRUE(pair.hamlib);
+  EXPECT_EQ(pair.hamlib->model, 1020);
+  EXPECT_EQ(pair.hamlib->device, "/dev/ttyUSB0");
+  EXPECT_EQ(pair.hamlib->baud, 38400);
+  ASSERT_TRUE(pair.tx_hamlib);
+  EXPECT_EQ(pair.tx_hamlib->model, 1041);
+  EXPECT_EQ(pair.tx_hamlib->device, "/dev/ttyUSB1");
+
+  // Either way for each rig: the rig through rigctld, the uplink's directly.
+  const RadioConfig mixed = from("[radio]\nrigctld = \"h:4532\"\ntx_model = 1\n");
+  EXPECT_TRUE(mixed.rigctld);
+  EXPECT_FALSE(mixed.hamlib);
+  EXPECT_TRUE(mixed.tx_hamlib);
+}
+
+TEST(RadioConfig, ADirectRigIsCheckedAgainstHamlibWhenLoaded) {
+  const std::string unknown = refusal("[radio]\nmodel = 99999\n");
+  EXPECT_NE(unknown.find("[radio].model"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("Hamlib has no rig model 99999"), std::string::npos) << unknown;
+  const std::string both = refusal("[radio]\nrigctld = \"h:4532\"\nmodel = 1\n");
+  EXPECT_NE(both.find("both name the rig"), std::string::npos) << both;
+  EXPECT_NE(refusal("[radio]\ntx_rigctld = \"h:4534\"\nmodel = 1\ntx_model = 1\n")
+                .find("[radio].tx_model"),
+            std::string::npos);
+  EXPECT_NE(refusal("[radio]\ndevice = \"/dev/ttyUSB0\"\n").find("needs model"), std::string::npos);
+  EXPECT_NE(refusal("[radio]\nmodel = 1\ntx_baud = 9600\n").find("needs tx_model"),
+            std::string::npos);
+  const std::string not_serial = refusal("[radio]\nmodel = 1\nbaud = 9600\n");
+  EXPECT_NE(not_serial.find("model 1 (Hamlib Dummy) is not a serial rig"), std::string::npos)
+      << not_serial;
+  // Faster than Hamlib's caps say (4800 to 38400 for the IC-9700) is the rig's business: its
+  // USB CI-V runs at 115200, and Hamlib itself opens it so.
+  EXPECT_EQ(refusal("[radio]\nmodel = 3081\nbaud = 115200\n"), "accepted");
+  EXPECT_NE(refusal("[radio]\nmodel = 1020\ndevice = \"/dev/ttyS0\"\ntx_model = 1020\n"
+                    "tx_device = \"/dev/ttyS0\"\n")
+                .find("[radio].tx_device"),
+            std::string::npos);
+  EXPECT_NE(refusal("[radio]\ntx_model = 1\n").find("no rig"), std::string::npos);
+  EXPECT_NE(refusal("[radio]\nmodel = -1\n").find("[radio].model"), std::string::npos);
+  const std::string no_rig = refusal("[radio]\ndoppler = \"satellite\"\n");
+  EXPECT_NE(no_rig.find("model = N"), std::string::npos) << no_rig;
+}
+
 }  // namespace
 }  // namespace azt::app

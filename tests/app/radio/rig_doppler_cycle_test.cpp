@@ -9,6 +9,7 @@
 #include <string>
 
 #include "azt/astro/time_scales.hpp"
+#include "azt/radio/rigctl_session.hpp"
 
 namespace azt::app {
 namespace {

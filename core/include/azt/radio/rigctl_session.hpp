@@ -30,6 +30,8 @@
 #include <string_view>
 #include <vector>
 
+#include "azt/radio/rig_port.hpp"
+
 namespace azt::radio {
 
 enum class RigLink {
@@ -39,39 +41,16 @@ enum class RigLink {
   Failed,     ///< timeout or garbage: the transport must close and reconnect
 };
 
-enum class RigCommand { ChkVfo, GetFreq, SetFreq, SetSplit, GetSplitFreq, SetSplitFreq };
-
-/// The VFO that transmits in split: VFOB on most rigs, Sub on rigs with main/sub receivers.
-enum class SplitTxVfo { VfoB, Sub };
-
 struct RigctlOptions {
   double reply_timeout_s = 2.0;  ///< rigctld answers a dummy rig in 20 ms, a real one in < 1 s
   SplitTxVfo split_tx_vfo = SplitTxVfo::VfoB;
-};
-
-enum class RigEventKind {
-  VfoMode,     ///< `\chk_vfo` answered: `vfo_mode` says which
-  RxRead,      ///< `f` answered `hz`
-  TxRead,      ///< `i` answered `hz`
-  Written,     ///< a set answered RPRT 0
-  Refused,     ///< a set or get answered RPRT `rprt` (non-zero); the link stays up
-  LinkFailed,  ///< the link failed: `message` says why
-};
-
-struct RigEvent {
-  RigEventKind kind = RigEventKind::Written;
-  RigCommand command = RigCommand::GetFreq;
-  double hz = 0.0;
-  int rprt = 0;
-  bool vfo_mode = false;
-  std::string message;  ///< for Refused and LinkFailed: a sentence for the log
 };
 
 /// The line that sends `command` (with its '\n'): `vfo_mode` adds `currVFO`, `hz` is rounded to
 /// whole Hz for the sets.
 std::string rigctl_command_line(RigCommand command, double hz, bool vfo_mode, SplitTxVfo tx_vfo);
 
-class RigctlSession {
+class RigctlSession final : public RigPort {
  public:
   explicit RigctlSession(RigctlOptions options = {}) : options_(options) {}
 
@@ -82,11 +61,11 @@ class RigctlSession {
 
   /// Queue a receive (main VFO) frequency. False, and nothing queued, if the link is down or
   /// failed, or `hz` is not a frequency (not finite, ≤ 0, ≥ 1 THz).
-  bool set_rx_hz(double hz);
+  bool set_rx_hz(double hz) override;
   /// Queue a transmit (split) frequency; also false when the rig refused split.
-  bool set_tx_hz(double hz);
+  bool set_tx_hz(double hz) override;
   /// Queue a read of the main VFO (`f`): the dial, to see whether the operator turned the knob.
-  bool read_rx();
+  bool read_rx() override;
   /// Queue a read of the split frequency (`i`); false until split is on.
   bool read_tx();
 
@@ -99,6 +78,7 @@ class RigctlSession {
   std::optional<RigEvent> on_tick(double now_s);
 
   [[nodiscard]] RigLink link() const { return link_; }
+  [[nodiscard]] bool up() const override { return link_ == RigLink::Up; }
   [[nodiscard]] bool vfo_mode() const { return vfo_mode_; }
   [[nodiscard]] bool split_on() const { return split_on_; }
   [[nodiscard]] bool split_refused() const { return split_refused_; }

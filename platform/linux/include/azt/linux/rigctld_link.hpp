@@ -15,6 +15,7 @@
 #include <string>
 
 #include "azt/linux/asio.hpp"
+#include "azt/linux/rig_connection.hpp"
 #include "azt/radio/rigctl_session.hpp"
 
 namespace azt::linux_os {
@@ -28,21 +29,12 @@ struct RigctldLinkConfig {
   radio::RigctlOptions session;
 };
 
-enum class RigLinkState { Connecting, Up, Down };
-
-struct RigctldLinkEvents {
-  /// The link came up (`why` empty) or went down (`why` says why): once per change.
-  std::function<void(RigLinkState state, const std::string& why)> link;
-  /// Every answer the session understood (reads, writes, refusals).
-  std::function<void(const radio::RigEvent&)> event;
-};
-
-class RigctldLink {
+class RigctldLink final : public RigConnection {
  public:
   /// Starts connecting at once; events arrive on the loop. `now_s`: a monotonic clock.
   RigctldLink(boost::asio::io_context& io, RigctldLinkConfig config, std::function<double()> now_s,
-              RigctldLinkEvents events);
-  ~RigctldLink();
+              RigLinkEvents events);
+  ~RigctldLink() override;
   RigctldLink(const RigctldLink&) = delete;
   RigctldLink& operator=(const RigctldLink&) = delete;
   RigctldLink(RigctldLink&&) = delete;
@@ -51,13 +43,14 @@ class RigctldLink {
   /// The session, to queue frequencies and reads; call flush() after queueing.
   radio::RigctlSession& session() { return session_; }
   [[nodiscard]] const radio::RigctlSession& session() const { return session_; }
+  radio::RigPort& port() override { return session_; }
   /// Sends the next queued line if none is in flight.
-  void flush();
+  void flush() override;
 
-  [[nodiscard]] RigLinkState state() const { return state_; }
+  [[nodiscard]] RigLinkState state() const override { return state_; }
   /// Why the link is down ("" while up or before the first failure).
-  [[nodiscard]] const std::string& down_reason() const { return down_reason_; }
-  [[nodiscard]] std::string describe() const;
+  [[nodiscard]] const std::string& down_reason() const override { return down_reason_; }
+  [[nodiscard]] std::string describe() const override;
 
  private:
   void connect();
@@ -73,7 +66,7 @@ class RigctldLink {
   boost::asio::streambuf in_;
   RigctldLinkConfig config_;
   std::function<double()> now_s_;
-  RigctldLinkEvents events_;
+  RigLinkEvents events_;
   radio::RigctlSession session_;
   RigLinkState state_ = RigLinkState::Connecting;
   std::string down_reason_;
