@@ -4,6 +4,7 @@
 // and started again. The loop is a real Asio loop; the adapter's worker thread makes the calls.
 
 #include "azt/linux/hamlib_rig.hpp"
+#include "azt/linux/hamlib_rig_model.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -188,8 +189,10 @@ TEST(HamlibRig, TheDummyRigTakesBothLegsAndAnswersInTheOrderAsked) {
   ASSERT_TRUE(rig.read_rx());
   ASSERT_TRUE(rig.set_tx_hz(437800999.0));
   rig.flush();
-  ASSERT_TRUE(run_until(io, [&] { return heard.count(RigEventKind::TxRead) == 2; }));
-  EXPECT_EQ(heard.count(RigEventKind::RxRead), 2U);
+  // One turn carries both: the split leg first, then the dial, as rigctld's session sends them.
+  ASSERT_TRUE(run_until(io, [&] {
+    return heard.count(RigEventKind::TxRead) == 2 && heard.count(RigEventKind::RxRead) == 2;
+  }));
   EXPECT_EQ(heard.events.size(), 8U) << "set_split_freq, get_split_freq and get_freq only";
   EXPECT_EQ(heard.count(RigEventKind::Refused), 0U);
 }
@@ -284,6 +287,27 @@ TEST(HamlibRig, ShutdownWaitsForACallInFlightOnlyAsLongAsItWasTold) {
   io.run_for(std::chrono::milliseconds(50));
   EXPECT_TRUE(heard.links.empty()) << "nothing is said once the owner is gone";
   ::close(listener);  // the left worker's rig_open ends, it closes the rig and the thread ends
+}
+
+// Hamlib 4.5's rig_check_backend registers a loaded backend a second time when the model number
+// is in its range but not one of its rigs, and rig_register then exits the process ("Hash
+// collision!!! Fatal error!!"). A settings save naming model 1070 after a Yaesu rig was checked
+// must be a clear error, not the end of the daemon (config_fuzz found it).
+TEST(HamlibRigModel, AModelMissingFromALoadedBackendIsAnErrorNotAnExit) {
+  const auto ft817 = hamlib_rig_model(1020);
+  ASSERT_TRUE(ft817) << ft817.error().message;
+  EXPECT_NE(ft817->name.find("817"), std::string::npos) << ft817->name;
+  EXPECT_EQ(ft817->port, HamlibPortKind::Serial);
+  for (int i = 0; i < 2; ++i) {
+    const auto missing = hamlib_rig_model(1070);
+    ASSERT_FALSE(missing);
+    EXPECT_NE(missing.error().message.find("no rig model 1070"), std::string::npos);
+  }
+  EXPECT_FALSE(hamlib_rig_model(0));
+  EXPECT_FALSE(hamlib_rig_model(-5));
+  EXPECT_TRUE(hamlib_rig_model(1020)) << "the backend is still there";
+  EXPECT_NE(hamlib_rig_config_problem(HamlibRigConfig{1, "", 9600}).find("not a serial rig"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -42,13 +42,14 @@ std::string describe_hamlib_rig(const HamlibRigConfig& config) {
 Result<HamlibRigModel> hamlib_rig_model(int model) {
   quiet_hamlib();
   const std::lock_guard lock(hamlib_global_mutex());
-  // rig_get_caps only sees backends already registered; rig_check_backend registers the one the
-  // model number belongs to (Hamlib's backends are built into the library: nothing is read).
-  const rig_caps* caps = nullptr;
-  if (model > 0) {
-    const auto number = static_cast<rig_model_t>(model);
-    if (rig_check_backend(number) == RIG_OK) caps = rig_get_caps(number);
-  }
+  // rig_get_caps only sees backends already registered. Every backend is registered once, here
+  // (they are built into the library: nothing is read). Not rig_check_backend per model: in
+  // Hamlib 4.5 it registers a loaded backend again when the model number is not one of its rigs,
+  // and the duplicate makes rig_register print "Hash collision!!! Fatal error!!" and exit(1), so
+  // a second file naming model 1070 would end the daemon (found by config_fuzz).
+  static std::once_flag registered;
+  std::call_once(registered, [] { rig_load_all_backends(); });
+  const rig_caps* caps = model > 0 ? rig_get_caps(static_cast<rig_model_t>(model)) : nullptr;
   if (caps == nullptr) {
     return fail("Hamlib has no rig model " + std::to_string(model) + " (`rigctl -l` lists them)");
   }
