@@ -1,8 +1,9 @@
 // libFuzzer target for the EncoderHub frame codec (reliability notes, R24: a fuzz target for
 // every parser). Arbitrary bytes go through HubDecoder under every policy and both start-up
 // modes; every outcome is checked against invariants rather than expected values:
-// - an accepted frame is a valid reading (bits 9..16, raw < 2^bits, angle in [0, 360)) of a
-//   version the policy allows, and re-encoding it gives back exactly the bytes of its chunk;
+// - an accepted frame is a valid reading (bits 9..16, raw < 2^bits, angle in [0, 360); or an
+//   axis error with no angle) of a version the policy allows, and re-encoding it gives back exactly
+//   the bytes of its chunk;
 // - the streaming decoder agrees with decode_hub_chunk on every chunk after the first delimiter;
 // - each 0x00 adds exactly one to exactly one counter.
 // The input is also read as readings to round-trip through the encoder.
@@ -43,9 +44,12 @@ void check_accepted(const proto::HubFrame& frame, const std::vector<uint8_t>& ch
   const proto::HubReading& r = frame.reading;
   require(proto::hub_reading_valid(r));
   require(policy_allows(accept, frame.version));
-  const double az_deg = proto::hub_raw_to_deg(r.az_raw, r.az_bits);
-  const double el_deg = proto::hub_raw_to_deg(r.el_raw, r.el_bits);
-  require(az_deg >= 0.0 && az_deg < 360.0 && el_deg >= 0.0 && el_deg < 360.0);
+  // An axis that reports an error (CRC-8 frames: nibble 1) has no angle: hub_raw_to_deg says -1.
+  const auto angle_ok = [](uint16_t raw, uint8_t bits, proto::HubAxisError error) {
+    const double deg = proto::hub_raw_to_deg(raw, bits);
+    return error != proto::HubAxisError::None ? deg == -1.0 : deg >= 0.0 && deg < 360.0;
+  };
+  require(angle_ok(r.az_raw, r.az_bits, r.az_error) && angle_ok(r.el_raw, r.el_bits, r.el_error));
   uint8_t again[proto::kHubMaxFrameBytes] = {};
   const size_t n = proto::encode_hub_frame(r, frame.version, again, sizeof again);
   require(n == chunk.size() + 1 && again[n - 1] == 0);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A short, bounded fuzzing run of the EncoderHub decoder target (fuzz/hub_decoder_fuzz.cpp) from
 # a seed corpus this script writes: valid frames of both versions, garbage before a frame, empty
-# frames, an overlong run, a truncated frame. A libFuzzer build runs for a bounded number of
+# frames, an overlong run, a truncated frame, an axis error. A libFuzzer build runs for a bounded number of
 # executions and seconds; a standalone build (AZT_FUZZ_STANDALONE, any compiler) replays the
 # corpus once. Any failed invariant aborts the target and fails this test.
 # Usage: fuzz_smoke.sh path/to/hub_decoder_fuzz [RUNS] [SECONDS]
@@ -26,6 +26,8 @@ printf '%b' "\x00\x00$crc_frame\x00" >"$tmp/corpus/empty"
 head -c 300 /dev/zero | tr '\0' 'Z' >"$tmp/corpus/overlong"
 printf '%b' "\x00$seed_frame" >>"$tmp/corpus/overlong"
 printf '\x03\xcc\x04\x08\x01\x00\x06\x8c\x04\x01\x08\x01\x00' >"$tmp/corpus/truncated_bad_nibble"
+# A CRC-8 frame whose el axis reports error 2 (nibble 1): no angle (a smoke once found it).
+printf '\x00\x02\x01\x02\x02\x01\x02\xfc\x00' >"$tmp/corpus/axis_error"
 
 # (Into a file first: with pipefail, grep -q closing the pipe early would fail the pipeline.)
 "$bin" -help=1 >"$tmp/help" 2>&1
