@@ -153,8 +153,7 @@ std::size_t weakest(const LeastSquaresFit& lsq, const TermMask& mask, double max
   return kN;
 }
 
-std::string undetermined_together(const LeastSquaresFit& lsq, const TermMask& mask,
-                                  std::size_t j) {
+std::string undetermined_together(const LeastSquaresFit& lsq, const TermMask& mask, std::size_t j) {
   if (lsq.singular) return "the scans cannot separate it from the other fitted terms";
   std::size_t k = 0;
   for (std::size_t i = 0; i < j; ++i) k += mask.at(i) ? 1U : 0U;
@@ -165,7 +164,8 @@ std::string undetermined_together(const LeastSquaresFit& lsq, const TermMask& ma
 
 std::string nothing_to_fit(const std::array<std::string, kN>& held) {
   std::string out = "no term can be fitted:";
-  for (std::size_t i = 0; i < kN; ++i) out += std::string(" ") + term_name(i) + ": " + held.at(i) + ";";
+  for (std::size_t i = 0; i < kN; ++i)
+    out += std::string(" ") + term_name(i) + ": " + held.at(i) + ";";
   out.pop_back();
   return out;
 }
@@ -206,8 +206,8 @@ Result<PointingFit> fit_pointing_model(const std::vector<PointingObservation>& o
                 std::to_string(options.min_scans) + " needed");
   }
   const Factors f = factors(used);
-  TermSelection sel =
-      select_terms(normal_matrix(used, f, start), options.fit, scans, span_of(used), options.limits);
+  TermSelection sel = select_terms(normal_matrix(used, f, start), options.fit, scans, span_of(used),
+                                   options.limits);
   for (std::size_t round = 0; round <= kN; ++round) {
     if (std::none_of(sel.fitted.begin(), sel.fitted.end(), [](bool b) { return b; })) {
       return fail(nothing_to_fit(sel.held));

@@ -18,8 +18,9 @@ TermPartials term_partials(const control::AzEl& sky) {
   // +NPAE·sin E, +AN·sin A·sin E, −AW·cos A·sin E; elevation IE, AN·cos A, AW·sin A, SAG·cos E.
   const double a = sky.az_deg * kDegToRad, e = sky.el_deg * kDegToRad;
   TermPartials p;
-  p.xel = {std::cos(e), 0.0, -1.0, std::sin(e), std::sin(a) * std::sin(e),
-           -std::cos(a) * std::sin(e), 0.0};
+  p.xel = {
+      std::cos(e), 0.0, -1.0, std::sin(e), std::sin(a) * std::sin(e), -std::cos(a) * std::sin(e),
+      0.0};
   p.el = {0.0, 1.0, 0.0, 0.0, std::cos(a), std::sin(a), std::cos(e)};
   return p;
 }
@@ -38,18 +39,20 @@ SkyCoverage::SkyCoverage(double min_el_deg, double max_el_deg) {
   for (std::size_t j = 0; j < kTerms; ++j) normal_[j * kTerms + j] = kPrior;
 }
 
-void SkyCoverage::accumulate(Matrix& normal, const control::AzEl& sky, double weight) {
+void SkyCoverage::accumulate(Matrix& normal, const control::AzEl& sky, double weight, bool xel,
+                             bool el) {
   const TermPartials p = term_partials(sky);
+  const double wx = xel ? weight : 0.0, we = el ? weight : 0.0;
   for (std::size_t a = 0; a < kTerms; ++a) {
     for (std::size_t b = 0; b < kTerms; ++b) {
-      normal[a * kTerms + b] += weight * (p.xel[a] * p.xel[b] + p.el[a] * p.el[b]);
+      normal[a * kTerms + b] += wx * p.xel[a] * p.xel[b] + we * p.el[a] * p.el[b];
     }
   }
 }
 
-void SkyCoverage::add(const control::AzEl& sky, double weight) {
-  accumulate(normal_, sky, weight);
-  ++scans_;
+void SkyCoverage::add(const control::AzEl& sky, double weight, bool xel, bool el) {
+  accumulate(normal_, sky, weight, xel, el);
+  offsets_ += (xel ? 1U : 0U) + (el ? 1U : 0U);
 }
 
 double SkyCoverage::error_of(const Matrix& normal) const {

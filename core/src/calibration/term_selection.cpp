@@ -82,8 +82,8 @@ std::string not_separated(const std::vector<double>& n, const std::vector<std::s
                           std::size_t j, const Regression& r, const CoverageSpan& span) {
   const std::string like = resembled(n, taken, j, r);
   const std::string hint = coverage_hint(j, span);
-  std::string out = like.empty() ? "the scans barely see it"
-                                 : "the scans cannot tell it from " + like;
+  std::string out =
+      like.empty() ? "the scans barely see it" : "the scans cannot tell it from " + like;
   if (!hint.empty()) out += " (" + hint + ")";
   return out;
 }

@@ -57,7 +57,7 @@ struct PointingFit {
   double rms_before_deg = 0.0;  ///< the used observations' offsets on the sky with `start`
   double rms_deg = 0.0;         ///< and with the fitted terms
   double max_deg = 0.0;
-  std::size_t observations = 0;  ///< scans' worth used (a scan measures two offsets)
+  std::size_t observations = 0;                ///< scans' worth used (a scan measures two offsets)
   std::vector<ObservationResidual> residuals;  ///< one per observation, in order
 };
 

@@ -31,9 +31,11 @@ class SkyCoverage {
   /// beam_error_over_sky).
   explicit SkyCoverage(double min_el_deg = 10.0, double max_el_deg = 80.0);
 
-  /// A scan at `sky`; `weight` scales its information (1: one scan of unit noise).
-  void add(const control::AzEl& sky, double weight = 1.0);
-  [[nodiscard]] std::size_t scans() const { return scans_; }
+  /// A scan at `sky`; `weight` scales its information (1: one scan of unit noise). A cross
+  /// scan's line alone measures one offset: `xel` or `el` false leaves the other out.
+  void add(const control::AzEl& sky, double weight = 1.0, bool xel = true, bool el = true);
+  /// Scans' worth added (a line alone is half a scan).
+  [[nodiscard]] std::size_t scans() const { return offsets_ / 2; }
 
   /// The model's expected rms error over the sky per degree of scan noise. Until the scans
   /// determine every term it is dominated by a weak prior (each term known to 1/√kPrior degrees),
@@ -48,11 +50,12 @@ class SkyCoverage {
  private:
   using Matrix = std::array<double, kTerms * kTerms>;
   [[nodiscard]] double error_of(const Matrix& normal) const;
-  static void accumulate(Matrix& normal, const control::AzEl& sky, double weight);
+  static void accumulate(Matrix& normal, const control::AzEl& sky, double weight, bool xel = true,
+                         bool el = true);
 
   Matrix normal_{};
   Matrix sky_moments_{};  ///< mean over the grid of x·xᵀ + e·eᵀ
-  std::size_t scans_ = 0;
+  std::size_t offsets_ = 0;
 };
 
 }  // namespace azt::calibration
