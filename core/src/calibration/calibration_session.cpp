@@ -4,9 +4,9 @@
 
 namespace azt::calibration {
 
-CalibrationSession::CalibrationSession(SessionPlanner planner, SessionSetup setup,
+CalibrationSession::CalibrationSession(SessionPlanner planner, const SessionSetup& setup,
                                        const std::vector<ScanLogEntry>& earlier)
-    : planner_(std::move(planner)), setup_(std::move(setup)) {
+    : planner_(std::move(planner)), setup_(setup) {
   resume(earlier);
 }
 

@@ -8,7 +8,7 @@ namespace azt::calibration {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kLightM_s = 299792458.0;
+constexpr double kLightMPerS = 299792458.0;
 
 /// What an SNR of nothing (or of no noise) reads as.
 constexpr double kSnrLimitDb = 300.0;
@@ -19,7 +19,7 @@ double to_db(double ratio) { return 10.0 * std::log10(ratio); }
 
 double point_source_k(double flux_jy, double dish_m, double efficiency) {
   const double area_m2 = kPi * dish_m * dish_m / 4.0;
-  return efficiency * area_m2 * flux_jy * kJanskyW_m2Hz / (2.0 * kBoltzmannJ_K);
+  return efficiency * area_m2 * flux_jy * kJanskyWPerM2Hz / (2.0 * kBoltzmannJPerK);
 }
 
 double beam_coupling(double size_deg, double beamwidth_deg) {
@@ -30,9 +30,9 @@ double beam_coupling(double size_deg, double beamwidth_deg) {
 double disc_flux_jy(double brightness_k, double diameter_deg, double freq_hz) {
   const double radius_rad = diameter_deg * kPi / 360.0;
   const double solid_angle_sr = kPi * radius_rad * radius_rad;
-  const double flux_w = 2.0 * kBoltzmannJ_K * brightness_k * solid_angle_sr * freq_hz * freq_hz /
-                        (kLightM_s * kLightM_s);
-  return flux_w / kJanskyW_m2Hz;
+  const double flux_w = 2.0 * kBoltzmannJPerK * brightness_k * solid_angle_sr * freq_hz * freq_hz /
+                        (kLightMPerS * kLightMPerS);
+  return flux_w / kJanskyWPerM2Hz;
 }
 
 double radiometer_noise_db(double bandwidth_hz, double integration_s) {

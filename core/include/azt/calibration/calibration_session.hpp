@@ -69,7 +69,7 @@ struct SourceScans {
 class CalibrationSession {
  public:
   /// `earlier`: the rows of the session's log so far (a restart): they count as scanned.
-  CalibrationSession(SessionPlanner planner, SessionSetup setup,
+  CalibrationSession(SessionPlanner planner, const SessionSetup& setup,
                      const std::vector<ScanLogEntry>& earlier = {});
 
   /// What to do at `now_s`. While a scan runs, the same Scan step.

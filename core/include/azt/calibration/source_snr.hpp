@@ -23,8 +23,8 @@
 
 namespace azt::calibration {
 
-constexpr double kBoltzmannJ_K = 1.380649e-23;  ///< SI 2019, exact
-constexpr double kJanskyW_m2Hz = 1e-26;
+constexpr double kBoltzmannJPerK = 1.380649e-23;  ///< SI 2019, exact
+constexpr double kJanskyWPerM2Hz = 1e-26;
 
 /// What decides how loud a source is at the receiver.
 struct DishSetup {
