@@ -30,6 +30,7 @@ struct SimulateOptions {
   std::string to_az, to_el;
   std::string tle, sat;
   std::string source;
+  std::string sun_every_min = "0";
   bool json = false;
 };
 
@@ -153,7 +154,11 @@ int run_simulate(const SimulateOptions& o) {
   const double hours = parse_number_option("--hours", o.hours);
   if (hours <= 0.0 || hours > 48.0) throw UsageError("--hours must be in (0, 48]");
   if (o.scenario == "calibrate" || o.scenario == "scan") {
-    const CalibrationScenario c{o.from, hours, o.source, o.json};
+    const double sun_every_min = parse_number_option("--sun-every-min", o.sun_every_min);
+    if (sun_every_min < 0.0 || sun_every_min > 1440.0) {
+      throw UsageError("--sun-every-min must be in [0, 1440]");
+    }
+    const CalibrationScenario c{o.from, hours, o.source, sun_every_min, o.json};
     return o.scenario == "scan" ? run_scan_scenario(config, c) : run_calibrate_scenario(config, c);
   }
   const std::clock_t cpu_start = std::clock();
@@ -194,6 +199,9 @@ Runner add_simulate_command(CLI::App& app) {
   cmd->add_option("--tle", opts->tle, "pass: the element sets (TLE or OMM)");
   cmd->add_option("--sat", opts->sat, "pass: the satellite, by name or NORAD number");
   cmd->add_option("--source", opts->source, "scan: the source (sun, moon, a radio source)");
+  cmd->add_option("--sun-every-min", opts->sun_every_min,
+                  "calibrate: scan the Sun every N minutes while it is up (default 0: when it "
+                  "adds coverage, as the other sources)");
   cmd->add_flag("--json", opts->json, "One JSON line instead of indented JSON");
   return [opts] { return run_simulate(*opts); };
 }
