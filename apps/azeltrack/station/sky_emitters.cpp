@@ -20,8 +20,9 @@ std::optional<double> flux_at(const astro::RadioSource& s, std::int64_t mhz) {
   return s.flux_1296_jy;
 }
 
-SkyEmitter disc(const sim::SimulatedReceiver& receiver, const char* name, astro::Target target,
-                double brightness_k, double size_deg, std::int64_t mhz) {
+SkyEmitter disc(const sim::SimulatedReceiver& receiver, const char* name,
+                const astro::Target& target, double brightness_k, double size_deg,
+                std::int64_t mhz) {
   return {name, target, receiver.disc_k(brightness_k, size_deg), size_deg,
           gaussian_disc_flux_jy(brightness_k, size_deg, mhz)};
 }
