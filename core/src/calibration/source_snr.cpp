@@ -4,11 +4,10 @@
 #include <cmath>
 #include <iterator>
 
+#include "azt/calibration/noise_expectation.hpp"
+
 namespace azt::calibration {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kLightMPerS = 299792458.0;
 
 /// What an SNR of nothing (or of no noise) reads as.
 constexpr double kSnrLimitDb = 300.0;
@@ -17,22 +16,9 @@ double to_db(double ratio) { return 10.0 * std::log10(ratio); }
 
 }  // namespace
 
-double point_source_k(double flux_jy, double dish_m, double efficiency) {
-  const double area_m2 = kPi * dish_m * dish_m / 4.0;
-  return efficiency * area_m2 * flux_jy * kJanskyWPerM2Hz / (2.0 * kBoltzmannJPerK);
-}
-
 double beam_coupling(double size_deg, double beamwidth_deg) {
   const double w2 = beamwidth_deg * beamwidth_deg;
   return w2 / (w2 + size_deg * size_deg);
-}
-
-double disc_flux_jy(double brightness_k, double diameter_deg, double freq_hz) {
-  const double radius_rad = diameter_deg * kPi / 360.0;
-  const double solid_angle_sr = kPi * radius_rad * radius_rad;
-  const double flux_w = 2.0 * kBoltzmannJPerK * brightness_k * solid_angle_sr * freq_hz * freq_hz /
-                        (kLightMPerS * kLightMPerS);
-  return flux_w / kJanskyWPerM2Hz;
 }
 
 double radiometer_noise_db(double bandwidth_hz, double integration_s) {
@@ -56,7 +42,7 @@ SourceEstimate estimate_source(const std::string& name, double antenna_k, double
 
 SourceEstimate estimate_source(const SourceFlux& source, const DishSetup& dish,
                                const PointNoise& noise) {
-  const double t_a = point_source_k(source.flux_jy, dish.dish_m, dish.efficiency) *
+  const double t_a = point_antenna_k(source.flux_jy, dish.dish_m, dish.efficiency) *
                      beam_coupling(source.size_deg, dish.beamwidth_deg);
   return estimate_source(source.name, t_a, source.size_deg, dish, noise);
 }

@@ -6,14 +6,17 @@
 
 #include <cmath>
 
+#include "azt/calibration/noise_expectation.hpp"
+#include "azt/calibration/noise_sources.hpp"
+
 namespace azt::calibration {
 namespace {
 
 TEST(SourceSnr, PointSourceAntennaTemperatureIsEtaASOverTwoK) {
   // 1000 Jy on a 10 m dish at 60 %: 0.6 · 78.54 m² · 1e-23 W m⁻² Hz⁻¹ / (2 · 1.380649e-23 J/K).
-  EXPECT_NEAR(point_source_k(1000.0, 10.0, 0.6), 17.066, 0.001);
-  EXPECT_NEAR(point_source_k(2000.0, 10.0, 0.6), 2.0 * point_source_k(1000.0, 10.0, 0.6), 1e-12);
-  EXPECT_NEAR(point_source_k(1000.0, 20.0, 0.6), 4.0 * point_source_k(1000.0, 10.0, 0.6), 1e-12);
+  EXPECT_NEAR(point_antenna_k(1000.0, 10.0, 0.6), 17.066, 0.001);
+  EXPECT_NEAR(point_antenna_k(2000.0, 10.0, 0.6), 2.0 * point_antenna_k(1000.0, 10.0, 0.6), 1e-12);
+  EXPECT_NEAR(point_antenna_k(1000.0, 20.0, 0.6), 4.0 * point_antenna_k(1000.0, 10.0, 0.6), 1e-12);
 }
 
 TEST(SourceSnr, ASourceAsWideAsTheBeamCouplesHalf) {
@@ -25,7 +28,7 @@ TEST(SourceSnr, ASourceAsWideAsTheBeamCouplesHalf) {
 TEST(SourceSnr, TheQuietSunAtTwentyThreeCentimetres) {
   // A 0.53° disc at 170 000 K at 1296 MHz: 2kT·Ω·ν²/c² ≈ 5.9e5 Jy (59 solar flux units, the
   // quiet Sun's flux at 23 cm).
-  const double jy = disc_flux_jy(170000.0, 0.53, 1296e6);
+  const double jy = disc_flux_jy(170000.0, 0.53, 1296.0);
   EXPECT_NEAR(jy / 1e4, 59.0, 1.0);
 }
 

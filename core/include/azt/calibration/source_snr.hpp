@@ -1,6 +1,7 @@
 #pragma once
 // Which sources a station can scan (docs/calibration.md): each source's antenna temperature from
-// its flux density and the dish, the rise it gives over the system noise (the Y-factor EME
+// its flux density and the dish (noise_expectation.hpp's point_antenna_k; a disc's flux from its
+// brightness: noise_sources.hpp's disc_flux_jy), the rise it gives over the system noise (the Y-factor EME
 // operators quote as "Sun noise") and its signal-to-noise at one scan point; only sources above a
 // threshold are offered.
 //
@@ -22,9 +23,6 @@
 #include <vector>
 
 namespace azt::calibration {
-
-constexpr double kBoltzmannJPerK = 1.380649e-23;  ///< SI 2019, exact
-constexpr double kJanskyWPerM2Hz = 1e-26;
 
 /// What decides how loud a source is at the receiver.
 struct DishSetup {
@@ -55,13 +53,8 @@ struct SourceEstimate {
   double size_deg = 0.0;
 };
 
-/// T_A of a point source of `flux_jy`: η·A·S/(2k).
-double point_source_k(double flux_jy, double dish_m, double efficiency);
 /// The fraction of a source of width `size_deg` a beam of `beamwidth_deg` sees: W²/(W² + θ²).
 double beam_coupling(double size_deg, double beamwidth_deg);
-/// The flux density of a disc of brightness temperature `brightness_k` and diameter
-/// `diameter_deg` at `freq_hz` (Rayleigh–Jeans: S = 2k·T_b·Ω·ν²/c²).
-double disc_flux_jy(double brightness_k, double diameter_deg, double freq_hz);
 /// σ of one reading of an ideal radiometer: 10·log10(1 + 1/√(B·τ)).
 double radiometer_noise_db(double bandwidth_hz, double integration_s);
 
