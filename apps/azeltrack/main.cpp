@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
       "  azeltrack serve --config examples/sim.toml            the daemon (scripts/run)\n"
       "  azeltrack config set --config my.toml control.window_deg 0.2   validated, atomic\n"
       "  azeltrack hub encode --az-bits 12 --el-bits 12 --az-raw 2048 --el-raw 100\n"
+      "  azeltrack pointing fit --csv scans.csv --json          the pointing model from scans\n"
       "Exit codes: 0 success, 1 failure, 2 bad arguments.");
   const azt::app::Runner sky = azt::app::add_sky_command(app);
   const azt::app::Runner locator = azt::app::add_locator_command(app);
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
   const azt::app::Runner passes = azt::app::add_passes_command(app);
   const azt::app::Runner moon_windows = azt::app::add_moon_windows_command(app);
   const azt::app::Runner schedule = azt::app::add_schedule_command(app);
+  const azt::app::Runner pointing = azt::app::add_pointing_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
@@ -75,6 +77,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("passes")) return passes();
     if (app.got_subcommand("moon-windows")) return moon_windows();
     if (app.got_subcommand("schedule")) return schedule();
+    if (app.got_subcommand("pointing")) return pointing();
   } catch (const azt::app::UsageError& e) {
     azt::app::print_error(e.what());
     return azt::app::kExitUsage;

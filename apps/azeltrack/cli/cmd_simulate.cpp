@@ -14,6 +14,7 @@
 #include "azt/track/satellite_pass_track.hpp"
 #include "cli/commands.hpp"
 #include "cli/simulate_calibration.hpp"
+#include "cli/simulate_noise.hpp"
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
 #include "config/sim_config.hpp"
@@ -30,6 +31,7 @@ struct SimulateOptions {
   std::string to_az, to_el;
   std::string tle, sat;
   std::string source;
+  std::string sun_every_min = "0";
   bool json = false;
 };
 
@@ -145,17 +147,27 @@ int run_pass(const SimConfig& c, const SimulateOptions& o) {
 
 int run_simulate(const SimulateOptions& o) {
   if (o.scenario != "moon" && o.scenario != "sun" && o.scenario != "slew" && o.scenario != "pass" &&
-      o.scenario != "calibrate" && o.scenario != "scan") {
-    throw UsageError("--scenario must be moon, sun, slew, pass, calibrate or scan");
+      o.scenario != "calibrate" && o.scenario != "scan" && o.scenario != "sun-noise" &&
+      o.scenario != "moon-noise" && o.scenario != "drift") {
+    throw UsageError(
+        "--scenario must be moon, sun, slew, pass, calibrate, scan, sun-noise, moon-noise or "
+        "drift");
   }
   const SimConfig config = sim_config_from(ConfigFile::load(o.config));
   if (o.scenario == "pass") return run_pass(config, o);
   const double hours = parse_number_option("--hours", o.hours);
   if (hours <= 0.0 || hours > 48.0) throw UsageError("--hours must be in (0, 48]");
+  const double sun_every_min = parse_number_option("--sun-every-min", o.sun_every_min);
+  if (sun_every_min < 0.0 || sun_every_min > 1440.0) {
+    throw UsageError("--sun-every-min must be in [0, 1440]");
+  }
+  const CalibrationScenario c{o.from, hours, o.source, sun_every_min, o.json};
   if (o.scenario == "calibrate" || o.scenario == "scan") {
-    const CalibrationScenario c{o.from, hours, o.source, o.json};
     return o.scenario == "scan" ? run_scan_scenario(config, c) : run_calibrate_scenario(config, c);
   }
+  if (o.scenario == "sun-noise") return run_noise_scenario(config, c, "sun");
+  if (o.scenario == "moon-noise") return run_noise_scenario(config, c, "moon");
+  if (o.scenario == "drift") return run_drift_scenario(config, c);
   const std::clock_t cpu_start = std::clock();
   sim::SimResult result;
   if (o.scenario == "slew") {
@@ -185,7 +197,8 @@ Runner add_simulate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Run the real controller against the simulated antenna in virtual time");
   cmd->add_option("--config", opts->config, "Configuration file (default examples/sim.toml)");
-  cmd->add_option("--scenario", opts->scenario, "moon, sun, slew, pass, calibrate or scan")
+  cmd->add_option("--scenario", opts->scenario,
+                  "moon, sun, slew, pass, calibrate, scan, sun-noise, moon-noise or drift")
       ->required();
   cmd->add_option("--from", opts->from, "Start instant, ISO 8601 UTC (default now)");
   cmd->add_option("--hours", opts->hours, "Tracking duration in simulated hours (default 6)");
@@ -193,7 +206,11 @@ Runner add_simulate_command(CLI::App& app) {
   cmd->add_option("--to-el", opts->to_el, "Slew target elevation, degrees");
   cmd->add_option("--tle", opts->tle, "pass: the element sets (TLE or OMM)");
   cmd->add_option("--sat", opts->sat, "pass: the satellite, by name or NORAD number");
-  cmd->add_option("--source", opts->source, "scan: the source (sun, moon, a radio source)");
+  cmd->add_option("--source", opts->source,
+                  "scan, drift: the source (sun, moon, a radio source; drift: default sun)");
+  cmd->add_option("--sun-every-min", opts->sun_every_min,
+                  "calibrate: scan the Sun every N minutes while it is up (default 0: when it "
+                  "adds coverage, as the other sources)");
   cmd->add_flag("--json", opts->json, "One JSON line instead of indented JSON");
   return [opts] { return run_simulate(*opts); };
 }

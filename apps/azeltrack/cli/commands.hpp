@@ -25,5 +25,6 @@ Runner add_sat_command(CLI::App& app);
 Runner add_passes_command(CLI::App& app);
 Runner add_moon_windows_command(CLI::App& app);
 Runner add_schedule_command(CLI::App& app);
+Runner add_pointing_command(CLI::App& app);
 
 }  // namespace azt::app

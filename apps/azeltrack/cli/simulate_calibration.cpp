@@ -10,6 +10,7 @@
 
 #include "azt/sim/calibration_sim.hpp"
 #include "azt/sim/sky_track.hpp"
+#include "calibration/fit_report.hpp"
 #include "common/sky_setup.hpp"
 #include "common/usage_error.hpp"
 #include "station/sky_emitters.hpp"
@@ -54,19 +55,16 @@ std::vector<sim::CalibrationSource> sources(const SimConfig& c, const SkyContext
   return out;
 }
 
-sim::CalibrationSimSetup setup_for(const SimConfig& c, const SkyContext& ctx, double hours) {
+sim::CalibrationSimSetup setup_for(const SimConfig& c, const SkyContext& ctx,
+                                   const CalibrationScenario& o) {
   sim::CalibrationSimSetup s;
   s.station = c.setup;
   s.receiver = c.receiver.receiver;
   s.sources = sources(c, ctx);
-  s.duration_s = hours * 3600.0;
+  s.epoch = ctx.start;
+  s.duration_s = o.hours * 3600.0;
+  s.sun_every_s = o.sun_every_min * 60.0;
   return s;
-}
-
-nlohmann::json terms_json(const calibration::PointingTerms& t) {
-  return {{"ia_deg", t.ia_deg},     {"ie_deg", t.ie_deg}, {"ca_deg", t.ca_deg},
-          {"npae_deg", t.npae_deg}, {"an_deg", t.an_deg}, {"aw_deg", t.aw_deg},
-          {"sag_deg", t.sag_deg}};
 }
 
 nlohmann::json beam_error_json(const calibration::BeamError& e) {
@@ -97,6 +95,8 @@ nlohmann::json scan_json(const SimConfig& c, const sim::ScanRecord& r,
   }
   j["xel_offset_deg"] = r.fit->peak.xel_deg;
   j["el_offset_deg"] = r.fit->peak.el_deg;
+  j["xel_std_deg"] = r.fit->peak_std.xel_deg;
+  j["el_std_deg"] = r.fit->peak_std.el_deg;
   j["width_xel_deg"] = r.fit->width_xel_deg;
   j["width_el_deg"] = r.fit->width_el_deg;
   j["peak_db"] = r.fit->peak_db;
@@ -129,23 +129,32 @@ double cpu_since(std::clock_t start) {
 int run_calibrate_scenario(const SimConfig& config, const CalibrationScenario& o) {
   const SkyContext ctx = sky_context(config, o);
   const std::clock_t cpu = std::clock();
-  const sim::CalibrationSimResult r = sim::simulate_calibration(setup_for(config, ctx, o.hours));
+  const sim::CalibrationSimSetup setup = setup_for(config, ctx, o);
+  const sim::CalibrationSimResult r = sim::simulate_calibration(setup);
   nlohmann::json scans = nlohmann::json::array();
   for (const sim::ScanRecord& s : r.scans) scans.push_back(scan_json(config, s, ctx.start));
   const calibration::PointingTerms& truth = config.setup.plant.pointing_errors;
-  nlohmann::json j{{"scenario", "calibrate"},
-                   {"injected", terms_json(truth)},
-                   {"before", beam_error_json(r.before)},
-                   {"after", beam_error_json(r.after)},
-                   {"scans", scans},
-                   {"faults", r.faults},
-                   {"simulated_s", r.simulated_s},
-                   {"cpu_s", cpu_since(cpu)}};
+  nlohmann::json j{
+      {"scenario", "calibrate"},
+      {"injected", terms_json(truth)},
+      {"before", beam_error_json(r.before)},
+      {"after", beam_error_json(r.after)},
+      {"after_with_encoders", beam_error_json(r.after_with_encoders)},
+      {"quantisation_floor_deg", r.quantisation_floor_deg},
+      {"encoder_bits",
+       {{"az", config.setup.plant.az.encoder_bits}, {"el", config.setup.plant.el.encoder_bits}}},
+      {"plan", {{"sun_every_s", setup.sun_every_s}, {"min_snr_db", setup.min_snr_db}}},
+      {"log_rows", r.log.size()},
+      {"scans", scans},
+      {"faults", r.faults},
+      {"simulated_s", r.simulated_s},
+      {"cpu_s", cpu_since(cpu)}};
   if (r.fit) {
     j["fitted"] = terms_json(r.fit->terms);
     j["std_errors"] = terms_json(r.fit->std_errors);
     j["largest_term_error_deg"] = largest_difference(r.fit->terms, truth);
     j["observation_rms_deg"] = {{"before", r.fit->rms_before_deg}, {"after", r.fit->rms_deg}};
+    j["held"] = fit_json(*r.fit, r.log)["held"];
   } else {
     j["fit_refused"] = r.fit_refused;
   }
@@ -156,7 +165,7 @@ int run_calibrate_scenario(const SimConfig& config, const CalibrationScenario& o
 int run_scan_scenario(const SimConfig& config, const CalibrationScenario& o) {
   if (o.source.empty()) throw UsageError("scan needs --source (sun, moon or a radio source)");
   const SkyContext ctx = sky_context(config, o);
-  const sim::CalibrationSimSetup setup = setup_for(config, ctx, o.hours);
+  const sim::CalibrationSimSetup setup = setup_for(config, ctx, o);
   const auto found =
       std::find_if(setup.sources.begin(), setup.sources.end(),
                    [&o](const sim::CalibrationSource& s) { return s.name == o.source; });

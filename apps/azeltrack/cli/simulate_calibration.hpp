@@ -10,14 +10,16 @@
 namespace azt::app {
 
 struct CalibrationScenario {
-  std::string from;     ///< ISO 8601 UTC; empty: now
-  double hours = 24.0;  ///< calibrate: the longest the scans may take, simulated
-  std::string source;   ///< scan: the source to scan (sun, moon, a radio source)
+  std::string from;            ///< ISO 8601 UTC; empty: now
+  double hours = 24.0;         ///< calibrate: the longest the scans may take, simulated
+  std::string source;          ///< scan: the source to scan (sun, moon, a radio source)
+  double sun_every_min = 0.0;  ///< calibrate: the Sun every this long while up (0: by coverage)
   bool json = false;
 };
 
-/// Scans the sources across the sky, fits the pointing model and prints the recovered terms and
-/// the beam's error over the sky before and after. Returns the exit status.
+/// Runs the calibration session (the daemon's planner and scan log) on the simulated station,
+/// fits the pointing model to its log and prints the recovered terms and the beam's error over
+/// the sky before and after, with the encoders' quantisation floor. Returns the exit status.
 int run_calibrate_scenario(const SimConfig& config, const CalibrationScenario& scenario);
 
 /// One cross scan (with a raster first if it finds nothing) of one source: the offset found and

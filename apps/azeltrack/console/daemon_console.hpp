@@ -24,6 +24,7 @@
 #include "schedule/schedule_follower.hpp"
 #include "station/clock_watch.hpp"
 #include "station/direction_test.hpp"
+#include "station/noise_runner.hpp"
 #include "station/pointing_scanner.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
@@ -74,6 +75,8 @@ struct ConsoleParts {
   ElementFeed* elements = nullptr;
   /// The satellite schedule's follower (null: none; `schedule` null, its routes 404).
   ScheduleFollower* schedule = nullptr;
+  /// Noise measurements (null: none here, `noise` is idle and measurements are refused).
+  NoiseRunner* noise = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -122,6 +125,9 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json act_target(const nlohmann::json& body, const std::string& source);
   /// POST /api/scan: points at the source and starts a pointing scan (docs/calibration.md).
   nlohmann::json act_scan(const nlohmann::json& body, const std::string& source);
+  /// POST /api/noise and /api/noise/stop (noise_actions.cpp).
+  nlohmann::json act_noise(const std::string& action, const nlohmann::json& body,
+                           const std::string& source);
   /// POST /api/hardware/direction-test {"axis"}: answered when the test ends (about 1.6 s).
   void act_direction_test(const nlohmann::json& body, const std::string& source, ActDone done);
   /// POST /api/schedule (the list replaced whole) and /api/schedule/resume (schedule_api.cpp).

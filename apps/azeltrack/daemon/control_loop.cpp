@@ -109,12 +109,13 @@ void StationDaemon::tick() {
       fix = sky_.at(unix_now_s());
     }
     const std::optional<control::AzEl> source = fix ? std::optional(fix->position) : std::nullopt;
-    control::Demand demand = modes_.demand(scan_aim(source));
+    control::Demand demand = modes_.demand(noise_aim(scan_aim(source)));
     if (auto test = direction_test_.demand(now)) demand = std::move(*test);
     antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
     direction_test_.tick(now);
     receiver_->tick(now);
     scan_tick(now, source);
+    noise_tick(now, source);
   }
   report_faults();
   // Mode changes by PC programs and new faults reach open consoles at once.

@@ -34,6 +34,7 @@
 #include "station/gps_receiver.hpp"
 #include "station/guarded_antenna.hpp"
 #include "station/network_watch.hpp"
+#include "station/noise_runner.hpp"
 #include "station/pointing_scanner.hpp"
 #include "station/power_receiver.hpp"
 #include "station/recent_events.hpp"
@@ -121,6 +122,13 @@ class StationDaemon {
   std::optional<control::AzEl> scan_aim(const std::optional<control::AzEl>& source);
   /// After the antenna's tick: the scan sees the antenna and the receiver's readings.
   void scan_tick(double now, const std::optional<control::AzEl>& source);
+  // noise_parts.cpp: noise measurements (station/noise_runner.hpp) and their log.
+  static constexpr const char* kNoiseLogFile = "noise-log.jsonl";  ///< beside the configuration
+  std::unique_ptr<NoiseRunner> make_noise_runner();
+  void log_noise(nlohmann::json record);
+  /// The demand while a noise measurement runs: the source plus its offset.
+  std::optional<control::AzEl> noise_aim(const std::optional<control::AzEl>& source);
+  void noise_tick(double now, const std::optional<control::AzEl>& source);
   /// An exception escaped a handler: the loop's state is unknown, so the station goes safe and
   /// the process exits (systemd restarts it, motionless until a client asks).
   void fail_safe(const std::string& why);
@@ -168,6 +176,7 @@ class StationDaemon {
   std::unique_ptr<AzelDatExport> azel_dat_;   ///< [export] azel_dat; none when not set
   std::unique_ptr<PowerReceiver> receiver_;   ///< [receiver]: the power readings of scans
   std::unique_ptr<PointingScanner> scanner_;  ///< a pointing scan, while one runs
+  std::unique_ptr<NoiseRunner> noise_;        ///< a noise measurement, while one runs
   std::unique_ptr<StationRadio> radio_;       ///< [radio] and [wsjtx]: the rig and WSJT-X
   std::unique_ptr<MotorPower> power_;         ///< [hardware.power]; none when not set
   StationCommands commands_;

@@ -135,6 +135,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   if (config_.receiver.source == ReceiverConfig::Source::Sim) simulate_receiver();
   scanner_ = std::make_unique<PointingScanner>(
       config_.receiver.source == ReceiverConfig::Source::None ? nullptr : &receiver_->feed());
+  noise_ = make_noise_runner();
   radio_ = make_radio();
   schedule_ = make_schedule();
 }
@@ -444,7 +445,8 @@ void StationDaemon::open_console() {
                    radio_ ? std::function<nlohmann::json()>([this] { return radio_->wsjtx_json(); })
                           : nullptr,
                    elements_.get(),
-                   schedule_.get()},
+                   schedule_.get(),
+                   noise_.get()},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});

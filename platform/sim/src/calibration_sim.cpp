@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "azt/calibration/calibration_session.hpp"
 #include "azt/calibration/scan_session.hpp"
+#include "azt/calibration/source_snr.hpp"
+#include "azt/proto/hub_reading.hpp"
 #include "azt/sim/station_loop.hpp"
 
 namespace azt::sim {
@@ -16,9 +18,14 @@ using calibration::ScanSample;
 using calibration::SkyOffset;
 using control::AzEl;
 
-constexpr double kIdleStepS = 600.0;  ///< nothing to scan: wait this long and look again
-
 double wrap_180(double deg) { return std::remainder(deg, 360.0); }
+
+calibration::ScanTiming timing(const CalibrationSimSetup& setup) {
+  calibration::ScanTiming t;
+  t.settle_s = setup.settle_s;
+  t.dwell_s = setup.dwell_s;
+  return t;
+}
 
 /// The daemon's station, the plants and the receiver, stepped together in virtual time.
 class ScanBench {
@@ -70,8 +77,6 @@ class ScanBench {
     return out;
   }
 
-  [[nodiscard]] const SimulatedReceiver& receiver() const { return receiver_; }
-
  private:
   void follow(const CalibrationSource& source, const SkyOffset& off) {
     const auto here = source.track(t_);
@@ -104,163 +109,125 @@ class ScanBench {
   double t_ = 0.0;
 };
 
-struct ScanOutcome {
-  Result<calibration::ScanFit> fit = fail("not scanned");
-  AzEl sky_xel;  ///< the source when the cross-elevation line's readings centre
-  AzEl sky_el;   ///< and when the elevation line's do
-};
-
 /// One scan of `source` about `centre`, as the daemon runs it (calibration::ScanSession).
-ScanOutcome run_scan(ScanBench& bench, const CalibrationSimSetup& setup,
-                     const CalibrationSource& source, const calibration::ScanSpec& spec,
-                     SkyOffset centre) {
-  calibration::ScanTiming timing;
-  timing.settle_s = setup.settle_s;
-  timing.dwell_s = setup.dwell_s;
-  auto session = calibration::ScanSession::start(spec, timing, centre, bench.now());
-  if (!session) return {session.error(), {}, {}};
+calibration::ScanResult run_scan(ScanBench& bench, const CalibrationSimSetup& setup,
+                                 const CalibrationSource& source, const calibration::ScanSpec& spec,
+                                 SkyOffset centre) {
+  auto session = calibration::ScanSession::start(spec, timing(setup), centre, bench.now());
+  calibration::ScanResult out;
+  if (!session) {
+    out.fit = session.error();
+    return out;
+  }
   bench.run(session.value(), source);
-  ScanOutcome out;
   out.fit = session->fit();
-  const auto at = [&source](std::optional<double> t) {
-    return t ? source.track(*t).value_or(AzEl{}) : AzEl{};
-  };
-  out.sky_xel = at(session->xel_moment_s());
-  out.sky_el = at(session->el_moment_s());
+  out.xel_moment_s = session->xel_moment_s();
+  out.el_moment_s = session->el_moment_s();
+  if (out.xel_moment_s) out.sky_xel = source.track(*out.xel_moment_s);
+  if (out.el_moment_s) out.sky_el = source.track(*out.el_moment_s);
   return out;
 }
 
-calibration::ScanSpec scan_spec(const CalibrationSimSetup& setup, ScanKind kind) {
-  calibration::ScanSpec spec;
-  spec.kind = kind;
-  spec.beamwidth_deg = setup.receiver.beamwidth_deg;
-  spec.points_per_line = kind == ScanKind::Raster ? 7 : setup.points_per_line;
-  spec.half_span_beams = kind == ScanKind::Raster ? 3.0 : setup.half_span_beams;
-  return spec;
+calibration::SessionSetup session_setup(const CalibrationSimSetup& setup) {
+  calibration::SessionSetup s;
+  s.spec.kind = ScanKind::Cross;
+  s.spec.beamwidth_deg = setup.receiver.beamwidth_deg;
+  s.spec.points_per_line = setup.points_per_line;
+  s.spec.half_span_beams = setup.half_span_beams;
+  s.timing = timing(setup);
+  s.epoch = setup.epoch;
+  s.corrections = setup.station.station.corrections;
+  return s;
 }
 
-/// Cross scan; if it finds nothing, a raster a beamwidth apart to find the source; then a
-/// cross scan there and back centred on what was found, whose result is kept.
-ScanRecord scan_source(ScanBench& bench, const CalibrationSimSetup& setup,
-                       const CalibrationSource& source) {
-  ScanRecord rec;
-  rec.source = source.name;
-  ScanOutcome first = run_scan(bench, setup, source, scan_spec(setup, ScanKind::Cross), {});
-  rec.scans = 1;
-  if (!first.fit) {
-    first = run_scan(bench, setup, source, scan_spec(setup, ScanKind::Raster), {});
-    ++rec.scans;
-  }
-  if (!first.fit) {
-    rec.refused = first.fit.error().message;
-    rec.t_s = bench.now();
-    return rec;
-  }
-  ScanOutcome refine =
-      run_scan(bench, setup, source, scan_spec(setup, ScanKind::Cross), first.fit->peak);
-  ++rec.scans;
-  rec.t_s = bench.now();
-  rec.sky_xel = refine.sky_xel;
-  rec.sky = refine.sky_el;
-  if (refine.fit) {
-    rec.fit = *refine.fit;
-  } else {
-    rec.refused = refine.fit.error().message;
-  }
-  return rec;
-}
-
-/// The scan (and the source's drift while it runs, at most kDriftDeg of azimuth) stays clear of
-/// the azimuth stops: a scan across the stop of a 0–360° rotator would unwind a whole turn.
-bool clear_of_stops(const CalibrationSimSetup& setup, const AzEl& at) {
-  constexpr double kDriftDeg = 15.0;
-  const control::AzimuthRange& range = setup.station.station.az_range;
-  const double cos_el = std::max(std::cos(at.el_deg * 3.14159265358979323846 / 180.0), 0.05);
-  const double margin =
-      setup.half_span_beams * setup.receiver.beamwidth_deg * 2.0 / cos_el + kDriftDeg;
-  if (range.max_deg - range.min_deg >= 360.0 + 2.0 * margin) return true;
-  const double az = range.min_deg + std::fmod(at.az_deg - range.min_deg + 720.0, 360.0);
-  return az - range.min_deg >= margin && range.max_deg - az >= margin;
-}
-
-/// The source to scan next: up, bright enough, clear of the others and of the azimuth stops, and
-/// farthest from the directions already scanned (so the scans spread over the sky).
-const CalibrationSource* next_source(const CalibrationSimSetup& setup, const ScanBench& bench,
-                                     const std::vector<ScanRecord>& done) {
-  const double t = bench.now();
-  const std::vector<RadioEmitter> sky = bench.sky_at(t);
-  const CalibrationSource* best = nullptr;
-  double best_gap = -1.0;
+/// Each source with its SNR at a scan point (source_snr.hpp), from what the receiver hears.
+std::vector<calibration::PlanSource> plan_sources(const CalibrationSimSetup& setup) {
+  const ReceiverSetup& rx = setup.receiver;
+  const calibration::DishSetup dish{rx.dish_m, rx.efficiency, rx.tsys_k, rx.beamwidth_deg};
+  const calibration::PointNoise noise{rx.noise_db, setup.dwell_s * rx.rate_hz};
+  std::vector<calibration::PlanSource> out;
   for (const CalibrationSource& s : setup.sources) {
-    const auto at = s.track(t);
-    if (!at || at->el_deg < setup.min_el_deg || at->el_deg > setup.max_el_deg) continue;
-    if (!clear_of_stops(setup, *at)) continue;
-    if (bench.receiver().peak_rise_db({*at, s.peak_k, s.size_deg}) < setup.min_rise_db) continue;
-    const bool confused = std::any_of(sky.begin(), sky.end(), [&](const RadioEmitter& e) {
-      const double d = calibration::separation_deg(e.sky, *at);
-      return d > 1e-9 && d < 4.0 * setup.receiver.beamwidth_deg &&
-             bench.receiver().peak_rise_db(e) > 0.1;
-    });
-    if (confused) continue;
-    double gap = std::numeric_limits<double>::infinity();
-    for (const ScanRecord& r : done) {
-      if (r.fit) gap = std::min(gap, calibration::separation_deg(r.sky, *at));
-    }
-    if (gap > best_gap) {
-      best_gap = gap;
-      best = &s;
-    }
+    const auto e = calibration::estimate_source(s.name, s.peak_k, s.size_deg, dish, noise);
+    out.push_back({s.name, e.snr_db, s.size_deg, s.name == "sun"});
   }
-  return best;
+  return out;
 }
 
-/// The mount's angles at which the beam was on the source at `sky`, from the offset the scan
-/// found: the controller believed the beam at source + peak; undo the user correction it
-/// subtracts and the model it applied.
-AzEl mount_on_source(const CalibrationSimSetup& setup, const AzEl& sky, const SkyOffset& peak) {
-  const auto& corrections = setup.station.station.corrections;
-  AzEl believed = calibration::apply_offset(sky, peak);
-  believed.az_deg += corrections.user.az_deg();
-  believed.el_deg += corrections.user.el_deg();
-  return calibration::mount_for_sky(believed, corrections.model).value_or(believed);
+calibration::SessionPlanner planner(const CalibrationSimSetup& setup) {
+  calibration::SiteLimits limits;
+  limits.min_el_deg = setup.min_el_deg;
+  limits.max_el_deg = setup.max_el_deg;
+  limits.az_range = setup.station.station.az_range;
+  calibration::PlanSettings p;
+  p.scan_s = calibration::CalibrationSession::expected_source_s(session_setup(setup));
+  p.beamwidth_deg = setup.receiver.beamwidth_deg;
+  p.half_span_beams = setup.half_span_beams;
+  p.every_s = setup.sun_every_s;
+  p.min_snr_db = setup.min_snr_db;
+  p.max_scans = setup.max_scans;
+  const std::vector<CalibrationSource>* sources = &setup.sources;
+  const calibration::SourcePosition position = [sources](std::size_t i, double t_s) {
+    return i < sources->size() ? (*sources)[i].track(t_s) : std::nullopt;
+  };
+  return calibration::SessionPlanner(plan_sources(setup), position, limits, p);
 }
 
-/// A scan's two lines, each at its own moment.
-void add_observations(const CalibrationSimSetup& setup, const ScanRecord& rec,
-                      std::vector<calibration::PointingObservation>& out) {
-  const SkyOffset& sigma = rec.fit->peak_std;
-  out.push_back(
-      {mount_on_source(setup, rec.sky_xel, rec.fit->peak), rec.sky_xel, true, false, sigma});
-  out.push_back({mount_on_source(setup, rec.sky, rec.fit->peak), rec.sky, false, true, sigma});
+ScanRecord record_of(const calibration::SourceScans& s) {
+  ScanRecord r;
+  r.source = s.name;
+  r.t_s = s.ended_s;
+  r.sky = s.sky_el;
+  r.sky_xel = s.sky_xel;
+  r.fit = s.fit;
+  r.refused = s.refused;
+  r.scans = s.scans;
+  return r;
+}
+
+/// Runs the session's steps until it is done or the time is up.
+void run_session(ScanBench& bench, const CalibrationSimSetup& setup,
+                 calibration::CalibrationSession& session) {
+  while (bench.now() < setup.duration_s) {
+    const calibration::SessionStep step = session.next(bench.now());
+    if (step.kind == calibration::SessionStep::Kind::Done) return;
+    if (step.kind == calibration::SessionStep::Kind::Wait) {
+      bench.idle(std::max(step.until_s - bench.now(), setup.station.station.tick_s));
+      continue;
+    }
+    const CalibrationSource& source = setup.sources.at(step.source);
+    session.scan_ended(bench.now(), run_scan(bench, setup, source, step.spec, step.centre));
+  }
+}
+
+calibration::EncoderSteps encoder_steps(const CalibrationSimSetup& setup) {
+  return {proto::hub_resolution_deg(setup.station.plant.az.encoder_bits),
+          proto::hub_resolution_deg(setup.station.plant.el.encoder_bits)};
 }
 
 }  // namespace
 
 CalibrationSimResult simulate_calibration(const CalibrationSimSetup& setup) {
   ScanBench bench(setup);
+  calibration::CalibrationSession session(planner(setup), session_setup(setup));
+  run_session(bench, setup, session);
   CalibrationSimResult result;
-  while (result.scans.size() < setup.max_scans && bench.now() < setup.duration_s) {
-    const CalibrationSource* source = next_source(setup, bench, result.scans);
-    if (source == nullptr) {
-      bench.idle(kIdleStepS);
-      continue;
-    }
-    result.scans.push_back(scan_source(bench, setup, *source));
-  }
-  std::vector<calibration::PointingObservation> obs;
-  for (const ScanRecord& r : result.scans) {
-    if (r.fit) add_observations(setup, r, obs);
-  }
+  for (const calibration::SourceScans& s : session.history()) result.scans.push_back(record_of(s));
+  result.log = session.log();
   const calibration::PointingTerms& in_use = setup.station.station.corrections.model;
-  auto fit = calibration::fit_pointing_model(obs, in_use);
+  auto fit =
+      calibration::fit_pointing_model(calibration::observations_from_log(result.log), in_use);
   if (fit) {
     result.fit = *fit;
   } else {
     result.fit_refused = fit.error().message;
   }
   const calibration::PointingTerms& truth = setup.station.plant.pointing_errors;
+  const calibration::PointingTerms& model = fit ? fit->terms : in_use;
   result.before = calibration::beam_error_over_sky(truth, in_use);
-  result.after = calibration::beam_error_over_sky(truth, fit ? fit->terms : in_use);
+  result.after = calibration::beam_error_over_sky(truth, model);
+  result.after_with_encoders =
+      calibration::beam_error_with_encoders(truth, model, encoder_steps(setup));
+  result.quantisation_floor_deg = calibration::quantisation_floor_deg(encoder_steps(setup));
   result.faults = bench.faults();
   result.simulated_s = bench.now();
   return result;
@@ -268,7 +235,22 @@ CalibrationSimResult simulate_calibration(const CalibrationSimSetup& setup) {
 
 ScanRecord simulate_single_scan(const CalibrationSimSetup& setup, const CalibrationSource& source) {
   ScanBench bench(setup);
-  return scan_source(bench, setup, source);
+  calibration::CalibrationSession session(planner(setup), session_setup(setup));
+  // `source` is one of setup.sources (the session names sources by their index).
+  const auto found = std::find_if(setup.sources.begin(), setup.sources.end(),
+                                  [&source](const CalibrationSource& s) { return &s == &source; });
+  if (found == setup.sources.end()) {
+    ScanRecord none;
+    none.source = source.name;
+    none.refused = "not one of the scenario's sources";
+    return none;
+  }
+  session.begin(static_cast<std::size_t>(found - setup.sources.begin()), bench.now());
+  while (session.scanning()) {
+    const calibration::SessionStep step = session.next(bench.now());
+    session.scan_ended(bench.now(), run_scan(bench, setup, source, step.spec, step.centre));
+  }
+  return session.history().empty() ? ScanRecord{} : record_of(session.history().back());
 }
 
 }  // namespace azt::sim

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "azt/calibration/beam_error.hpp"
@@ -64,31 +65,92 @@ TEST(PointingFit, FitsOnlyTheChosenTermsAndHoldsTheRest) {
   const auto obs = observe(truth, rng, 0.0, 3);
   PointingTerms start;
   start.sag_deg = 0.05;  // held
-  TermMask only_index{};
-  only_index[0] = only_index[1] = true;
+  FitOptions only_index;
+  only_index.fit = TermMask{};
+  only_index.fit[0] = only_index.fit[1] = true;
   const auto fit = fit_pointing_model(obs, start, only_index);
   ASSERT_TRUE(fit) << fit.error().message;
   EXPECT_DOUBLE_EQ(fit->terms.sag_deg, 0.05);
   EXPECT_DOUBLE_EQ(fit->terms.ca_deg, 0.0);
   EXPECT_DOUBLE_EQ(fit->std_errors.sag_deg, 0.0);
+  EXPECT_EQ(fit->held[6], "held by request");
+  EXPECT_EQ(fit->held[0], "");
   EXPECT_NEAR(fit->terms.ia_deg, 0.4, 0.01);  // the held sag biases IE, not IA
 }
 
-TEST(PointingFit, RefusesTooFewScans) {
+TEST(PointingFit, RefusesTooFewScansWithTheReason) {
   std::mt19937_64 rng(1);
-  const auto obs = observe(PointingTerms{}, rng, 0.0, 7);
+  const auto obs = observe(PointingTerms{}, rng, 0.0, 2);
   const auto fit = fit_pointing_model(obs);
   ASSERT_FALSE(fit);
-  EXPECT_NE(fit.error().message.find("at least 8"), std::string::npos) << fit.error().message;
+  EXPECT_EQ(fit.error().message, "too few scans to fit: 2, at least 3 needed");
 }
 
-TEST(PointingFit, RefusesASkyThatCannotSeparateTheTerms) {
-  // Every source at one elevation: IA, CA and NPAE all shift the azimuth alike there.
-  std::mt19937_64 rng(2);
-  const auto obs = observe(random_terms(rng), rng, 0.001, 30, 40.0, 40.0);
+TEST(PointingFit, HoldsWhatFewScansCannotDetermine) {
+  // Five scans fit at most four terms: the first four of the order (IA, IE, AN, AW) when the
+  // scans see them, the rest held at their prior, each saying so.
+  std::mt19937_64 rng(7);
+  PointingTerms truth;
+  truth.ia_deg = 0.3;
+  truth.ie_deg = -0.2;
+  const auto obs = observe(truth, rng, 0.0, 5);
   const auto fit = fit_pointing_model(obs);
-  ASSERT_FALSE(fit);
-  EXPECT_NE(fit.error().message.find("do not separate"), std::string::npos) << fit.error().message;
+  ASSERT_TRUE(fit) << fit.error().message;
+  for (const std::size_t held : {2U, 3U, 6U}) {
+    EXPECT_NE(fit->held.at(held).find("too few scans: 5 determine at most 4 terms"),
+              std::string::npos)
+        << fit->held.at(held);
+    EXPECT_EQ(fit->std_errors.as_array().at(held), 0.0);
+  }
+  EXPECT_NEAR(fit->terms.ia_deg, 0.3, 1e-6);
+  EXPECT_NEAR(fit->terms.ie_deg, -0.2, 1e-6);
+}
+
+TEST(PointingFit, HoldsTheTermsOneElevationCannotSeparateAndSaysWhy) {
+  // Every source at one elevation: IA, CA and NPAE all shift the azimuth alike there, and SAG
+  // the elevation as IE does. IA, IE and the tilt are fitted; the rest held, naming the term
+  // each resembles and the elevations the scans span.
+  std::mt19937_64 rng(2);
+  PointingTerms truth;
+  truth.ia_deg = 0.5;
+  truth.ie_deg = -0.4;
+  truth.an_deg = 0.2;
+  truth.aw_deg = -0.1;
+  const auto obs = observe(truth, rng, 0.001, 30, 40.0, 40.0);
+  const auto fit = fit_pointing_model(obs);
+  ASSERT_TRUE(fit) << fit.error().message;
+  EXPECT_EQ(fit->held[0], "");
+  EXPECT_EQ(fit->held[1], "");
+  EXPECT_EQ(fit->held[4], "");
+  EXPECT_EQ(fit->held[5], "");
+  EXPECT_NE(fit->held[2].find("cannot tell it from IA"), std::string::npos) << fit->held[2];
+  EXPECT_NE(fit->held[2].find("elevations span 40.0–40.0°"), std::string::npos) << fit->held[2];
+  EXPECT_NE(fit->held[3].find("cannot tell it from IA"), std::string::npos) << fit->held[3];
+  EXPECT_NE(fit->held[6].find("cannot tell it from IE"), std::string::npos) << fit->held[6];
+  EXPECT_NEAR(fit->terms.ia_deg, 0.5, 0.005);
+  EXPECT_NEAR(fit->terms.an_deg, 0.2, 0.005);
+  EXPECT_LT(fit->rms_deg, 0.003);
+}
+
+TEST(PointingFit, ReportsEachObservationsResidualAndLeavesOutWeightZero) {
+  std::mt19937_64 rng(11);
+  const PointingTerms truth = random_terms(rng);
+  auto obs = observe(truth, rng, 0.0, 20);
+  obs[3].mount.az_deg += 2.0;  // a wild scan the operator rejected
+  obs[3].weight = 0.0;
+  const auto fit = fit_pointing_model(obs);
+  ASSERT_TRUE(fit) << fit.error().message;
+  ASSERT_EQ(fit->residuals.size(), obs.size());
+  EXPECT_FALSE(fit->residuals[3].used);
+  EXPECT_GT(std::fabs(fit->residuals[3].after.xel_deg), 0.3);  // still shown, far off
+  EXPECT_EQ(fit->observations, 19U);
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    if (i == 3) continue;
+    EXPECT_TRUE(fit->residuals[i].used);
+    EXPECT_LT(std::hypot(fit->residuals[i].after.xel_deg, fit->residuals[i].after.el_deg), 1e-5);
+    EXPECT_GT(std::hypot(fit->residuals[i].before.xel_deg, fit->residuals[i].before.el_deg), 0.0);
+  }
+  EXPECT_NEAR(fit->terms.ca_deg, truth.ca_deg, 1e-5);
 }
 
 TEST(BeamError, IsZeroForAPerfectModelAndTheErrorsWithoutOne) {
