@@ -9,62 +9,20 @@
 #include <nlohmann/json.hpp>
 
 #include "azt/sim/calibration_sim.hpp"
-#include "azt/sim/sky_track.hpp"
 #include "calibration/fit_report.hpp"
-#include "common/sky_setup.hpp"
+#include "cli/simulated_sky.hpp"
 #include "common/usage_error.hpp"
-#include "station/sky_emitters.hpp"
 
 namespace azt::app {
 namespace {
 
-struct SkyContext {
-  std::unique_ptr<astro::Ephemeris> ephemeris;
-  astro::UtcInstant start;
-};
-
-SkyContext sky_context(const SimConfig& c, const CalibrationScenario& o) {
-  SkyContext ctx{open_ephemeris(c.sky.settings.ephemeris), utc_now()};
-  if (!o.from.empty()) {
-    auto parsed = astro::parse_iso8601_utc(o.from);
-    if (!parsed) throw UsageError("--from: " + parsed.error().message);
-    ctx.start = *parsed;
-  }
-  time_scales_at(ctx.start, c.sky.settings.dut1_s);  // validates the instant
-  return ctx;
-}
-
-sim::SkyTrack track_of(const SimConfig& c, const SkyContext& ctx, const astro::Target& target) {
-  sim::SkyTrackSetup t;
-  t.ephemeris = ctx.ephemeris.get();
-  t.target = target;
-  t.observer = c.sky.settings.observer;
-  t.atmosphere = c.sky.settings.atmosphere;
-  t.start = ctx.start;
-  t.dut1_s = c.sky.settings.dut1_s;
-  t.leap_table = &leap_table();
-  return sim::make_sky_track(t);
-}
-
-/// The Sun, the Moon and every catalogue source with a flux at the receiver's band.
-std::vector<sim::CalibrationSource> sources(const SimConfig& c, const SkyContext& ctx) {
-  std::vector<sim::CalibrationSource> out;
-  for (const SkyEmitter& e : sky_emitters(c.receiver)) {
-    out.push_back({e.name, track_of(c, ctx, e.target), e.peak_k, e.size_deg});
-  }
-  return out;
-}
-
-sim::CalibrationSimSetup setup_for(const SimConfig& c, const SkyContext& ctx,
-                                   const CalibrationScenario& o) {
-  sim::CalibrationSimSetup s;
-  s.station = c.setup;
-  s.receiver = c.receiver.receiver;
-  s.sources = sources(c, ctx);
-  s.epoch = ctx.start;
-  s.duration_s = o.hours * 3600.0;
-  s.sun_every_s = o.sun_every_min * 60.0;
-  return s;
+/// The simulated sky (simulated_sky.hpp, shared with the noise scenarios) with the session's
+/// epoch and its Sun cadence.
+std::unique_ptr<SimulatedSky> sky_for(const SimConfig& c, const CalibrationScenario& o) {
+  auto sky = simulated_sky(c, o.from, o.hours);
+  sky->setup.epoch = sky->start;
+  sky->setup.sun_every_s = o.sun_every_min * 60.0;
+  return sky;
 }
 
 nlohmann::json beam_error_json(const calibration::BeamError& e) {
@@ -127,12 +85,12 @@ double cpu_since(std::clock_t start) {
 }  // namespace
 
 int run_calibrate_scenario(const SimConfig& config, const CalibrationScenario& o) {
-  const SkyContext ctx = sky_context(config, o);
+  const auto sky = sky_for(config, o);
   const std::clock_t cpu = std::clock();
-  const sim::CalibrationSimSetup setup = setup_for(config, ctx, o);
+  const sim::CalibrationSimSetup& setup = sky->setup;
   const sim::CalibrationSimResult r = sim::simulate_calibration(setup);
   nlohmann::json scans = nlohmann::json::array();
-  for (const sim::ScanRecord& s : r.scans) scans.push_back(scan_json(config, s, ctx.start));
+  for (const sim::ScanRecord& s : r.scans) scans.push_back(scan_json(config, s, sky->start));
   const calibration::PointingTerms& truth = config.setup.plant.pointing_errors;
   nlohmann::json j{
       {"scenario", "calibrate"},
@@ -164,8 +122,8 @@ int run_calibrate_scenario(const SimConfig& config, const CalibrationScenario& o
 
 int run_scan_scenario(const SimConfig& config, const CalibrationScenario& o) {
   if (o.source.empty()) throw UsageError("scan needs --source (sun, moon or a radio source)");
-  const SkyContext ctx = sky_context(config, o);
-  const sim::CalibrationSimSetup setup = setup_for(config, ctx, o);
+  const auto sky = sky_for(config, o);
+  const sim::CalibrationSimSetup& setup = sky->setup;
   const auto found =
       std::find_if(setup.sources.begin(), setup.sources.end(),
                    [&o](const sim::CalibrationSource& s) { return s.name == o.source; });
@@ -175,12 +133,12 @@ int run_scan_scenario(const SimConfig& config, const CalibrationScenario& o) {
   const std::clock_t cpu = std::clock();
   const sim::ScanRecord r = sim::simulate_single_scan(setup, *found);
   nlohmann::json j{
-      {"scenario", "scan"}, {"scan", scan_json(config, r, ctx.start)}, {"cpu_s", cpu_since(cpu)}};
+      {"scenario", "scan"}, {"scan", scan_json(config, r, sky->start)}, {"cpu_s", cpu_since(cpu)}};
   if (r.fit) {
     // The offsets as the Offset screen takes them (mount degrees: what to add to the azimuth
     // and elevation), found and true, each at its line's moment.
-    const auto az_offset = [](const control::AzEl& sky, const control::AzEl& at) {
-      return std::remainder(at.az_deg - sky.az_deg, 360.0);
+    const auto az_offset = [](const control::AzEl& source, const control::AzEl& at) {
+      return std::remainder(at.az_deg - source.az_deg, 360.0);
     };
     j["found"] = {
         {"az_offset_deg", az_offset(r.sky_xel, calibration::apply_offset(r.sky_xel, r.fit->peak))},

@@ -6,6 +6,7 @@
 
 #include "azt/calibration/scan_plan.hpp"
 #include "console/body_fields.hpp"
+#include "console/scan_timing_body.hpp"
 
 namespace azt::app {
 
@@ -154,15 +155,7 @@ std::pair<calibration::ScanSpec, calibration::ScanTiming> scan_settings(const js
       body_optional_number(body, "half_span_beams").value_or(spec.half_span_beams);
   spec.reference_beams =
       body_optional_number(body, "reference_beams").value_or(spec.reference_beams);
-  calibration::ScanTiming timing;
-  timing.settle_s = body_optional_number(body, "settle_s").value_or(timing.settle_s);
-  timing.dwell_s = body_optional_number(body, "dwell_s").value_or(timing.dwell_s);
-  if (!(timing.settle_s >= 0.0 && timing.settle_s <= 60.0)) {
-    throw ApiError(400, "settle_s", "settle_s must be 0 to 60");
-  }
-  if (!(timing.dwell_s > 0.0 && timing.dwell_s <= 60.0)) {
-    throw ApiError(400, "dwell_s", "dwell_s must be above 0 and at most 60");
-  }
+  const calibration::ScanTiming timing = scan_timing_from(body);
   if (auto plan = calibration::plan_scan(spec); !plan) {
     const std::string& why = plan.error().message;
     throw ApiError(400, why.substr(0, why.find(' ')), why);

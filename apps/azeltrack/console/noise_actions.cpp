@@ -8,6 +8,7 @@
 #include "azt/calibration/noise_sources.hpp"
 #include "console/body_fields.hpp"
 #include "console/daemon_console.hpp"
+#include "console/scan_timing_body.hpp"
 
 namespace azt::app {
 namespace {
@@ -23,15 +24,7 @@ std::pair<calibration::NoisePlan, calibration::ScanTiming> noise_settings(const 
     plan.repeats = static_cast<std::size_t>(
         body_whole_number(body, "repeats", 2, 50, "repeats must be a whole number 2 to 50"));
   }
-  calibration::ScanTiming timing;
-  timing.settle_s = body_optional_number(body, "settle_s").value_or(timing.settle_s);
-  timing.dwell_s = body_optional_number(body, "dwell_s").value_or(timing.dwell_s);
-  if (!(timing.settle_s >= 0.0 && timing.settle_s <= 60.0)) {
-    throw ApiError(400, "settle_s", "settle_s must be 0 to 60");
-  }
-  if (!(timing.dwell_s > 0.0 && timing.dwell_s <= 60.0)) {
-    throw ApiError(400, "dwell_s", "dwell_s must be above 0 and at most 60");
-  }
+  const calibration::ScanTiming timing = scan_timing_from(body);
   // The plan's own refusals name their field first ("beamwidth_deg: must be …").
   if (auto ok = calibration::NoiseMeasurement::start(plan, timing, 0.0); !ok) {
     const std::string& why = ok.error().message;
