@@ -1,9 +1,9 @@
 #pragma once
 // Which sources a station can scan (docs/calibration.md): each source's antenna temperature from
 // its flux density and the dish (noise_expectation.hpp's point_antenna_k; a disc's flux from its
-// brightness: noise_sources.hpp's disc_flux_jy), the rise it gives over the system noise (the Y-factor EME
-// operators quote as "Sun noise") and its signal-to-noise at one scan point; only sources above a
-// threshold are offered.
+// brightness: noise_sources.hpp's disc_flux_jy), the rise it gives over the system noise (the
+// Y-factor EME operators quote as "Sun noise") and its signal-to-noise at one scan point; only
+// sources above a threshold are offered.
 //
 // Formulas (Kraus, Radio Astronomy, 2nd ed., 1986, §3-17 and §6-1; the same in the EME
 // literature, e.g. the ARRL Handbook's EME chapter and the W1GHZ Microwave Antenna Book):
