@@ -40,6 +40,9 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
   if (action == "noise" || action == "noise/stop") {
     return done(ActResult{act_noise(action, body, source), std::nullopt});
   }
+  if (action == "recording" || action == "recording/stop") {
+    return done(ActResult{act_recording(action, body, source), std::nullopt});
+  }
   if (action == "restart") {
     if (!p_.restart) throw ApiError(409, "", "this daemon cannot restart itself");
     p_.log(source + ": restart asked: the motors stop, the daemon starts again");
