@@ -120,6 +120,29 @@ async function main() {
       if (!listed.includes(String(rec.rows))) throw new Error(`listed "${listed}" for ${rec.rows} rows`);
     });
 
+    await scenario('the residual sky plot: each arrow along the azimuth and towards the zenith, both plots at one scale', page, async () => {
+      // The plotting itself, on residuals made here (the fit's JSON comes with the session API):
+      // east at the horizon, +0.1° along the azimuth, points south on the plot (clockwise); north
+      // at 45°, +0.1° in elevation, points down the plot, towards the zenith in the middle.
+      const drawn = await page.evaluate(async () => {
+        const m = await import('/js/calibration_fit.js');
+        const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
+        const res = [{ az_deg: 90, el_deg: 0, xel_before_deg: 0.1, el_before_deg: 0, xel_after_deg: 0.01, el_after_deg: 0, used: true },
+          { az_deg: 0, el_deg: 45, xel_before_deg: 0, el_before_deg: 0.1, xel_after_deg: 0, el_after_deg: -0.01, used: false }];
+        const arrows = (which) => { m.drawResidualSky(svg, res, which, 250, 0.05);
+          return [...svg.querySelectorAll('line.res')].map((l) => ['x1', 'y1', 'x2', 'y2'].map((a) => Number(l.getAttribute(a))).concat(l.getAttribute('class'))); };
+        const before = arrows('before'); const after = arrows('after');
+        return { before, after, bar: Number(svg.querySelector('line.scale').getAttribute('x2')) - Number(svg.querySelector('line.scale').getAttribute('x1')) };
+      });
+      const [east, north] = drawn.before;
+      const near = (a, b) => Math.abs(a - b) < 0.01;
+      if (!(near(east[0], 100) && near(east[1], 0) && near(east[2], 100) && near(east[3], 25))) throw new Error(`east arrow ${east}`);
+      if (!(near(north[0], 0) && near(north[1], -50) && near(north[2], 0) && near(north[3], -25))) throw new Error(`north arrow ${north}`);
+      if (!/unused/.test(north[4])) throw new Error('a scan left out is not marked');
+      if (!(near(drawn.after[0][3], 2.5) && near(drawn.after[1][3], -52.5))) throw new Error(`after, one scale: ${drawn.after}`);
+      if (!near(drawn.bar, 12.5)) throw new Error(`scale bar ${drawn.bar}`);
+    });
+
     await scenario('the session: said plainly when the controller has no calibration API', page, async () => {
       const sources = await api('GET', '/api/calibration/sources');
       if (sources.status !== 404) {
