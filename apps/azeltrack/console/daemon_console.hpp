@@ -67,6 +67,11 @@ struct ConsoleParts {
   PointingScanner* scanner = nullptr;
   /// POST /api/restart: the daemon stops the motors and starts again (null: refused, 409).
   std::function<void(const std::string& who)> restart;
+  /// The noise measurements' and the recording's actions: the answer, or nullopt for another
+  /// action (recording_actions.cpp).
+  std::optional<nlohmann::json> act_measurement(const std::string& action,
+                                                const nlohmann::json& body,
+                                                const std::string& source);
   /// POST /api/recording and /api/recording/stop (recording_actions.cpp).
   nlohmann::json act_recording(const std::string& action, const nlohmann::json& body,
                                const std::string& source);
@@ -139,6 +144,11 @@ class DaemonConsole final : public ConsoleModel {
   /// POST /api/noise and /api/noise/stop (noise_actions.cpp).
   nlohmann::json act_noise(const std::string& action, const nlohmann::json& body,
                            const std::string& source);
+  /// The noise measurements' and the recording's actions: the answer, or nullopt for another
+  /// action (recording_actions.cpp).
+  std::optional<nlohmann::json> act_measurement(const std::string& action,
+                                                const nlohmann::json& body,
+                                                const std::string& source);
   /// POST /api/recording and /api/recording/stop (recording_actions.cpp).
   nlohmann::json act_recording(const std::string& action, const nlohmann::json& body,
                                const std::string& source);
