@@ -43,3 +43,10 @@ add_test(NAME browser_schedule
   COMMAND node ${CMAKE_CURRENT_LIST_DIR}/schedule_page_test.js $<TARGET_FILE:azeltrack>
           ${PROJECT_BINARY_DIR}/schedule-shots)
 set_tests_properties(browser_schedule PROPERTIES LABELS browser TIMEOUT 60)
+# The console's Calibration page against a daemon on the simulated receiver with the Sun high: a
+# Sun noise measurement from the form, shown with its pairs and the expected value and logged; a
+# recording started, stopped, listed and downloaded; screenshots in build/calibration-shots/.
+add_test(NAME browser_calibration
+  COMMAND node ${CMAKE_CURRENT_LIST_DIR}/calibration_page_test.js $<TARGET_FILE:azeltrack>
+          ${PROJECT_BINARY_DIR}/calibration-shots)
+set_tests_properties(browser_calibration PROPERTIES LABELS browser TIMEOUT 180)

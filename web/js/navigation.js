@@ -14,9 +14,9 @@ import { toast } from './toast.js';
 export const SCREENS = ['main', 'targets', 'sky', 'manual', 'antenna', 'setup'];
 // Pages without a tab of their own (the phone's tab bar has no room): reached from the header's
 // status icons and from Setup, whose tab stays lit on them; the planner from the Moon panel, the
-// pointing scan from the Moon panel, Targets and Sky; the software, settings, account and radio
+// pointing scan from the Moon panel, Targets and Sky, the calibration page from Targets and the scan; the software, settings, account and radio
 // pages from Setup; the satellite schedule from Targets.
-export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets', software: 'setup',
+export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', planner: 'main', scan: 'targets', calibration: 'targets', software: 'setup',
   settings: 'setup', account: 'setup', radio: 'setup', schedule: 'targets' };
 
 // The pages whose modules are loaded when first opened (their markup and style too: pages.js), so
@@ -26,6 +26,7 @@ export const SUBSCREENS = { gps: 'setup', time: 'setup', network: 'setup', plann
 const LAZY = {
   planner: [() => import('./planner.js'), 'openPlanner'],
   scan: [() => import('./scan.js'), 'openScan', 'renderScan'],
+  calibration: [() => import('./calibration.js'), 'openCalibration', 'renderCalibration'],
   software: [() => import('./software.js'), 'openSoftware', 'renderForm'],
   settings: [() => import('./settings.js'), 'openSettings'],
   account: [() => import('./settings_account.js'), 'openAccount'],

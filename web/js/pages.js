@@ -8,7 +8,7 @@ import { $, h } from './dom.js';
 
 // Each page's style sheet under css/, if it has one.
 const STYLE = {
-  gps: 'station', time: 'station', network: 'station', planner: 'planner', scan: 'scan',
+  gps: 'station', time: 'station', network: 'station', planner: 'planner', scan: 'scan', calibration: 'calibration',
   software: 'software', settings: 'settings', account: 'settings', radio: 'radio', schedule: 'schedule',
 };
 export const FRAGMENTS = Object.keys(STYLE);

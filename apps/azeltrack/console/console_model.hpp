@@ -86,6 +86,14 @@ class ConsoleModel {
     const ActDone answer = std::move(done);
     answer(ActResult{{}, ApiError(404, "", "no element feed here")});
   }
+  /// GET routes answered off the loop from files of the state directory (docs/web-api.md):
+  /// `route` after "/api/" ("recordings", "recordings/NAME", "noise/log"). The fields are the
+  /// JSON answer, or a file to download: {"download": name, "content_type", "text"}. The same
+  /// contract as act(). A model without them refuses with 404.
+  virtual void read_later(const std::string& route, ActDone done) {
+    const ActDone answer = std::move(done);
+    answer(ActResult{{}, ApiError(404, "", "no such page: /api/" + route)});
+  }
   /// The time now as ISO 8601 UTC, for records that say when they were made ("" unknown).
   virtual std::string utc_now_text() { return ""; }
   /// GET /api/config/file: the settings file's text; PUT: a whole file to take instead.

@@ -38,8 +38,8 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
                    std::nullopt});
     return;
   }
-  if (action == "noise" || action == "noise/stop") {
-    return done(ActResult{act_noise(action, body, source), std::nullopt});
+  if (auto measured = act_measurement(action, body, source)) {
+    return done(ActResult{std::move(*measured), std::nullopt});
   }
   if (action == "restart") {
     if (!p_.restart) throw ApiError(409, "", "this daemon cannot restart itself");

@@ -14,6 +14,7 @@
 #include "azt/astro/ephemeris.hpp"
 #include "azt/astro/sky_snapshot.hpp"
 #include "azt/control/modes.hpp"
+#include "calibration/recorder.hpp"
 #include "common/off_loop.hpp"
 #include "config/config_store.hpp"
 #include "config/daemon_config.hpp"
@@ -66,6 +67,14 @@ struct ConsoleParts {
   PointingScanner* scanner = nullptr;
   /// POST /api/restart: the daemon stops the motors and starts again (null: refused, 409).
   std::function<void(const std::string& who)> restart;
+  /// The noise measurements' and the recording's actions: the answer, or nullopt for another
+  /// action (recording_actions.cpp).
+  std::optional<nlohmann::json> act_measurement(const std::string& action,
+                                                const nlohmann::json& body,
+                                                const std::string& source);
+  /// POST /api/recording and /api/recording/stop (recording_actions.cpp).
+  nlohmann::json act_recording(const std::string& action, const nlohmann::json& body,
+                               const std::string& source);
   /// POST /api/hardware/direction-test (null: none here, 404).
   DirectionTest* direction_test = nullptr;
   /// The rig's Doppler and link (`radio`) and WSJT-X (`wsjtx`); null: off.
@@ -77,6 +86,11 @@ struct ConsoleParts {
   ScheduleFollower* schedule = nullptr;
   /// Noise measurements (null: none here, `noise` is idle and measurements are refused).
   NoiseRunner* noise = nullptr;
+  /// Recording to CSV (null: none here, `recording` is idle and recordings are refused).
+  Recorder* recorder = nullptr;
+  /// recordings/ in the state directory, and the noise log's file; read off the loop.
+  std::string recordings_dir{};
+  std::string noise_log{};
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -104,6 +118,8 @@ class DaemonConsole final : public ConsoleModel {
   std::optional<std::string> config_file_text() override;
   std::string utc_now_text() override;
   void import_config_file(const std::string& text, ActDone done) override;
+  /// GET /api/recordings, /api/recordings/NAME, /api/noise/log (recording_actions.cpp).
+  void read_later(const std::string& route, ActDone done) override;
 
  private:
   /// Sun, Moon and every target at one whole second, computed once per second.
@@ -128,6 +144,14 @@ class DaemonConsole final : public ConsoleModel {
   /// POST /api/noise and /api/noise/stop (noise_actions.cpp).
   nlohmann::json act_noise(const std::string& action, const nlohmann::json& body,
                            const std::string& source);
+  /// The noise measurements' and the recording's actions: the answer, or nullopt for another
+  /// action (recording_actions.cpp).
+  std::optional<nlohmann::json> act_measurement(const std::string& action,
+                                                const nlohmann::json& body,
+                                                const std::string& source);
+  /// POST /api/recording and /api/recording/stop (recording_actions.cpp).
+  nlohmann::json act_recording(const std::string& action, const nlohmann::json& body,
+                               const std::string& source);
   /// POST /api/hardware/direction-test {"axis"}: answered when the test ends (about 1.6 s).
   void act_direction_test(const nlohmann::json& body, const std::string& source, ActDone done);
   /// POST /api/schedule (the list replaced whole) and /api/schedule/resume (schedule_api.cpp).

@@ -56,6 +56,34 @@ ActDone answer(const WebApi::Respond& respond) {
   };
 }
 
+/// The GET routes the model answers off the loop (files of the state directory).
+bool read_later(const std::string& path) {
+  return path == "/api/recordings" || path.rfind("/api/recordings/", 0) == 0 ||
+         path == "/api/noise/log";
+}
+
+/// read_later's answer: its JSON, or the file it names as a download.
+ActDone file_answer(const WebApi::Respond& respond) {
+  return [respond](ActResult result) {
+    if (result.error) {
+      respond(error_reply(result.error->status(), result.error->what(), result.error->field()));
+      return;
+    }
+    json& f = result.fields;
+    if (!f.contains("download")) {
+      respond(json_reply(200, f));
+      return;
+    }
+    linux_os::HttpReply reply{200,
+                              f.value("content_type", "text/plain"),
+                              std::move(f["text"].get_ref<std::string&>()),
+                              {}};
+    reply.headers.emplace_back("Content-Disposition",
+                               "attachment; filename=\"" + f["download"].get<std::string>() + "\"");
+    respond(reply);
+  };
+}
+
 }  // namespace
 
 std::string cookie_value(const std::string& cookie_header, const std::string& name) {
@@ -123,6 +151,8 @@ void WebApi::handle(linux_os::HttpRequest request, const Respond& respond) {
       } else {
         handle_account(request, respond);
       }
+    } else if (request.method == "GET" && read_later(request.path)) {
+      model_.read_later(request.path.substr(5), file_answer(respond));
     } else if (request.method == "GET" || request.method == "HEAD") {
       respond(handle_get(request));
     } else if (request.method == "POST" || request.method == "PUT" ||

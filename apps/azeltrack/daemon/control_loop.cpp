@@ -103,6 +103,7 @@ void StationDaemon::tick() {
     control::AzEl rate;
     const control::Demand demand = satellites_.demand(unix_now_s(), mount_az(), rate);
     antenna_->tick(now, demand, rate);
+    recording_tick(now, demand);
   } else {
     std::optional<SkyFix> fix;
     if (modes_.mode() == control::Mode::Track) {
@@ -116,6 +117,7 @@ void StationDaemon::tick() {
     receiver_->tick(now);
     scan_tick(now, source);
     noise_tick(now, source);
+    recording_tick(now, demand);
   }
   report_faults();
   // Mode changes by PC programs and new faults reach open consoles at once.
@@ -178,6 +180,7 @@ void StationDaemon::shutdown(const std::string& why) {
   // Motors first, then the servers: nothing may move after this line.
   antenna_->stop_now(now_s());
   sequencer_->release_now();
+  recorder_->stop("the daemon stopped");  // its last rows go to the worker, which finishes them
   spdlog::info("{}: motors stopped, shutting down", why);
   if (rotctld_) rotctld_->close();
   for (auto& s : serial_) s->close();

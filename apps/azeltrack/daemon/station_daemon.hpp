@@ -19,6 +19,7 @@
 #include "azt/linux/tcp_protocol_server.hpp"
 #include "azt/linux/udp_datagram_server.hpp"
 #include "azt/linux/worker_thread.hpp"
+#include "calibration/recorder.hpp"
 #include "common/off_loop.hpp"
 #include "config/config_store.hpp"
 #include "console/console_server.hpp"
@@ -129,6 +130,11 @@ class StationDaemon {
   /// The demand while a noise measurement runs: the source plus its offset.
   std::optional<control::AzEl> noise_aim(const std::optional<control::AzEl>& source);
   void noise_tick(double now, const std::optional<control::AzEl>& source);
+  // recording_parts.cpp: recording to CSV (calibration/recorder.hpp), written on the worker.
+  static constexpr const char* kRecordingsDir = "recordings";  ///< beside the configuration
+  std::unique_ptr<Recorder> make_recorder();
+  /// After the antenna's tick: a row of `demand`, the reading and the power when one is due.
+  void recording_tick(double now, const control::Demand& demand);
   /// An exception escaped a handler: the loop's state is unknown, so the station goes safe and
   /// the process exits (systemd restarts it, motionless until a client asks).
   void fail_safe(const std::string& why);
@@ -177,6 +183,7 @@ class StationDaemon {
   std::unique_ptr<PowerReceiver> receiver_;   ///< [receiver]: the power readings of scans
   std::unique_ptr<PointingScanner> scanner_;  ///< a pointing scan, while one runs
   std::unique_ptr<NoiseRunner> noise_;        ///< a noise measurement, while one runs
+  std::unique_ptr<Recorder> recorder_;        ///< recording to CSV, while one runs
   std::unique_ptr<StationRadio> radio_;       ///< [radio] and [wsjtx]: the rig and WSJT-X
   std::unique_ptr<MotorPower> power_;         ///< [hardware.power]; none when not set
   StationCommands commands_;

@@ -136,6 +136,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   scanner_ = std::make_unique<PointingScanner>(
       config_.receiver.source == ReceiverConfig::Source::None ? nullptr : &receiver_->feed());
   noise_ = make_noise_runner();
+  recorder_ = make_recorder();
   radio_ = make_radio();
   schedule_ = make_schedule();
 }
@@ -446,7 +447,10 @@ void StationDaemon::open_console() {
                           : nullptr,
                    elements_.get(),
                    schedule_.get(),
-                   noise_.get()},
+                   noise_.get(),
+                   recorder_.get(),
+                   beside_config(kRecordingsDir),
+                   beside_config(kNoiseLogFile)},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});

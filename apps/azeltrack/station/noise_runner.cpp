@@ -89,6 +89,7 @@ json NoiseRunner::result_json() const {
          {"y_factor_db", result_->y_db},
          {"std_error_db", result_->std_error_db},
          {"pairs", result_->pair_y_db.size()},
+         {"pair_y_db", result_->pair_y_db},  // each on/off pair's Y: the scatter the console plots
          {"missed", result_->missed}};
   if (!expected_) return j;
   const auto x = calibration::expected_noise(expected_->station, expected_->source);

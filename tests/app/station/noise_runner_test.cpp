@@ -77,6 +77,8 @@ TEST(NoiseRunner, OnAndOffTheSourceThenTheYFactorIsShownAndLogged) {
   EXPECT_NEAR(j["result"]["y_factor_db"].get<double>(), 10.0, 1e-9);
   EXPECT_NEAR(j["result"]["std_error_db"].get<double>(), 0.0, 1e-9);
   EXPECT_EQ(j["result"]["pairs"], 2);
+  ASSERT_EQ(j["result"]["pair_y_db"].size(), 2U);  // the scatter the console plots
+  EXPECT_NEAR(j["result"]["pair_y_db"][0].get<double>(), 10.0, 1e-9);
   // Expected: 64.62 SFU at 1296 MHz (F10.7 100 scaled), a 0.70° disc in the 1.6° beam.
   EXPECT_NEAR(j["result"]["expected"]["flux_sfu"].get<double>(), 64.62, 0.01);
   ASSERT_EQ(b.logged.size(), 1U);
