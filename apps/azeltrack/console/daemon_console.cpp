@@ -37,6 +37,10 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
                    std::nullopt});
     return;
   }
+  if (action.rfind("calibration/", 0) == 0) {
+    act_calibration(action, body, source, std::move(done));
+    return;
+  }
   if (action == "noise" || action == "noise/stop") {
     return done(ActResult{act_noise(action, body, source), std::nullopt});
   }
@@ -173,6 +177,9 @@ std::pair<calibration::ScanSpec, calibration::ScanTiming> scan_settings(const js
 json DaemonConsole::act_scan(const json& body, const std::string& source) {
   if (p_.scanner == nullptr) throw ApiError(503, "", "no pointing scans here");
   const auto [spec, timing] = scan_settings(body);
+  if (p_.calibration != nullptr && p_.calibration->running()) {
+    throw ApiError(409, "", "a calibration session is running: stop it first");
+  }
   const std::string name = body_text(body, "source");
   if (auto ready = p_.scanner->ready(p_.monotonic_s()); !ready) {
     throw ApiError(503, "", ready.error().message);

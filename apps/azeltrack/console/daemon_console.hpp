@@ -14,6 +14,8 @@
 #include "azt/astro/ephemeris.hpp"
 #include "azt/astro/sky_snapshot.hpp"
 #include "azt/control/modes.hpp"
+#include "calibration/calibration_runner.hpp"
+#include "calibration/pointing_history.hpp"
 #include "common/off_loop.hpp"
 #include "config/config_store.hpp"
 #include "config/daemon_config.hpp"
@@ -66,6 +68,18 @@ struct ConsoleParts {
   PointingScanner* scanner = nullptr;
   /// POST /api/restart: the daemon stops the motors and starts again (null: refused, 409).
   std::function<void(const std::string& who)> restart;
+  /// POST /api/calibration/session, …/session/stop, …/apply, …/restore (calibration_actions.cpp).
+  void act_calibration(const std::string& action, const nlohmann::json& body,
+                       const std::string& source, ActDone done);
+  /// The fit of the whole scan log with the model in use, or why there is none.
+  [[nodiscard]] Result<calibration::PointingFit> calibration_fit() const;
+  /// Saves `terms` as [pointing] and, once saved, appends `records` to the history.
+  void save_pointing(const calibration::PointingTerms& terms, std::vector<nlohmann::json> records,
+                     ActDone done);
+  /// /api/state `calibration`: the session's state and the pointing model in use (`model`).
+  [[nodiscard]] nlohmann::json calibration_json() const;
+  /// A file beside the configuration (the state directory).
+  [[nodiscard]] std::string state_file(const char* name) const;
   /// POST /api/hardware/direction-test (null: none here, 404).
   DirectionTest* direction_test = nullptr;
   /// The rig's Doppler and link (`radio`) and WSJT-X (`wsjtx`); null: off.
@@ -77,6 +91,10 @@ struct ConsoleParts {
   ScheduleFollower* schedule = nullptr;
   /// Noise measurements (null: none here, `noise` is idle and measurements are refused).
   NoiseRunner* noise = nullptr;
+  /// The calibration session and its scan log (null: none here, its routes 404).
+  CalibrationRunner* calibration = nullptr;
+  /// The models saved as [pointing] (with `calibration`).
+  PointingHistory* pointing_history = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -102,6 +120,9 @@ class DaemonConsole final : public ConsoleModel {
   void save_password_hash(const std::string& hash, ActDone done) override;
   void save_tokens(const nlohmann::json& tokens, ActDone done) override;
   std::optional<std::string> config_file_text() override;
+  std::pair<unsigned, nlohmann::json> calibration_view(const std::string& route) override;
+  std::optional<std::string> scan_log_csv() override;
+  void import_scan_log(std::string text, const std::string& source, ActDone done) override;
   std::string utc_now_text() override;
   void import_config_file(const std::string& text, ActDone done) override;
 
@@ -128,6 +149,18 @@ class DaemonConsole final : public ConsoleModel {
   /// POST /api/noise and /api/noise/stop (noise_actions.cpp).
   nlohmann::json act_noise(const std::string& action, const nlohmann::json& body,
                            const std::string& source);
+  /// POST /api/calibration/session, …/session/stop, …/apply, …/restore (calibration_actions.cpp).
+  void act_calibration(const std::string& action, const nlohmann::json& body,
+                       const std::string& source, ActDone done);
+  /// The fit of the whole scan log with the model in use, or why there is none.
+  [[nodiscard]] Result<calibration::PointingFit> calibration_fit() const;
+  /// Saves `terms` as [pointing] and, once saved, appends `records` to the history.
+  void save_pointing(const calibration::PointingTerms& terms, std::vector<nlohmann::json> records,
+                     ActDone done);
+  /// /api/state `calibration`: the session's state and the pointing model in use (`model`).
+  [[nodiscard]] nlohmann::json calibration_json() const;
+  /// A file beside the configuration (the state directory).
+  [[nodiscard]] std::string state_file(const char* name) const;
   /// POST /api/hardware/direction-test {"axis"}: answered when the test ends (about 1.6 s).
   void act_direction_test(const nlohmann::json& body, const std::string& source, ActDone done);
   /// POST /api/schedule (the list replaced whole) and /api/schedule/resume (schedule_api.cpp).
@@ -167,7 +200,8 @@ class DaemonConsole final : public ConsoleModel {
   /// for a restart (restart_needed.hpp), brought up to date after every save.
   toml::table started_;
   std::vector<std::string> restart_needed_;
-  bool scan_apply_pending_ = false;  ///< a scan's apply is being saved: a second is refused
+  bool scan_apply_pending_ = false;     ///< a scan's apply is being saved: a second is refused
+  bool pointing_save_pending_ = false;  ///< an apply or a restore is being saved
 };
 
 }  // namespace azt::app

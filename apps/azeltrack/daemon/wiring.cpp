@@ -136,6 +136,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   scanner_ = std::make_unique<PointingScanner>(
       config_.receiver.source == ReceiverConfig::Source::None ? nullptr : &receiver_->feed());
   noise_ = make_noise_runner();
+  calibration_ = make_calibration_runner();
   radio_ = make_radio();
   schedule_ = make_schedule();
 }
@@ -446,7 +447,9 @@ void StationDaemon::open_console() {
                           : nullptr,
                    elements_.get(),
                    schedule_.get(),
-                   noise_.get()},
+                   noise_.get(),
+                   calibration_.get(),
+                   &pointing_history_},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});
