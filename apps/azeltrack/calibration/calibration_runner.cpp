@@ -53,7 +53,7 @@ json log_row_json(const calibration::ScanLogEntry& row) {
           {"beamwidth_deg", optional(row.beamwidth_deg)}};
 }
 
-Result<bool> CalibrationRunner::start(const CalibrationRequest& request, SessionSky sky,
+Result<bool> CalibrationRunner::start(const CalibrationRequest& request, const SessionSky& sky,
                                       double now_s, double unix_s,
                                       std::optional<double> started_unix_s) {
   if (session_) return fail("a calibration session is running already");

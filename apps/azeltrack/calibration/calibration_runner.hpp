@@ -54,8 +54,8 @@ class CalibrationRunner {
 
   /// Begins a session at `now_s` on the loop's clock, whose UTC is `unix_s`; `started_unix_s`
   /// when it resumes one begun earlier (its rows since count). Fails with the reason.
-  Result<bool> start(const CalibrationRequest& request, SessionSky sky, double now_s, double unix_s,
-                     std::optional<double> started_unix_s = std::nullopt);
+  Result<bool> start(const CalibrationRequest& request, const SessionSky& sky, double now_s,
+                     double unix_s, std::optional<double> started_unix_s = std::nullopt);
   /// Ends a running session (and its scan), saying why.
   void stop(const std::string& why);
   /// After the station's tick: a finished scan's rows, the next step.

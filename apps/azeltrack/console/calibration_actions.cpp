@@ -92,7 +92,7 @@ void DaemonConsole::act_calibration(const std::string& action, const json& body,
     }
     records.push_back(history.record(fit->terms, fit->rms_deg, fit->observations, "fit", utc));
     if (records.size() == 2) records[1]["id"] = records[0]["id"].get<long long>() + 1;
-    return save_pointing(fit->terms, std::move(records), std::move(done));
+    return save_pointing(fit->terms, records, std::move(done));
   }
   if (action == "calibration/restore") {
     const long long id = body_whole_number(body, "id", 1, 1000000000, "id must be a model's id");
@@ -112,7 +112,7 @@ void DaemonConsole::act_calibration(const std::string& action, const json& body,
 }
 
 void DaemonConsole::save_pointing(const calibration::PointingTerms& terms,
-                                  std::vector<json> records, ActDone done) {
+                                  const std::vector<json>& records, ActDone done) {
   pointing_save_pending_ = true;
   save(
       "pointing",

@@ -68,18 +68,6 @@ struct ConsoleParts {
   PointingScanner* scanner = nullptr;
   /// POST /api/restart: the daemon stops the motors and starts again (null: refused, 409).
   std::function<void(const std::string& who)> restart;
-  /// POST /api/calibration/session, …/session/stop, …/apply, …/restore (calibration_actions.cpp).
-  void act_calibration(const std::string& action, const nlohmann::json& body,
-                       const std::string& source, ActDone done);
-  /// The fit of the whole scan log with the model in use, or why there is none.
-  [[nodiscard]] Result<calibration::PointingFit> calibration_fit() const;
-  /// Saves `terms` as [pointing] and, once saved, appends `records` to the history.
-  void save_pointing(const calibration::PointingTerms& terms, std::vector<nlohmann::json> records,
-                     ActDone done);
-  /// /api/state `calibration`: the session's state and the pointing model in use (`model`).
-  [[nodiscard]] nlohmann::json calibration_json() const;
-  /// A file beside the configuration (the state directory).
-  [[nodiscard]] std::string state_file(const char* name) const;
   /// POST /api/hardware/direction-test (null: none here, 404).
   DirectionTest* direction_test = nullptr;
   /// The rig's Doppler and link (`radio`) and WSJT-X (`wsjtx`); null: off.
@@ -155,8 +143,8 @@ class DaemonConsole final : public ConsoleModel {
   /// The fit of the whole scan log with the model in use, or why there is none.
   [[nodiscard]] Result<calibration::PointingFit> calibration_fit() const;
   /// Saves `terms` as [pointing] and, once saved, appends `records` to the history.
-  void save_pointing(const calibration::PointingTerms& terms, std::vector<nlohmann::json> records,
-                     ActDone done);
+  void save_pointing(const calibration::PointingTerms& terms,
+                     const std::vector<nlohmann::json>& records, ActDone done);
   /// /api/state `calibration`: the session's state and the pointing model in use (`model`).
   [[nodiscard]] nlohmann::json calibration_json() const;
   /// A file beside the configuration (the state directory).
