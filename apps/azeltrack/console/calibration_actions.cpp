@@ -50,6 +50,16 @@ std::string DaemonConsole::state_file(const char* name) const {
   return (std::filesystem::path(p_.store.path()).parent_path() / name).string();
 }
 
+void DaemonConsole::act_measurement(const std::string& action, const json& body,
+                                    const std::string& source, ActDone done) {
+  if (action == "noise" || action == "noise/stop") {
+    return done(ActResult{act_noise(action, body, source), std::nullopt});
+  }
+  if (action.rfind("calibration/", 0) == 0)
+    return act_calibration(action, body, source, std::move(done));
+  throw ApiError(404, "", "no such action: " + action);
+}
+
 void DaemonConsole::act_calibration(const std::string& action, const json& body,
                                     const std::string& source, ActDone done) {
   if (p_.calibration == nullptr) throw ApiError(404, "", "no calibration sessions here");

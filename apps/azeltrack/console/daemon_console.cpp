@@ -37,12 +37,9 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
                    std::nullopt});
     return;
   }
-  if (action.rfind("calibration/", 0) == 0) {
-    act_calibration(action, body, source, std::move(done));
+  if (action.rfind("calibration/", 0) == 0 || action.rfind("noise", 0) == 0) {
+    act_measurement(action, body, source, std::move(done));
     return;
-  }
-  if (action == "noise" || action == "noise/stop") {
-    return done(ActResult{act_noise(action, body, source), std::nullopt});
   }
   if (action == "restart") {
     if (!p_.restart) throw ApiError(409, "", "this daemon cannot restart itself");

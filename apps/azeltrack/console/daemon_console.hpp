@@ -137,6 +137,9 @@ class DaemonConsole final : public ConsoleModel {
   /// POST /api/noise and /api/noise/stop (noise_actions.cpp).
   nlohmann::json act_noise(const std::string& action, const nlohmann::json& body,
                            const std::string& source);
+  /// The noise measurements' and the calibration session's actions (calibration_actions.cpp).
+  void act_measurement(const std::string& action, const nlohmann::json& body,
+                       const std::string& source, ActDone done);
   /// POST /api/calibration/session, …/session/stop, …/apply, …/restore (calibration_actions.cpp).
   void act_calibration(const std::string& action, const nlohmann::json& body,
                        const std::string& source, ActDone done);
