@@ -6,7 +6,7 @@
 # minutes waiting for the daemon's real-time clock (a pass's AOS, a scan's settling): they take
 # none, so they run beside two working tests instead of holding a core idle. Without the file
 # (a plain `ctest -j2`) the slots are ignored.
-set(azt_waiting_tests schedule_daemon sim_receiver scan)
+set(azt_waiting_tests schedule_daemon sim_receiver scan calibration_session)
 get_property(azt_registered_tests DIRECTORY PROPERTY TESTS)
 foreach(azt_test IN LISTS azt_registered_tests)
   if(NOT azt_test IN_LIST azt_waiting_tests)
@@ -22,6 +22,7 @@ set_tests_properties(lint PROPERTIES COST 600)
 set_tests_properties(schedule_daemon PROPERTIES COST 300)
 set_tests_properties(sim_receiver PROPERTIES COST 140)
 set_tests_properties(scan PROPERTIES COST 125)
+set_tests_properties(calibration_session PROPERTIES COST 140)
 set_tests_properties(browser_console PROPERTIES COST 100)
 set_tests_properties(browser_calibration PROPERTIES COST 60)
 set_tests_properties(daemon_clients PROPERTIES COST 55)

@@ -104,7 +104,7 @@ function termsLine(terms) {
 
 export async function loadHistory() {
   const r = await request('GET', '/api/calibration/history');
-  const list = r.ok ? (Array.isArray(r.data) ? r.data : r.data.history || []) : [];
+  const list = r.ok ? (r.data.models || []) : [];
   if (r.status === 404) {
     say('cal-history-msg', 'The history of applied models is not available on this controller (404).', true);
     $('cal-export').hidden = true;
@@ -136,7 +136,7 @@ async function importCsv() {
   if (!file) return;
   const text = await file.text();
   const r = await act('import the scan log', 'POST', '/api/calibration/log', text, { quiet: true, type: 'text/csv' });
-  say('cal-csv-msg', r.ok ? `Imported ${file.name}: ${r.data.rows ?? r.data.appended ?? 'its'} rows added to the log.` : `Not imported: ${why(r)}.`, !r.ok);
+  say('cal-csv-msg', r.ok ? `Imported ${file.name}: ${r.data.imported} rows added to the log (${r.data.log_rows} in all).` : `Not imported: ${why(r)}.`, !r.ok);
   $('cal-import').value = '';
   if (r.ok) loadFit();
 }

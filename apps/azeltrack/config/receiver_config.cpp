@@ -19,6 +19,12 @@ ReceiverConfig receiver_config_from(const ConfigFile& file) {
   c.port = static_cast<unsigned short>(s.integer("port").value_or(0));
   if (c.source == ReceiverConfig::Source::Udp && c.port == 0) s.fail("port", "udp needs a port");
   c.stale_s = s.number("stale_s").value_or(c.stale_s);
+  const ConfigSection station = file.section("station");
+  c.dish.dish_m = station.number("dish_m");
+  c.dish.efficiency = station.number("efficiency");
+  c.dish.tsys_k = s.number("tsys_k");
+  c.dish.bandwidth_hz = s.number("bandwidth_hz");
+  c.dish.integration_s = s.number("integration_s").value_or(c.dish.integration_s);
   return c;
 }
 

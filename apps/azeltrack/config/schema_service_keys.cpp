@@ -73,7 +73,7 @@ constexpr std::array<KeySpec, 6> kTime{{
 
 constexpr std::array<std::string_view, 4> kReceiverSources{"none", "rtl_power", "udp", "sim"};
 
-constexpr std::array<KeySpec, 5> kReceiver{{
+constexpr std::array<KeySpec, 8> kReceiver{{
     {.key = "source",
      .type = KeyType::Choice,
      .choices = kReceiverSources,
@@ -100,6 +100,28 @@ constexpr std::array<KeySpec, 5> kReceiver{{
      .range = closed(0.1, 60.0),
      .default_toml = "2.0",
      .help = "the receiver is silent after this long without a reading"},
+    {.key = "tsys_k",
+     .type = KeyType::Number,
+     .unit = "K",
+     .range = above_up_to(0.0, 100000.0),
+     .default_note = "not given",
+     .help = "the system noise temperature on cold sky: with `[station] dish_m` and "
+             "`efficiency`, which sources a calibration scan can hear "
+             "([calibration.md](calibration.md))"},
+    {.key = "bandwidth_hz",
+     .type = KeyType::Number,
+     .unit = "Hz",
+     .range = above_up_to(0.0, 1e10),
+     .default_note = "not given: 0.1 dB a reading assumed",
+     .help = "the bandwidth each reading integrates: with `integration_s`, the scatter of a "
+             "reading of an ideal radiometer, 10·log10(1 + 1/√(B·τ)), for the sources' estimate"},
+    {.key = "integration_s",
+     .type = KeyType::Number,
+     .unit = "s",
+     .range = above_up_to(0.0, 60.0),
+     .default_toml = "1.0",
+     .help = "the time one reading integrates (rtl_power's `-i`): the readings a scan point "
+             "averages are its dwell over this"},
 }};
 
 constexpr std::array<KeySpec, 2> kExport{{

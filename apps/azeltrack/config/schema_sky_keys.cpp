@@ -7,7 +7,7 @@
 namespace azt::app {
 namespace {
 
-constexpr std::array<KeySpec, 4> kStation{{
+constexpr std::array<KeySpec, 6> kStation{{
     {.key = "grid",
      .type = KeyType::Text,
      .default_note = "from lat_deg/lon_deg",
@@ -36,6 +36,19 @@ constexpr std::array<KeySpec, 4> kStation{{
      .default_toml = "0.0",
      .help = "height above the WGS84 ellipsoid",
      .applies = Applies::Live},
+    {.key = "dish_m",
+     .type = KeyType::Number,
+     .unit = "m",
+     .range = closed(0.3, 100.0),
+     .default_note = "not given",
+     .help = "the dish's diameter: with `efficiency` and `[receiver] tsys_k`, the calibration "
+             "session estimates which sources a scan can hear ([calibration.md](calibration.md))"},
+    {.key = "efficiency",
+     .type = KeyType::Number,
+     .range = above_up_to(0.0, 1.0),
+     .default_note = "not given",
+     .help = "the dish's aperture efficiency, as a fraction (0.5 to 0.65 for most amateur "
+             "dishes); with `dish_m`"},
 }};
 
 constexpr std::array<std::string_view, 3> kEphemerides{"auto", "swiss", "erfa"};

@@ -94,6 +94,20 @@ class ConsoleModel {
     const ActDone answer = std::move(done);
     answer(ActResult{{}, ApiError(404, "", "no such page: /api/" + route)});
   }
+  /// GET /api/calibration/ROUTE (sources, fit, history; docs/web-api.md): the status and body.
+  /// A model without a calibration session refuses with 404.
+  virtual std::pair<unsigned, nlohmann::json> calibration_view(const std::string& route) {
+    throw ApiError(404, "", "no calibration here: " + route);
+  }
+  /// GET /api/calibration/log: the scan log as CSV; nullopt: none here (404).
+  virtual std::optional<std::string> scan_log_csv() { return std::nullopt; }
+  /// POST /api/calibration/log: a CSV's rows appended to the scan log (the text moves on to the
+  /// worker). A model without a scan log refuses with 404.
+  // NOLINTNEXTLINE(performance-unnecessary-value-param): this default only refuses
+  virtual void import_scan_log(std::string /*text*/, const std::string& /*source*/, ActDone done) {
+    const ActDone answer = std::move(done);
+    answer(ActResult{{}, ApiError(404, "", "no scan log here")});
+  }
   /// The time now as ISO 8601 UTC, for records that say when they were made ("" unknown).
   virtual std::string utc_now_text() { return ""; }
   /// GET /api/config/file: the settings file's text; PUT: a whole file to take instead.

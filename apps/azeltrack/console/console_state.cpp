@@ -197,6 +197,7 @@ json DaemonConsole::state() {
           {"scan", p_.scanner ? p_.scanner->to_json() : json{{"state", "idle"}}},
           {"noise", p_.noise ? p_.noise->to_json() : json{{"state", "idle"}}},
           {"recording", p_.recorder ? p_.recorder->to_json() : json{{"state", "idle"}}},
+          {"calibration", calibration_json()},
           {"faults", p_.antenna.faults()},
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
           {"commands", p_.motions != nullptr ? p_.motions->to_json() : json::array()},

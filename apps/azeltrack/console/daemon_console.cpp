@@ -38,8 +38,10 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
                    std::nullopt});
     return;
   }
-  if (auto measured = act_measurement(action, body, source)) {
-    return done(ActResult{std::move(*measured), std::nullopt});
+  if (action.rfind("calibration/", 0) == 0 || action.rfind("noise", 0) == 0 ||
+      action.rfind("recording", 0) == 0) {
+    act_measurement(action, body, source, std::move(done));
+    return;
   }
   if (action == "restart") {
     if (!p_.restart) throw ApiError(409, "", "this daemon cannot restart itself");
@@ -166,6 +168,9 @@ std::pair<calibration::ScanSpec, calibration::ScanTiming> scan_settings(const js
 json DaemonConsole::act_scan(const json& body, const std::string& source) {
   if (p_.scanner == nullptr) throw ApiError(503, "", "no pointing scans here");
   const auto [spec, timing] = scan_settings(body);
+  if (p_.calibration != nullptr && p_.calibration->running()) {
+    throw ApiError(409, "", "a calibration session is running: stop it first");
+  }
   const std::string name = body_text(body, "source");
   if (auto ready = p_.scanner->ready(p_.monotonic_s()); !ready) {
     throw ApiError(503, "", ready.error().message);

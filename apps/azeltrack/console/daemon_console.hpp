@@ -15,6 +15,8 @@
 #include "azt/astro/sky_snapshot.hpp"
 #include "azt/control/modes.hpp"
 #include "calibration/recorder.hpp"
+#include "calibration/calibration_runner.hpp"
+#include "calibration/pointing_history.hpp"
 #include "common/off_loop.hpp"
 #include "config/config_store.hpp"
 #include "config/daemon_config.hpp"
@@ -91,6 +93,10 @@ struct ConsoleParts {
   /// recordings/ in the state directory, and the noise log's file; read off the loop.
   std::string recordings_dir{};
   std::string noise_log{};
+  /// The calibration session and its scan log (null: none here, its routes 404).
+  CalibrationRunner* calibration = nullptr;
+  /// The models saved as [pointing] (with `calibration`).
+  PointingHistory* pointing_history = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -116,6 +122,9 @@ class DaemonConsole final : public ConsoleModel {
   void save_password_hash(const std::string& hash, ActDone done) override;
   void save_tokens(const nlohmann::json& tokens, ActDone done) override;
   std::optional<std::string> config_file_text() override;
+  std::pair<unsigned, nlohmann::json> calibration_view(const std::string& route) override;
+  std::optional<std::string> scan_log_csv() override;
+  void import_scan_log(std::string text, const std::string& source, ActDone done) override;
   std::string utc_now_text() override;
   void import_config_file(const std::string& text, ActDone done) override;
   /// GET /api/recordings, /api/recordings/NAME, /api/noise/log (recording_actions.cpp).
@@ -144,11 +153,22 @@ class DaemonConsole final : public ConsoleModel {
   /// POST /api/noise and /api/noise/stop (noise_actions.cpp).
   nlohmann::json act_noise(const std::string& action, const nlohmann::json& body,
                            const std::string& source);
-  /// The noise measurements' and the recording's actions: the answer, or nullopt for another
-  /// action (recording_actions.cpp).
-  std::optional<nlohmann::json> act_measurement(const std::string& action,
-                                                const nlohmann::json& body,
-                                                const std::string& source);
+  /// The noise measurements', the recording's and the calibration session's actions
+  /// (calibration_actions.cpp).
+  void act_measurement(const std::string& action, const nlohmann::json& body,
+                       const std::string& source, ActDone done);
+  /// POST /api/calibration/session, …/session/stop, …/apply, …/restore (calibration_actions.cpp).
+  void act_calibration(const std::string& action, const nlohmann::json& body,
+                       const std::string& source, ActDone done);
+  /// The fit of the whole scan log with the model in use, or why there is none.
+  [[nodiscard]] Result<calibration::PointingFit> calibration_fit() const;
+  /// Saves `terms` as [pointing] and, once saved, appends `records` to the history.
+  void save_pointing(const calibration::PointingTerms& terms,
+                     const std::vector<nlohmann::json>& records, ActDone done);
+  /// /api/state `calibration`: the session's state and the pointing model in use (`model`).
+  [[nodiscard]] nlohmann::json calibration_json() const;
+  /// A file beside the configuration (the state directory).
+  [[nodiscard]] std::string state_file(const char* name) const;
   /// POST /api/recording and /api/recording/stop (recording_actions.cpp).
   nlohmann::json act_recording(const std::string& action, const nlohmann::json& body,
                                const std::string& source);
@@ -191,7 +211,8 @@ class DaemonConsole final : public ConsoleModel {
   /// for a restart (restart_needed.hpp), brought up to date after every save.
   toml::table started_;
   std::vector<std::string> restart_needed_;
-  bool scan_apply_pending_ = false;  ///< a scan's apply is being saved: a second is refused
+  bool scan_apply_pending_ = false;     ///< a scan's apply is being saved: a second is refused
+  bool pointing_save_pending_ = false;  ///< an apply or a restore is being saved
 };
 
 }  // namespace azt::app

@@ -97,6 +97,9 @@ json DaemonConsole::act_noise(const std::string& action, const json& body,
   if (p_.scanner != nullptr && p_.scanner->running()) {
     throw ApiError(409, "", "a pointing scan is running: stop it first");
   }
+  if (p_.calibration != nullptr && p_.calibration->running()) {
+    throw ApiError(409, "", "a calibration session is running: stop it first");
+  }
   json pointed = act_target(json{{"name", name}}, source);  // tracks the source, or refuses
   if (!p_.sky.target()) throw ApiError(400, "source", "a noise measurement needs a sky source");
   auto started = p_.noise->start(p_.sky.target()->name, plan, timing, expected, p_.monotonic_s());

@@ -21,15 +21,6 @@ constexpr double kMaxRecordingMb = 64.0;
 
 }  // namespace
 
-std::optional<json> DaemonConsole::act_measurement(const std::string& action, const json& body,
-                                                   const std::string& source) {
-  if (action == "noise" || action == "noise/stop") return act_noise(action, body, source);
-  if (action == "recording" || action == "recording/stop") {
-    return act_recording(action, body, source);
-  }
-  return std::nullopt;
-}
-
 json DaemonConsole::act_recording(const std::string& action, const json& body,
                                   const std::string& source) {
   if (p_.recorder == nullptr) throw ApiError(503, "", "no recording here");

@@ -181,6 +181,15 @@ linux_os::HttpReply WebApi::handle_get(const linux_os::HttpRequest& request) {
         200, model_.sky(std::clamp(query_number(request.query, "hours", 12.0), 0.0, 24.0)));
   }
   if (p == "/api/locator") return json_reply(200, locator_json(request.query));
+  if (p == "/api/calibration/log") {
+    auto csv = model_.scan_log_csv();
+    if (!csv) return error_reply(404, "no scan log here");
+    return linux_os::HttpReply{200, "text/csv; charset=utf-8", std::move(*csv), {}};
+  }
+  if (p.rfind("/api/calibration/", 0) == 0) {
+    auto [status, body] = model_.calibration_view(p.substr(17));
+    return json_reply(status, body);
+  }
   if (p == "/api/session") {
     const auto csrf = auth_.csrf_of(cookie_value(request.cookie, "azt_session"), now_());
     json body{{"logged_in", csrf.has_value()}, {"password_set", auth_.has_password()}};
@@ -231,6 +240,20 @@ linux_os::HttpServer::BodyAllowance WebApi::body_allowance(const linux_os::HttpR
       elements_slot_ = slot;
       allowance.hold = std::move(slot);
       allowance.max_bytes = kMaxElementUploadBytes;
+    }
+    return allowance;
+  }
+  if (head.method == "POST" && head.path == "/api/calibration/log") {
+    // A scan log is parsed whole: read only with a login, one at a time.
+    if (!has_session(head)) {
+      allowance.refusal = error_reply(401, "login required to import a scan log");
+    } else if (!scan_log_slot_.expired()) {
+      allowance.refusal = error_reply(409, "another scan log is being imported");
+    } else {
+      auto slot = std::make_shared<const int>(0);
+      scan_log_slot_ = slot;
+      allowance.hold = std::move(slot);
+      allowance.max_bytes = kMaxScanLogUploadBytes;
     }
     return allowance;
   }
@@ -357,6 +380,10 @@ void WebApi::handle_action(linux_os::HttpRequest& request, const Respond& respon
   }
   if (request.path == "/api/satellites/elements" && request.method == "POST") {
     model_.upload_elements(std::move(request.body), "console " + request.client, answer(respond));
+    return;
+  }
+  if (request.path == "/api/calibration/log" && request.method == "POST") {
+    model_.import_scan_log(std::move(request.body), "console " + request.client, answer(respond));
     return;
   }
   const bool is_config = request.path.rfind("/api/config/", 0) == 0;

@@ -53,6 +53,8 @@ class WebApi {
   /// An element file (POST /api/satellites/elements) is held whole: CelesTrak's `active` group
   /// as TLE is under 2 MB, as OMM JSON about 10 MB.
   static constexpr std::size_t kMaxElementUploadBytes = std::size_t{16} * 1024 * 1024;
+  /// A scan log to import (POST /api/calibration/log): 25 000 rows of the export's columns.
+  static constexpr std::size_t kMaxScanLogUploadBytes = std::size_t{4} * 1024 * 1024;
   /// The WebSocket upgrade: nullopt accepts it.
   std::optional<linux_os::HttpReply> check_upgrade(const linux_os::HttpRequest& request) const;
   /// Whether the request carries a valid session cookie or bearer token (no CSRF check): a
@@ -94,6 +96,7 @@ class WebApi {
   /// The upload being received or stored: its connection holds the token until it is answered.
   std::weak_ptr<const void> upload_slot_;
   std::weak_ptr<const void> elements_slot_;  ///< one element upload read at a time
+  std::weak_ptr<const void> scan_log_slot_;  ///< one scan log import read at a time
 };
 
 /// The cookie's value named `name` in a Cookie header, "" when absent.

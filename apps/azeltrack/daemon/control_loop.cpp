@@ -27,6 +27,7 @@ int StationDaemon::run() {
   linux_os::install_crash_handlers();
   elements_->start(unix_now_s());  // at once: the start target may be a satellite
   start_target();
+  resume_calibration();
   open_servers();
   signals_.async_wait([this](boost::system::error_code ec, int signal) {
     if (!ec) {
@@ -118,6 +119,7 @@ void StationDaemon::tick() {
     scan_tick(now, source);
     noise_tick(now, source);
     recording_tick(now, demand);
+    calibration_tick(now);
   }
   report_faults();
   // Mode changes by PC programs and new faults reach open consoles at once.

@@ -20,6 +20,8 @@
 #include "azt/linux/udp_datagram_server.hpp"
 #include "azt/linux/worker_thread.hpp"
 #include "calibration/recorder.hpp"
+#include "calibration/calibration_runner.hpp"
+#include "calibration/pointing_history.hpp"
 #include "common/off_loop.hpp"
 #include "config/config_store.hpp"
 #include "console/console_server.hpp"
@@ -135,6 +137,18 @@ class StationDaemon {
   std::unique_ptr<Recorder> make_recorder();
   /// After the antenna's tick: a row of `demand`, the reading and the power when one is due.
   void recording_tick(double now, const control::Demand& demand);
+  // calibration_parts.cpp: the calibration session, its scan log and the models' history.
+  static constexpr const char* kScanLogFile = "scan-log.csv";  ///< beside the configuration
+  static constexpr const char* kPointingHistoryFile = "pointing-history.jsonl";
+  static constexpr const char* kCalibrationSessionFile = "calibration-session.json";
+  std::unique_ptr<CalibrationRunner> make_calibration_runner();
+  Result<std::string> point_for_calibration(const std::string& name);
+  void append_scan_rows(const std::vector<calibration::ScanLogEntry>& rows);
+  /// The running session's record written atomically, or (null) removed; on the worker.
+  void keep_calibration(const nlohmann::json& record);
+  /// A session the file says was running is started again from its request.
+  void resume_calibration();
+  void calibration_tick(double now);
   /// An exception escaped a handler: the loop's state is unknown, so the station goes safe and
   /// the process exits (systemd restarts it, motionless until a client asks).
   void fail_safe(const std::string& why);
@@ -183,9 +197,11 @@ class StationDaemon {
   std::unique_ptr<PowerReceiver> receiver_;   ///< [receiver]: the power readings of scans
   std::unique_ptr<PointingScanner> scanner_;  ///< a pointing scan, while one runs
   std::unique_ptr<NoiseRunner> noise_;        ///< a noise measurement, while one runs
-  std::unique_ptr<Recorder> recorder_;        ///< recording to CSV, while one runs
-  std::unique_ptr<StationRadio> radio_;       ///< [radio] and [wsjtx]: the rig and WSJT-X
-  std::unique_ptr<MotorPower> power_;         ///< [hardware.power]; none when not set
+  std::unique_ptr<Recorder> recorder_;              ///< recording to CSV, while one runs
+  PointingHistory pointing_history_;          ///< the models saved as [pointing]
+  std::unique_ptr<CalibrationRunner> calibration_;  ///< the calibration session, while one runs
+  std::unique_ptr<StationRadio> radio_;             ///< [radio] and [wsjtx]: the rig and WSJT-X
+  std::unique_ptr<MotorPower> power_;               ///< [hardware.power]; none when not set
   StationCommands commands_;
   DirectionTest direction_test_;  ///< the console's direction test of one axis, while one runs
   std::unique_ptr<ScheduleHooks> hooks_;        ///< [hooks]: the programs run at its events

@@ -137,6 +137,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       config_.receiver.source == ReceiverConfig::Source::None ? nullptr : &receiver_->feed());
   noise_ = make_noise_runner();
   recorder_ = make_recorder();
+  calibration_ = make_calibration_runner();
   radio_ = make_radio();
   schedule_ = make_schedule();
 }
@@ -450,7 +451,9 @@ void StationDaemon::open_console() {
                    noise_.get(),
                    recorder_.get(),
                    beside_config(kRecordingsDir),
-                   beside_config(kNoiseLogFile)},
+                   beside_config(kNoiseLogFile),
+                   calibration_.get(),
+                   &pointing_history_},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});

@@ -23,9 +23,10 @@ Result<bool> PointingScanner::ready(double now_s) const {
 }
 
 Result<bool> PointingScanner::start(const std::string& source, const calibration::ScanSpec& spec,
-                                    const calibration::ScanTiming& timing, double now_s) {
+                                    const calibration::ScanTiming& timing, double now_s,
+                                    const calibration::SkyOffset& centre) {
   if (auto ok = ready(now_s); !ok) return ok;
-  auto session = calibration::ScanSession::start(spec, timing, {}, now_s);
+  auto session = calibration::ScanSession::start(spec, timing, centre, now_s);
   if (!session) return session.error();
   session_ = std::move(session).value();
   last_.reset();
@@ -95,6 +96,21 @@ void PointingScanner::finish() {
 }
 
 std::optional<ScanOffsets> PointingScanner::found() const { return found_; }
+
+calibration::ScanResult PointingScanner::result() const {
+  calibration::ScanResult r;
+  if (!last_) return r;
+  if (fit_) {
+    r.fit = *fit_;
+  } else {
+    r.fit = fail(reason_.empty() ? std::string("no fit") : reason_);
+  }
+  r.xel_moment_s = last_->xel_moment_s();
+  r.el_moment_s = last_->el_moment_s();
+  r.sky_xel = sky_xel_;
+  r.sky_el = sky_el_;
+  return r;
+}
 
 nlohmann::json PointingScanner::to_json() const {
   using nlohmann::json;

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "azt/calibration/calibration_session.hpp"
 #include "azt/calibration/power_feed.hpp"
 #include "azt/calibration/scan_session.hpp"
 #include "azt/control/modes.hpp"
@@ -30,10 +31,12 @@ class PointingScanner {
   /// `feed`: the receiver's readings; null: no receiver (scans are refused).
   explicit PointingScanner(const calibration::PowerFeed* feed) : feed_(feed) {}
 
-  /// Begins a scan of `source` (the station already tracks it). Fails with the reason (no
-  /// receiver, a silent one, a bad plan).
+  /// Begins a scan of `source` (the station already tracks it) about `centre` (a calibration
+  /// session's refining scan: about what its first found). Fails with the reason (no receiver, a
+  /// silent one, a bad plan).
   Result<bool> start(const std::string& source, const calibration::ScanSpec& spec,
-                     const calibration::ScanTiming& timing, double now_s);
+                     const calibration::ScanTiming& timing, double now_s,
+                     const calibration::SkyOffset& centre = {});
   /// Whether a scan could start now: a receiver that is not silent.
   [[nodiscard]] Result<bool> ready(double now_s) const;
   /// The found offsets were applied: not offered again.
@@ -55,6 +58,11 @@ class PointingScanner {
 
   /// The last finished scan's offsets, when it fitted.
   [[nodiscard]] std::optional<ScanOffsets> found() const;
+  /// The last scan as a calibration session takes it (calibration_session.hpp): its fit, or the
+  /// reason it has none (stopped, refused), and where the source was at each line's moment.
+  [[nodiscard]] calibration::ScanResult result() const;
+  /// idle, running, done, refused or stopped.
+  [[nodiscard]] const std::string& state() const { return state_; }
 
   /// The console's `scan`: state (idle, running, done, refused, stopped), source, kind,
   /// points_done, points_total, samples, fit, the offsets found, the reason.

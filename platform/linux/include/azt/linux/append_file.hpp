@@ -19,4 +19,12 @@ inline constexpr std::size_t kMaxAppendedLine = 64 * 1024;
 /// naming the step, on a line with a newline or over kMaxAppendedLine, or an I/O error.
 Result<bool> append_line(const std::string& path, std::string_view line);
 
+/// The most append_lines() takes at once: an imported scan log (4 MiB) with room to spare.
+inline constexpr std::size_t kMaxAppendedBlock = std::size_t{8} * 1024 * 1024;
+
+/// Appends `lines` (whole lines, each ending in a newline) to `path` in one write of O_APPEND and
+/// one fsync: a scan's rows of the scan log go in together or not at all. Fails, naming the
+/// step, on text that does not end in a newline or is over kMaxAppendedBlock, or an I/O error.
+Result<bool> append_lines(const std::string& path, std::string_view lines);
+
 }  // namespace azt::linux_os
