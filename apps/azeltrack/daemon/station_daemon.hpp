@@ -19,9 +19,9 @@
 #include "azt/linux/tcp_protocol_server.hpp"
 #include "azt/linux/udp_datagram_server.hpp"
 #include "azt/linux/worker_thread.hpp"
-#include "calibration/recorder.hpp"
 #include "calibration/calibration_runner.hpp"
 #include "calibration/pointing_history.hpp"
+#include "calibration/recorder.hpp"
 #include "common/off_loop.hpp"
 #include "config/config_store.hpp"
 #include "console/console_server.hpp"
@@ -197,7 +197,7 @@ class StationDaemon {
   std::unique_ptr<PowerReceiver> receiver_;   ///< [receiver]: the power readings of scans
   std::unique_ptr<PointingScanner> scanner_;  ///< a pointing scan, while one runs
   std::unique_ptr<NoiseRunner> noise_;        ///< a noise measurement, while one runs
-  std::unique_ptr<Recorder> recorder_;              ///< recording to CSV, while one runs
+  std::unique_ptr<Recorder> recorder_;        ///< recording to CSV, while one runs
   PointingHistory pointing_history_;          ///< the models saved as [pointing]
   std::unique_ptr<CalibrationRunner> calibration_;  ///< the calibration session, while one runs
   std::unique_ptr<StationRadio> radio_;             ///< [radio] and [wsjtx]: the rig and WSJT-X
