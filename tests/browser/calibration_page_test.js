@@ -5,9 +5,9 @@
 // page shows each pointing as it is read, the Y-factor the daemon found with each pair beside the
 // mean and the expected value, and the measurement in the noise log's table and plot.
 // Recording: started at a rate from the page, stopped, listed with a link that downloads the CSV.
-// The session's routes come from the daemon's calibration API: where they answer 404 the page must
-// say it is not available (the session's own browser test comes with that API: see the note at
-// the end). Screenshots at desktop and phone size in OUT_DIR.
+// The session: started from the page on the Sun and stopped; a log of 60 offsets imported through
+// the page, its fit's terms and residual sky plots shown, applied and the earlier model restored.
+// Screenshots at desktop and phone size in OUT_DIR.
 // Usage: node calibration_page_test.js AZELTRACK OUT_DIR (AZT_WEB_DIR as for console_test.js)
 'use strict';
 const fs = require('fs');
@@ -143,17 +143,53 @@ async function main() {
       if (!near(drawn.bar, 12.5)) throw new Error(`scale bar ${drawn.bar}`);
     });
 
-    await scenario('the session: said plainly when the controller has no calibration API', page, async () => {
-      const sources = await api('GET', '/api/calibration/sources');
-      if (sources.status !== 404) {
-        // The daemon has the session API: its page's test is calibration_session_page (to come).
-        if (!(await page.isVisible('#cal-sources input'))) throw new Error('sources offered but none shown');
-        return;
+    await scenario('the session started and stopped from the page; an imported log fitted, plotted, applied and restored', page, async () => {
+      await until('the sources offered', async () => (await page.$$('#cal-sources input')).length >= 1, 10000);
+      const names = await page.$$eval('#cal-sources input', (b) => b.map((x) => x.value));
+      if (!names.some((n) => n.toLowerCase() === 'sun')) throw new Error(`sources offered: ${names}`);
+      for (const box of await page.$$('#cal-sources input')) {
+        if ((await box.getAttribute('value')).toLowerCase() === 'sun') await box.check(); else await box.uncheck();
       }
-      await until('the session marked unavailable', async () => /not available/.test(await text(page, '#cal-session-na')), 5000);
-      if (await page.isVisible('#cal-session-body')) throw new Error('the session form is shown without its API');
-      if (!/not available/.test(await text(page, '#cal-fit-msg'))) throw new Error(`fit: ${await text(page, '#cal-fit-msg')}`);
-      if (await page.isVisible('#cal-sky-before')) throw new Error('a sky plot with no fit');
+      await page.fill('#cal-hours', '1');
+      await page.fill('#cal-beam', '1.6');
+      await page.click('#cal-start');
+      await until('the session running', async () => (await state()).calibration.state === 'running', 10000);
+      await until('its progress shown', async () => (await text(page, '#cal-progress')).length > 0 && !(await page.isDisabled('#cal-stop')), 5000);
+      await page.click('#cal-stop');
+      const ended = await until('the session stopped', async () => { const c = (await state()).calibration; return c.state === 'stopped' && c; }, 10000);
+      if (!/stopped by/.test(ended.reason)) throw new Error(`ended: ${ended.reason}`);
+
+      // 60 scans over the sky whose mount offsets are one constant in azimuth and one in
+      // elevation: exactly the encoder-zero terms (IA, IE), so the fit must find them and leave
+      // nothing after.
+      const rows = ['utc,az,el,daz,del,weight,source'];
+      for (let i = 0; i < 60; i += 1) {
+        const az = (i * 137.508) % 360; const el = 15 + 60 * ((i * 0.618034) % 1);
+        const utc = new Date(Date.parse('2025-05-31T00:00:00Z') + i * 600000).toISOString().replace('.000', '');
+        rows.push(`${utc},${az.toFixed(4)},${el.toFixed(4)},0.2,-0.1,1,star${i}`);
+      }
+      await page.setInputFiles('#cal-import', { name: 'offsets.csv', mimeType: 'text/csv', buffer: Buffer.from(rows.join('\n') + '\n') });
+      await until('the import said', async () => /Imported offsets\.csv: 60 rows/.test(await text(page, '#cal-csv-msg')), 10000);
+      const fit = await api('GET', '/api/calibration/fit');
+      if (fit.status !== 200) throw new Error(`fit: ${fit.status} ${JSON.stringify(fit.json)}`);
+      const f = fit.json;
+      if (!(Math.abs(Math.abs(f.terms.ia_deg) - 0.2) < 0.001 && Math.abs(Math.abs(f.terms.ie_deg) - 0.1) < 0.001 && f.rms_after_deg < 0.001)) {
+        throw new Error(`fitted ${JSON.stringify(f.terms)}, rms after ${f.rms_after_deg}`);
+      }
+      await until('the terms on the page', async () => (await text(page, '#cal-term-rows tr[data-term="ia_deg"]')).includes(Math.abs(f.terms.ia_deg).toFixed(4)), 10000);
+      // Before: an arrow per scan, all alike; after: every scan still marked, none long enough to
+      // draw (the fit leaves nothing).
+      const count = (sel) => page.$$eval(sel, (l) => l.length);
+      const [before, marked, after] = [await count('#cal-sky-before line.res'), await count('#cal-sky-after g.resid'), await count('#cal-sky-after line.res')];
+      if (before !== 60 || marked !== 60 || after !== 0 || f.residuals.length !== 60) throw new Error(`${before} arrows before, ${marked} scans and ${after} arrows after, for ${f.residuals.length} residuals`);
+      if (!(await text(page, '#cal-rms-after')).startsWith(f.rms_after_deg.toFixed(4))) throw new Error(`rms after shown: ${await text(page, '#cal-rms-after')}`);
+
+      await page.click('#cal-apply');
+      await until('the model in use', async () => Math.abs((await state()).calibration.model.ia_deg - f.terms.ia_deg) < 1e-9, 10000);
+      await until('two models listed', async () => (await page.$$('#cal-history-rows tr')).length === 2, 10000);
+      await page.click('#cal-history-rows tr:nth-child(2) button');
+      await until('the earlier model back', async () => (await state()).calibration.model.ia_deg === 0, 10000);
+      console.log(`     fitted IA ${f.terms.ia_deg.toFixed(4)}°, IE ${f.terms.ie_deg.toFixed(4)}°, rms ${f.rms_before_deg.toFixed(4)}° before, ${f.rms_after_deg.toExponential(1)}° after`);
     });
   } finally {
     checkPageErrors(browser.errors);
@@ -162,7 +198,4 @@ async function main() {
   summarise();
 }
 
-// The session's browser test (sources offered, a session started and followed, the fit's terms
-// and the residual sky plots before and after, apply and restore) is written once the daemon's
-// calibration API (branch calib-daemon) is merged: here it answers 404.
 run(main);
