@@ -144,11 +144,18 @@ async function main() {
       const followed = await text(page, '#radio-transmitter');
       if (followed !== `${dots(DOWNLINK_MHZ * 1e6)} / ${dots(UPLINK_MHZ * 1e6)} MHz · fm`) throw new Error(`transmitter: ${followed}`);
       // The instant in UTC and, beside it, in the browser's zone (UTC+05:30).
-      const at = new Date(r.at);
-      const local = new Date(at.getTime() + 5.5 * 3600e3);
-      const hms = (d) => d.toISOString().slice(11, 16);
+      // The page and the state are read moments apart and the instant moves on each cycle: the
+      // time shown is within a few seconds of the state's (a minute may turn between the reads),
+      // and the local time is exactly 5 h 30 min after the UTC shown.
       const shown = await text(page, '#radio-at');
-      if (!shown.includes(`${hms(at)}`) || !shown.includes(` UTC (${hms(local)}`) || !shown.includes('local)')) throw new Error(`computed for: ${shown} (at ${r.at})`);
+      const m = /(\d\d):(\d\d):(\d\d) UTC \((\d\d):(\d\d):(\d\d) local\)/.exec(shown);
+      if (!m) throw new Error(`computed for: ${shown} (at ${r.at})`);
+      const day = 86400;
+      const secs = (h, mi, se) => (Number(h) * 3600 + Number(mi) * 60 + Number(se)) % day;
+      const shownUtc = secs(m[1], m[2], m[3]);
+      const at = new Date(r.at);
+      const apart = Math.abs(((shownUtc - secs(at.getUTCHours(), at.getUTCMinutes(), at.getUTCSeconds()) + day * 1.5) % day) - day / 2);
+      if (apart > 5 || secs(m[4], m[5], m[6]) !== (shownUtc + 5.5 * 3600) % day) throw new Error(`computed for: ${shown} (at ${r.at})`);
       if (await page.isVisible('#radio-owner')) throw new Error(`a Doppler note with WSJT-X silent: ${await owner(page)}`);
       if (!/SILENT/.test(await text(page, '#wsjtx-badge'))) throw new Error(`WSJT-X: ${await text(page, '#wsjtx-badge')}`);
     });

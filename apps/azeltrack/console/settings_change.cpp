@@ -146,7 +146,9 @@ void keep_station_consistent(const SettingsChange& c, toml::table& station) {
 }  // namespace
 
 std::optional<LiveApply> live_apply_of(std::string_view section, std::string_view key) {
-  if (section == "station") return LiveApply::Station;
+  // The station's place applies at once; its dish (dish_m, efficiency: the calibration's source
+  // estimates) is read at start.
+  if (section == "station" && key != "dish_m" && key != "efficiency") return LiveApply::Station;
   if (section == "sky" && key == "band") return LiveApply::Band;
   if (section == "sky" && key == "dx_grid") return LiveApply::DxGrid;
   // The pointing model is part of the corrections the antenna is handed whole.
