@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "azt/calibration/term_selection.hpp"
+#include "azt/util/text_lines.hpp"
 #include "calibration/fit_report.hpp"
 
 namespace azt::app {
@@ -12,12 +13,7 @@ using nlohmann::json;
 PointingHistory PointingHistory::parse(std::string_view text, std::size_t& skipped) {
   PointingHistory h;
   skipped = 0;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = text.substr(start, end - start);
-    start = end + 1;
+  for (const std::string_view line : split_lines(text)) {
     if (line.empty()) continue;
     json record = json::parse(line, nullptr, false);
     const bool ok = record.is_object() && record.contains("id") &&

@@ -1,6 +1,7 @@
 #include "calibration/scan_log_file.hpp"
 
 #include "azt/calibration/scan_log_csv.hpp"
+#include "azt/util/text_lines.hpp"
 
 namespace azt::app {
 namespace {
@@ -25,12 +26,7 @@ LoadedScanLog read_scan_log_file(std::string_view text) {
   LoadedScanLog out;
   std::string header;
   std::size_t number = 0;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = text.substr(start, end - start);
-    start = end + 1;
+  for (const std::string_view line : split_lines(text)) {
     ++number;
     if (skipped(line)) continue;
     if (header.empty()) {
