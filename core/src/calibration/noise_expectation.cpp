@@ -7,9 +7,6 @@ namespace azt::calibration {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kBoltzmann = 1.380649e-23;  // J/K (SI 2019, exact)
-constexpr double kLightMS = 299792458.0;     // m/s (exact)
-constexpr double kWattsPerJansky = 1e-26;    // W m⁻² Hz⁻¹
 
 double wavelength_m(double freq_mhz) { return kLightMS / (freq_mhz * 1e6); }
 

@@ -9,9 +9,6 @@ namespace azt::calibration {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kBoltzmann = 1.380649e-23;      // J/K (SI 2019, exact)
-constexpr double kLightMS = 299792458.0;         // m/s (exact)
-constexpr double kWattsPerJansky = 1e-26;        // W m⁻² Hz⁻¹
 constexpr double kF107Mhz = 2800.0;              // the 10.7 cm flux's frequency
 constexpr double kCasADiameterDeg = 5.0 / 60.0;  // a shell 5′ across (catalogue)
 constexpr double kCygAWidthDeg = 2.0 / 60.0;     // two lobes 2′ apart (catalogue)

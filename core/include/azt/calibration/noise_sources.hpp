@@ -21,6 +21,11 @@
 
 namespace azt::calibration {
 
+// The physical constants the noise formulas share (noise_sources.cpp, noise_expectation.cpp).
+constexpr double kBoltzmann = 1.380649e-23;  ///< J/K (SI 2019, exact)
+constexpr double kLightMS = 299792458.0;     ///< m/s (exact)
+constexpr double kWattsPerJansky = 1e-26;    ///< W m⁻² Hz⁻¹
+
 enum class NoiseSource { Sun, Moon, CasA, CygA };
 
 /// "sun", "moon", "casa", "cyga".
