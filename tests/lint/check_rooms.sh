@@ -5,7 +5,7 @@
 # Usage: check_rooms.sh APP_DIR
 set -euo pipefail
 app=${1:?usage: check_rooms.sh APP_DIR}
-rooms=(common config satellites elements antenna station schedule radio calibration console daemon cli)
+rooms=(common config satellites elements antenna station hands schedule radio calibration console daemon cli)
 status=0
 checked=0
 for ((i = 0; i < ${#rooms[@]}; i++)); do

@@ -152,6 +152,22 @@ const linux_os::GpioLineSpec* same_line(const std::vector<const linux_os::GpioLi
   return nullptr;
 }
 
+ButtonsConfig read_buttons(const ConfigSection& s, const std::string& chip) {
+  ButtonsConfig b;
+  // Push buttons to ground with the pull-ups: pressed reads low.
+  const bool low = s.boolean("buttons_active_low").value_or(true);
+  b.cw = read_gpio_line(s, "button_cw", chip, low);
+  b.ccw = read_gpio_line(s, "button_ccw", chip, low);
+  b.up = read_gpio_line(s, "button_up", chip, low);
+  b.down = read_gpio_line(s, "button_down", chip, low);
+  b.stop = read_gpio_line(s, "button_stop", chip, low);
+  b.park = read_gpio_line(s, "button_park", chip, low);
+  b.debounce_s = s.number("button_debounce_ms").value_or(b.debounce_s * 1000.0) / 1000.0;
+  b.speed = s.number("button_speed").value_or(b.speed);
+  b.park_slot = static_cast<int>(s.integer("button_park_slot").value_or(b.park_slot));
+  return b;
+}
+
 GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
   GpioConfig g;
   g.chip = s.text("chip").value_or(g.chip);
@@ -178,6 +194,7 @@ GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
     }
   }
   if (g.ptt && g.sequencer.empty()) s.fail("ptt", "needs the [gpio] sequencer output lines");
+  g.buttons = read_buttons(s, g.chip);
   g.estop_latch_file = s.text("estop_latch_file").value_or("");
   // One line, one job: a line named twice would be requested twice (EBUSY) or, worse, wired to two
   // functions.
@@ -425,7 +442,16 @@ std::vector<const linux_os::GpioLineSpec*> GpioConfig::lines() const {
   for (const auto* l : {&estop, &az_ccw_limit, &az_cw_limit, &el_down_limit, &el_up_limit, &ptt}) {
     if (*l) out.push_back(&**l);
   }
+  for (const auto* l : buttons.lines()) out.push_back(l);
   for (const auto& l : sequencer) out.push_back(&l);
+  return out;
+}
+
+std::vector<const linux_os::GpioLineSpec*> ButtonsConfig::lines() const {
+  std::vector<const linux_os::GpioLineSpec*> out;
+  for (const auto* l : {&cw, &ccw, &up, &down, &stop, &park}) {
+    if (*l) out.push_back(&**l);
+  }
   return out;
 }
 

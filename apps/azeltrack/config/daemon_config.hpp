@@ -72,6 +72,21 @@ struct PwmConfig {
   }
 };
 
+/// [gpio] button_*: the buttons at the mast (docs/hardware.md, "Buttons and a game pad"), each a
+/// push button to ground (pull-up) unless `buttons_active_low` is false. Absent: not wired.
+struct ButtonsConfig {
+  std::optional<linux_os::GpioLineSpec> cw;
+  std::optional<linux_os::GpioLineSpec> ccw;
+  std::optional<linux_os::GpioLineSpec> up;
+  std::optional<linux_os::GpioLineSpec> down;
+  std::optional<linux_os::GpioLineSpec> stop;
+  std::optional<linux_os::GpioLineSpec> park;
+  double debounce_s = 0.03;
+  double speed = 1.0;  ///< a jog button's speed, a fraction of the axis's full rate
+  int park_slot = 1;   ///< the [[park]] slot PARK goes to
+  [[nodiscard]] std::vector<const linux_os::GpioLineSpec*> lines() const;
+};
+
 /// [gpio]: the station's GPIO lines (docs/hardware.md). Absent lines are not wired.
 struct GpioConfig {
   std::string chip = "gpiochip0";  ///< the chip of lines given as bare numbers
@@ -83,8 +98,9 @@ struct GpioConfig {
   std::optional<linux_os::GpioLineSpec> ptt;
   std::vector<linux_os::GpioLineSpec> sequencer;  ///< one per [sequencer] output, keying order
   std::string estop_latch_file;  ///< empty: "estop.latched" beside the configuration file
+  ButtonsConfig buttons;
 
-  /// Every configured line, inputs first, then the sequencer outputs.
+  /// Every configured line, inputs first (the buttons last of them), then the sequencer outputs.
   [[nodiscard]] std::vector<const linux_os::GpioLineSpec*> lines() const;
   [[nodiscard]] bool any_line() const { return !lines().empty(); }
 };

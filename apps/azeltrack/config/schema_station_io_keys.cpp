@@ -18,7 +18,7 @@ constexpr KeySpec active_low(std::string_view key, std::string_view default_toml
   return {.key = key, .type = KeyType::Boolean, .default_toml = default_toml, .help = help};
 }
 
-constexpr std::array<KeySpec, 13> kGpio{{
+constexpr std::array<KeySpec, 23> kGpio{{
     {.key = "chip",
      .type = KeyType::Text,
      .default_toml = "\"gpiochip0\"",
@@ -50,6 +50,32 @@ constexpr std::array<KeySpec, 13> kGpio{{
      .type = KeyType::Text,
      .default_note = "estop.latched beside the configuration",
      .help = "where a latched E-stop is remembered across restarts"},
+    line("button_cw",
+         "the clockwise button at the mast: the antenna turns while it is held, through the same "
+         "front door as every other source (the console shows the source \"buttons\")"),
+    line("button_ccw", "the counter-clockwise button"),
+    line("button_up", "the UP button"),
+    line("button_down", "the DOWN button"),
+    line("button_stop",
+         "the STOP button: stops the antenna and locks PC programs out as the console's STOP "
+         "does (not an E-stop: that is `estop`)"),
+    line("button_park", "the PARK button: parks in slot `button_park_slot`"),
+    active_low("buttons_active_low", "true", "the buttons pull their lines low when pressed"),
+    {.key = "button_debounce_ms",
+     .type = KeyType::Number,
+     .range = closed(0.0, 500.0),
+     .default_toml = "30",
+     .help = "how long a button's new level must hold before it counts (contact bounce)"},
+    {.key = "button_speed",
+     .type = KeyType::Number,
+     .range = closed(0.05, 1.0),
+     .default_toml = "1.0",
+     .help = "a jog button's speed, a fraction of the axis's full rate"},
+    {.key = "button_park_slot",
+     .type = KeyType::Integer,
+     .range = closed(1.0, 4.0),
+     .default_toml = "1",
+     .help = "the `[[park]]` slot the PARK button parks in"},
 }};
 
 static_assert(sequencer::SequencerConfig::kMaxOutputs == 8, "[sequencer] outputs' count");

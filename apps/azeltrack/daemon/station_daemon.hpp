@@ -29,6 +29,7 @@
 #include "daemon/rate_limited_log.hpp"
 #include "daemon/tick_stats.hpp"
 #include "elements/element_feed.hpp"
+#include "hands/hand_buttons.hpp"
 #include "radio/station_radio.hpp"
 #include "schedule/schedule_follower.hpp"
 #include "station/azel_dat_export.hpp"
@@ -203,6 +204,8 @@ class StationDaemon {
   std::unique_ptr<StationRadio> radio_;             ///< [radio] and [wsjtx]: the rig and WSJT-X
   std::unique_ptr<MotorPower> power_;               ///< [hardware.power]; none when not set
   StationCommands commands_;
+  std::unique_ptr<HandButtons>
+      buttons_;                   ///< [gpio] button_*: the buttons at the mast; none unwired
   DirectionTest direction_test_;  ///< the console's direction test of one axis, while one runs
   std::unique_ptr<ScheduleHooks> hooks_;        ///< [hooks]: the programs run at its events
   std::unique_ptr<ScheduleFollower> schedule_;  ///< [[schedule]]: the station working by itself

@@ -116,6 +116,10 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
       period_(std::chrono::duration_cast<SteadyClock::duration>(
           std::chrono::duration<double>(config_.station.tick_s))) {
   power_ = make_motor_power();
+  if (!config_.gpio.buttons.lines().empty()) {
+    buttons_ = std::make_unique<HandButtons>(config_.gpio.buttons, *gpio_, commands_,
+                                             [this] { return now_s(); });
+  }
   gps_ = std::make_unique<GpsReceiver>(
       io_, GpsReceiverParts{config_.gps, [this] { return now_s(); },
                             [this] { return modes_.mode() == control::Mode::Track; },

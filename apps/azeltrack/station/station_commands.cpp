@@ -97,7 +97,7 @@ std::optional<Refusal> StationCommands::check_now(const CommandSource& source) c
   }
   if (source.kind == CommandSource::Kind::Program && p_.modes.external_locked()) {
     return Refusal{ServiceStatus::Rejected, "",
-                   "PC programs are locked out: STOP was pressed on the console"};
+                   "PC programs are locked out: STOP was pressed (" + p_.modes.who() + ")"};
   }
   return std::nullopt;
 }
@@ -186,20 +186,50 @@ std::optional<Refusal> StationCommands::go_to(const CommandSource& source,
   return std::nullopt;
 }
 
+namespace {
+/// "az +1 el 0", with a speed below full as "az +1 at 40%".
+std::string jog_words(const control::Jog& jog) {
+  const auto axis = [](const char* name, int direction, double speed) {
+    std::string w = std::string(name) + (direction > 0 ? " +1" : direction < 0 ? " -1" : " 0");
+    if (direction != 0 && speed < 1.0) {
+      w += " at " + std::to_string(static_cast<int>(std::lround(speed * 100.0))) + "%";
+    }
+    return w;
+  };
+  return axis("az", jog.az, jog.az_speed) + " " + axis("el", jog.el, jog.el_speed);
+}
+}  // namespace
+
 CommandOutcome StationCommands::jog(const CommandSource& source, control::Jog jog) {
   if (auto not_now = check_now(source)) return refuse(source, std::move(*not_now));
-  auto r = p_.modes.external_jog(jog, source.name, p_.monotonic_s());
+  const double now_s = p_.monotonic_s();
+  auto r = source.kind == CommandSource::Kind::Hands
+               ? p_.modes.manual_jog(jog, source.name, now_s)
+               : p_.modes.external_jog(jog, source.name, now_s);
   if (!r) return refuse(source, invalid("", "move: " + r.error().message));
   forget_satellite();
-  return accept(source, {"continuous move az " + std::to_string(jog.az) + " el " +
-                             std::to_string(jog.el) + " (stops after 1 s without traffic)",
+  return accept(source, {"continuous move " + jog_words(jog) + " (stops after 1 s without traffic)",
                          "continuous move"});
 }
 
 void StationCommands::stop(const CommandSource& source) {
-  p_.modes.stop(source.kind == CommandSource::Kind::Console);
+  switch (source.kind) {
+    case CommandSource::Kind::Console:
+      p_.modes.stop(true);
+      break;
+    case CommandSource::Kind::Hands:
+      p_.modes.local_stop(source.name);
+      break;
+    case CommandSource::Kind::Program:
+    case CommandSource::Kind::Configuration:
+    case CommandSource::Kind::Schedule:
+      p_.modes.stop(false);
+      break;
+  }
   (void)accept(source, {"STOP", ""});
 }
+
+void StationCommands::release(const CommandSource& source) { p_.modes.end_jog(source.name); }
 
 void StationCommands::heard_from(const CommandSource& source) {
   p_.modes.heard_from(source.name, p_.monotonic_s());
@@ -228,6 +258,9 @@ ControlHolder StationCommands::control() const {
       break;
     case CommandSource::Kind::Schedule:
       holder = "schedule";
+      break;
+    case CommandSource::Kind::Hands:
+      holder = "hands";
       break;
   }
   return ControlHolder{holder, commander(), commander_since_unix_s_, !p_.modes.external_locked()};

@@ -22,9 +22,11 @@
 namespace azt::app {
 
 /// Who asked. The kind decides what a position means (MAN from the console, EXT from a program)
-/// and who a console STOP locks out (programs).
+/// and who a console STOP locks out (programs). Hands are the operator at the antenna: the
+/// buttons at the mast and a game pad (docs/hardware.md); their moves are MAN, and their STOP
+/// locks programs out as the console's does.
 struct CommandSource {
-  enum class Kind { Console, Program, Configuration, Schedule };
+  enum class Kind { Console, Program, Configuration, Schedule, Hands };
   Kind kind = Kind::Program;
   std::string name;  ///< "rotctld 127.0.0.1:51234", "console 127.0.0.1", "gs232b /dev/ttyUSB0"
 };
@@ -56,7 +58,7 @@ struct CommandRecord {
 /// Who holds the antenna: the source of the last accepted command, and whether PC programs'
 /// motion is taken now (/api/state `control`, the console's hand-over).
 struct ControlHolder {
-  std::string holder;  ///< "console", "pc", "configuration" or "schedule": the source's kind
+  std::string holder;  ///< "console", "pc", "configuration", "schedule" or "hands": the kind
   std::string by;      ///< its name: "console 192.168.1.20", "rotctld 127.0.0.1:51234"
   double since_unix_s = 0.0;
   bool pc_allowed = true;  ///< false while the console's STOP locks programs out
@@ -86,8 +88,12 @@ class StationCommands {
   CommandOutcome point(const CommandSource& source, const TargetRequest& request);
   /// A continuous move (EXT), stopped by the keep-alive when the program falls silent.
   CommandOutcome jog(const CommandSource& source, control::Jog jog);
-  /// STOP, always accepted. The console's latches PC programs out until it chooses again.
+  /// STOP, always accepted. The console's and the hands' latch PC programs out until the
+  /// console chooses again.
   void stop(const CommandSource& source);
+  /// The end of `source`'s continuous move (a button let go): STOP at once if the move is still
+  /// `source`'s, nothing otherwise. Not recorded as a command: the move it ends was.
+  void release(const CommandSource& source);
   /// "Allow PC control" (console only): EXT with nothing to move to until a program sends a
   /// position; lifts the console STOP's lock-out. Moves nothing.
   CommandOutcome allow_pc(const CommandSource& source);

@@ -70,17 +70,48 @@ Result<Mode> ModeController::external(AzEl position, std::string client) {
   return mode_;
 }
 
-Result<Mode> ModeController::external_jog(Jog jog, std::string client, double now_s) {
-  if (external_locked_) return fail("refused: STOP was pressed on the console");
+Result<Jog> ModeController::checked(Jog jog) {
   if (jog.az < -1 || jog.az > 1 || jog.el < -1 || jog.el > 1 || (jog.az == 0 && jog.el == 0)) {
     return fail("a move needs a direction on at least one axis");
   }
-  mode_ = Mode::External;
+  // NaN fails both comparisons, so it is refused with the rest.
+  const auto speed_ok = [](int direction, double speed) {
+    return direction == 0 || (speed > 0.0 && speed <= 1.0);
+  };
+  if (!speed_ok(jog.az, jog.az_speed) || !speed_ok(jog.el, jog.el_speed)) {
+    return fail("a move's speed must be above 0 and at most 1 (the axis's full rate)");
+  }
+  return jog;
+}
+
+void ModeController::start_jog(Mode mode, Jog jog, std::string client, double now_s) {
+  mode_ = mode;
   external_waiting_ = false;
   jog_ = jog;
   jog_heard_s_ = now_s;
   who_ = std::move(client);
+}
+
+Result<Mode> ModeController::external_jog(Jog jog, std::string client, double now_s) {
+  if (external_locked_) return fail("refused: STOP was pressed on the console");
+  auto j = checked(jog);
+  if (!j) return j.error();
+  start_jog(Mode::External, *j, std::move(client), now_s);
   return mode_;
+}
+
+Result<Mode> ModeController::manual_jog(Jog jog, std::string client, double now_s) {
+  auto j = checked(jog);
+  if (!j) return j.error();
+  start_jog(Mode::Manual, *j, std::move(client), now_s);
+  return mode_;
+}
+
+void ModeController::end_jog(std::string_view client) {
+  if (!jog_ || client != who_) return;
+  jog_.reset();
+  mode_ = Mode::Stop;
+  who_ = "released by " + std::string(client);
 }
 
 void ModeController::heard_from(std::string_view client, double now_s) {
@@ -100,6 +131,11 @@ void ModeController::stop(bool from_console) {
   mode_ = Mode::Stop;
   who_ = from_console ? "console" : "stop";
   external_locked_ = from_console;
+}
+
+void ModeController::local_stop(std::string_view who) {
+  stop(true);
+  who_ = std::string(who);
 }
 
 void ModeController::allow_external() {
@@ -131,7 +167,8 @@ Demand ModeController::demand(const std::optional<AzEl>& sky) const {
     case Mode::Manual:
     case Mode::Park:
     case Mode::External:
-      if (jog_) return Demand{std::nullopt, "EXT move by " + who_, jog_};
+      if (jog_)
+        return Demand{std::nullopt, std::string(to_string(mode_)) + " move by " + who_, jog_};
       if (mode_ == Mode::External && external_waiting_) {
         return hold_or_go(std::nullopt, "EXT: waiting for a PC program's position");
       }

@@ -151,3 +151,20 @@ TEST(TargetRequest, TheSatellitePrefixIsParsedOnce) {
 
 }  // namespace
 }  // namespace azt::app
+
+namespace azt::app {
+namespace {
+
+TEST(StationCommands, AMoveBelowFullSpeedIsRecordedWithItsSpeed) {
+  testing::StationRig rig;
+  const CommandSource pad{CommandSource::Kind::Hands, "game pad"};
+  ASSERT_TRUE(rig.commands.jog(pad, control::Jog{1, -1, 0.4, 1.0}).accepted());
+  ASSERT_EQ(rig.accepted.size(), 1U);
+  EXPECT_EQ(rig.accepted[0],
+            "game pad: continuous move az +1 at 40% el -1 (stops after 1 s without traffic)");
+  EXPECT_EQ(rig.modes.mode(), control::Mode::Manual);
+  EXPECT_EQ(rig.commands.control().holder, "hands");
+}
+
+}  // namespace
+}  // namespace azt::app

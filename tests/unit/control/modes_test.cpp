@@ -90,6 +90,52 @@ TEST(Modes, AJogNeedsADirection) {
   EXPECT_EQ(m.mode(), Mode::Stop);
 }
 
+TEST(Modes, AJogsSpeedIsAFractionOfFullRateAndAnIdleAxisNeedsNone) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  EXPECT_FALSE(m.external_jog(Jog{1, 0, 0.0, 1.0}, "c", 0.0).ok());
+  EXPECT_FALSE(m.external_jog(Jog{1, 0, 1.5, 1.0}, "c", 0.0).ok());
+  EXPECT_FALSE(m.external_jog(Jog{0, -1, 1.0, std::nan("")}, "c", 0.0).ok());
+  EXPECT_EQ(m.mode(), Mode::Stop);
+  ASSERT_TRUE(m.external_jog(Jog{0, -1, 0.0, 0.25}, "c", 0.0).ok());
+  EXPECT_DOUBLE_EQ(m.demand(std::nullopt).jog->el_speed, 0.25);
+}
+
+TEST(Modes, AManualJogIsManAndIsNotLockedOutByAConsoleStop) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  m.stop(true);
+  ASSERT_TRUE(m.manual_jog(Jog{-1, 0, 0.5, 1.0}, "buttons", 1.0).ok());
+  EXPECT_EQ(m.mode(), Mode::Manual);
+  EXPECT_EQ(m.demand(std::nullopt).reason, "MAN move by buttons");
+  EXPECT_EQ(m.demand(std::nullopt).jog->az, -1);
+  m.update(2.01);  // the same keep-alive as a program's
+  EXPECT_EQ(m.mode(), Mode::Stop);
+}
+
+TEST(Modes, EndingAJogStopsOnlyTheJogOfThatSource) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  ASSERT_TRUE(m.manual_jog(Jog{1, 0}, "buttons", 0.0).ok());
+  m.end_jog("game pad");
+  EXPECT_EQ(m.mode(), Mode::Manual);
+  m.end_jog("buttons");
+  EXPECT_EQ(m.mode(), Mode::Stop);
+  EXPECT_EQ(m.who(), "released by buttons");
+  // Another source took over meanwhile: letting go changes nothing.
+  ASSERT_TRUE(m.manual_jog(Jog{1, 0}, "buttons", 0.0).ok());
+  m.track("Moon");
+  m.end_jog("buttons");
+  EXPECT_EQ(m.mode(), Mode::Track);
+}
+
+TEST(Modes, ALocalStopLocksProgramsOutAndNamesWhoPressedIt) {
+  ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
+  ASSERT_TRUE(m.external(AzEl{200, 20}, "gpredict").ok());
+  m.local_stop("buttons");
+  EXPECT_EQ(m.mode(), Mode::Stop);
+  EXPECT_EQ(m.who(), "buttons");
+  EXPECT_TRUE(m.external_locked());
+  EXPECT_FALSE(m.external(AzEl{210, 20}, "gpredict").ok());
+}
+
 TEST(Modes, APositionTargetIsHeldWithoutKeepAlive) {
   ModeController m(slots(), OutOfRangePolicy::Hold, 0.0);
   ASSERT_TRUE(m.external(AzEl{200, 20}, "gpredict").ok());

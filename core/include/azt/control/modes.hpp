@@ -30,10 +30,14 @@ struct ParkSlot {
 };
 
 /// A continuous move per axis: −1, 0 (hold that axis), +1. Azimuth +1 is clockwise, elevation
-/// +1 is up. The axes run towards the end of their travel until stopped.
+/// +1 is up. The axes run towards the end of their travel until stopped, each at its speed: a
+/// fraction of the axis's full rate (a PC program's move is at full speed; a game pad's stick
+/// asks for its deflection).
 struct Jog {
   int az = 0;
   int el = 0;
+  double az_speed = 1.0;  ///< 0 < speed ≤ 1 on a moving axis
+  double el_speed = 1.0;
 };
 
 /// The direction test of one axis (docs/hardware.md): driven open loop, slowly, one way, so the
@@ -73,6 +77,13 @@ class ModeController {
   /// A continuous move from a PC program. It needs a keep-alive: when `client` has not been
   /// heard from for kJogKeepAliveS the move stops (reference R11: rotctld itself never stops).
   Result<Mode> external_jog(Jog jog, std::string client, double now_s);
+  /// A continuous move by an operator at the station (the buttons at the mast, a game pad): MAN,
+  /// with the same keep-alive, and not refused after a console STOP (that locks out PC programs,
+  /// not the people at the antenna).
+  Result<Mode> manual_jog(Jog jog, std::string client, double now_s);
+  /// Ends `client`'s continuous move at once (a button let go): STOP, "released by CLIENT".
+  /// Nothing happens if the move is not `client`'s (another source took over meanwhile).
+  void end_jog(std::string_view client);
   /// Any traffic from a PC program (a `p` poll counts).
   void heard_from(std::string_view client, double now_s);
   /// Applies the jog dead-man; call once per tick.
@@ -80,6 +91,10 @@ class ModeController {
   /// STOP. From the console it is latched against PC programs: their targets are refused until
   /// the console chooses a mode again (the user's STOP must not be undone by a polling program).
   void stop(bool from_console = false);
+  /// STOP from an operator at the station (the STOP button at the mast): latched against PC
+  /// programs as the console's is, so a polling program cannot move the antenna under the hands
+  /// of whoever pressed it; `who` names the button.
+  void local_stop(std::string_view who);
   /// "Allow PC control" from the console: EXT with no position yet, so nothing moves until a PC
   /// program sends one, and the console's STOP no longer locks programs out. The hand-over that
   /// TRACK, MAN or PARK would give only by moving the antenna.
@@ -101,6 +116,8 @@ class ModeController {
 
  private:
   static Result<AzEl> checked(AzEl position);
+  static Result<Jog> checked(Jog jog);
+  void start_jog(Mode mode, Jog jog, std::string client, double now_s);
 
   std::array<ParkSlot, kParkSlots> slots_;
   OutOfRangePolicy policy_;
