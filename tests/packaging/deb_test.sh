@@ -76,7 +76,7 @@ deb_version=$(dpkg-deb -f "$deb" Version)
   grep -qx "azeltrack $deb_version" "$tmp/version" &&
   ok || bad "azeltrack --version from the package $deb_version: $(cat "$tmp/version")"
 depends=$(dpkg-deb -f "$deb" Depends)
-for lib in liberfa1 libhamlib4 libsodium23 libsystemd0 libgpiod2 libcurl4 acl tzdata; do
+for lib in liberfa1 libhamlib4 libsodium23 libsystemd0 libgpiod2 libevdev2 libcurl4 acl tzdata; do
   grep -q "$lib" <<<"$depends" && ok || bad "Depends lacks $lib: $depends"
 done
 
