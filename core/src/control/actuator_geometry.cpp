@@ -66,6 +66,16 @@ std::string_view to_string(ActuatorSense sense) {
   return "unknown";
 }
 
+double extension_sign(ActuatorSense sense) {
+  switch (sense) {
+    case ActuatorSense::ExtendRaises:
+      return 1.0;
+    case ActuatorSense::ExtendLowers:
+      return -1.0;
+  }
+  return 1.0;
+}
+
 Result<ActuatorGeometryConfig> ActuatorGeometryConfig::make(const ActuatorGeometryConfig& c) {
   if (!std::isfinite(c.pivot_to_fixed_mm) || c.pivot_to_fixed_mm <= 0.0) {
     return fail("pivot_to_fixed_mm must be finite and positive");
@@ -153,8 +163,7 @@ double ActuatorGeometry::deg_per_mm(double length_mm) const {
   const double sin_phi = std::sin(phi_deg(length_mm) / kDegPerRad);
   const double rad_per_mm =
       length_mm / (config_.pivot_to_fixed_mm * config_.pivot_to_moving_mm * sin_phi);
-  const double sign = config_.sense == ActuatorSense::ExtendRaises ? 1.0 : -1.0;
-  return sign * rad_per_mm * kDegPerRad;
+  return extension_sign(config_.sense) * rad_per_mm * kDegPerRad;
 }
 
 double ActuatorGeometry::max_deg_per_mm() const {

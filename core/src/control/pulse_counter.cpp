@@ -3,6 +3,20 @@
 #include <cmath>
 
 namespace azt::control {
+namespace {
+
+// Which calls an input kind takes: a switch, so a new kind must say.
+bool takes_pulses(PulseInputKind kind) {
+  switch (kind) {
+    case PulseInputKind::SingleChannel:
+      return true;
+    case PulseInputKind::Quadrature:
+      return false;
+  }
+  return false;
+}
+
+}  // namespace
 
 std::string_view to_string(PulseInputKind kind) {
   switch (kind) {
@@ -43,7 +57,7 @@ bool PulseCounter::accept_time(double at_s) {
 }
 
 void PulseCounter::on_pulse(double at_s) {
-  if (config_.kind != PulseInputKind::SingleChannel) {
+  if (!takes_pulses(config_.kind)) {
     ++errors_;
     return;
   }
@@ -68,7 +82,7 @@ void PulseCounter::on_pulse(double at_s) {
 }
 
 void PulseCounter::on_quadrature_edge(QuadratureChannel channel, bool high, double at_s) {
-  if (config_.kind != PulseInputKind::Quadrature) {
+  if (takes_pulses(config_.kind)) {
     ++errors_;
     return;
   }

@@ -50,15 +50,7 @@ Result<PulseScale> PulseScale::make(const PulseScaleConfig& config,
   return PulseScale(config, std::move(geometry));
 }
 
-double PulseScale::length_sign() const {
-  switch (geometry_->config().sense) {
-    case ActuatorSense::ExtendRaises:
-      return 1.0;
-    case ActuatorSense::ExtendLowers:
-      return -1.0;
-  }
-  return 1.0;
-}
+double PulseScale::length_sign() const { return extension_sign(geometry_->config().sense); }
 
 double PulseScale::length_mm(std::int64_t counts_from_home) const {
   return config_.home_value +

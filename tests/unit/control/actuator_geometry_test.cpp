@@ -102,6 +102,8 @@ TEST(ActuatorGeometry, ExtendLowersMirrorsTheAngle) {
   EXPECT_NEAR(g.length_mm(g.angle_deg(700.0).value()).value(), 700.0, 1e-9);
   EXPECT_EQ(to_string(ActuatorSense::ExtendLowers), "extend lowers");
   EXPECT_EQ(to_string(ActuatorSense::ExtendRaises), "extend raises");
+  EXPECT_EQ(extension_sign(ActuatorSense::ExtendLowers), -1.0);
+  EXPECT_EQ(extension_sign(ActuatorSense::ExtendRaises), 1.0);
 }
 
 TEST(ActuatorGeometry, RefusesOutsideTheStroke) {

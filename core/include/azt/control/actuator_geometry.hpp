@@ -42,6 +42,9 @@ enum class ActuatorSense : std::uint8_t {
 
 std::string_view to_string(ActuatorSense sense);
 
+/// +1 when extending raises the angle, −1 when it lowers it: the sign of dθ/dL.
+double extension_sign(ActuatorSense sense);
+
 /// The triangle of one actuator axis. Lengths in millimetres, angles in degrees.
 struct ActuatorGeometryConfig {
   double pivot_to_fixed_mm = 0.0;   ///< a: the pivot O to the actuator's fixed pin A
