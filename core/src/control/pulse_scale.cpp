@@ -47,7 +47,7 @@ Result<PulseScale> PulseScale::make(const PulseScaleConfig& config,
       break;
     }
   }
-  return PulseScale(config, std::move(geometry));
+  return PulseScale(config, geometry);
 }
 
 double PulseScale::length_sign() const { return extension_sign(geometry_->config().sense); }
@@ -60,7 +60,7 @@ double PulseScale::length_mm(std::int64_t counts_from_home) const {
 Result<double> PulseScale::angle_deg(std::int64_t counts_from_home) const {
   const double units = static_cast<double>(counts_from_home) / config_.counts_per_unit;
   if (!geometry_) return config_.home_value + units;
-  const auto angle = geometry_->angle_deg(length_mm(counts_from_home));
+  auto angle = geometry_->angle_deg(length_mm(counts_from_home));
   if (!angle) {
     return fail("count " + std::to_string(counts_from_home) +
                 " from home: " + angle.error().message);

@@ -68,7 +68,7 @@ TEST(PulseScale, ExtendLowersCountsRiseAsTheActuatorShortens) {
 
 TEST(PulseScale, ValidationNamesTheField) {
   auto err = [](const PulseScaleConfig& c, std::optional<ActuatorGeometry> g = std::nullopt) {
-    const auto r = PulseScale::make(c, std::move(g));
+    const auto r = PulseScale::make(c, g);
     return r ? std::string{} : r.error().message;
   };
   EXPECT_EQ(err({PulseUnit::Degrees, 0.0, 0.0}), "counts_per_unit must be above 0 and at most 1e6");

@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <utility>
 
 #include "azt/control/actuator_geometry.hpp"
 #include "azt/util/result.hpp"
@@ -64,7 +63,7 @@ class PulseScale {
 
  private:
   PulseScale(const PulseScaleConfig& config, std::optional<ActuatorGeometry> geometry)
-      : config_(config), geometry_(std::move(geometry)) {}
+      : config_(config), geometry_(geometry) {}
   [[nodiscard]] double length_mm(std::int64_t counts_from_home) const;
   [[nodiscard]] double length_sign() const;
 
