@@ -68,12 +68,14 @@ class PolMeter {
 
   /// After the tick at `t_s` that was asked for `feed_deg`.
   void measure(double t_s, double tick_s, const StationLoop& loop,
-               const std::optional<double>& feed_deg) {
+               std::optional<double> feed_deg) {
     if (!active_ || !loop.pol()) return;
     // NaN while holding (a plain double: GCC 12 misreads two optionals compared here).
     const double target = loop.pol()->target_mount_deg().value_or(std::nan(""));
     if (std::fabs(target - last_target_deg_) > 1.0) settle_until_s_ = t_s + pol_.settle_s;
     last_target_deg_ = target;
+    if (!feed_deg) return;
+    if (pol_.reference) feed_deg = pol_.reference(t_s);
     if (!feed_deg) return;
     const double error = control::fold_linear_deg(*feed_deg - loop.pol_plant()->shaft_deg());
     if (!acquired_) acquired_ = std::fabs(error) <= acquire_deg_;
@@ -90,6 +92,7 @@ class PolMeter {
     if (!active_ || !loop.pol()) return;
     result.pol = finish_axis(errors_, loop.pol()->axis().starts(), counted_s_ / 3600.0, 0.0);
     result.pol_settling_s = settling_s_;
+    result.pol_counted_s = counted_s_;
   }
 
  private:

@@ -41,6 +41,8 @@ using PolTrack = std::function<std::optional<double>(double t_s)>;
 
 struct PolTracking {
   PolTrack track;  ///< empty: a pol axis, if the station has one, holds
+  /// What the error is measured against (an outside program's angles); empty: `track` itself.
+  PolTrack reference;
   /// A settling allowance: after the station's pol target jumps by more than 1° in one tick (a
   /// change between receive and transmit, a turn to the other end of the travel), the error is not
   /// counted for this long.
@@ -76,6 +78,7 @@ struct SimResult {
   /// on, outside the settling allowances.
   std::optional<AxisMetrics> pol;
   double pol_settling_s = 0.0;  ///< time left uncounted as settling
+  double pol_counted_s = 0.0;   ///< time whose error is in `pol`
 };
 
 /// Tracks `sky` for `duration_s`. Errors are the true shaft positions against the target, counted
