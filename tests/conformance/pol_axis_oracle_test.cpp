@@ -47,7 +47,8 @@ const astro::Observer kDx{52.0, 5.0, 10.0};          // JO22
 class OracleDpol {
  public:
   bool load(std::string& error) {
-    std::string csv = "id,utc_iso,lat1_deg,lon1_deg,height1_m,lat2_deg,lon2_deg,height2_m,freq_mhz\n";
+    std::string csv =
+        "id,utc_iso,lat1_deg,lon1_deg,height1_m,lat2_deg,lon2_deg,height2_m,freq_mhz\n";
     for (int i = 0; static_cast<double>(i) * kOracleStepS <= kPassS + kOracleStepS; ++i) {
       const double t = kStartUnixS + static_cast<double>(i) * kOracleStepS;
       csv += std::to_string(i) + "," + oracle::unix_to_iso8601(t) + "," + row(kOwn) + "," +
@@ -180,9 +181,8 @@ class PolAxisOracle : public ::testing::Test {
 
 void print(const char* what, const SimResult& r) {
   std::cout << what << ": pol max " << r.pol->max_error_deg << " deg, rms " << r.pol->rms_error_deg
-            << " deg over " << r.pol_counted_s << " s (" << r.pol_settling_s
-            << " s settling), " << r.pol->starts << " starts; az/el max " << r.max_error_deg
-            << " deg\n";
+            << " deg over " << r.pol_counted_s << " s (" << r.pol_settling_s << " s settling), "
+            << r.pol->starts << " starts; az/el max " << r.max_error_deg << " deg\n";
 }
 
 TEST_F(PolAxisOracle, BothStationsSeeTheMoonThroughThePassAndOursAgreesWithWsjtx) {
@@ -191,9 +191,9 @@ TEST_F(PolAxisOracle, BothStationsSeeTheMoonThroughThePassAndOursAgreesWithWsjtx
   double worst = 0.0;
   for (double t = 0.0; t <= kPassS; t += 600.0) {
     for (const auto& who : {kOwn, kDx}) {
-      const auto time = astro::make_time_scales(
-          astro::UtcInstant::from_unix_seconds(kStartUnixS + t), 0.0,
-          astro::LeapSecondTable::builtin());
+      const auto time =
+          astro::make_time_scales(astro::UtcInstant::from_unix_seconds(kStartUnixS + t), 0.0,
+                                  astro::LeapSecondTable::builtin());
       const auto epoch = astro::make_epoch(*table_, *time);
       const auto moon = astro::observe_moon(*table_, *epoch, astro::make_station(*epoch, who));
       ASSERT_TRUE(moon.ok());

@@ -207,7 +207,8 @@ double DrivenAxis::drive_test(double now_s, int direction) {
           direction * std::max(kTestDuty, controller_.config().min_duty + 0.1), tick_s_);
       break;
     case DriveKind::Relay:
-      duty = relay_duty(relay_.update(mount_deg_ + direction * kSetpointLeadDeg, mount_deg_, now_s));
+      duty =
+          relay_duty(relay_.update(mount_deg_ + direction * kSetpointLeadDeg, mount_deg_, now_s));
       break;
     case DriveKind::Setpoint:
       setpoint_deg_ = mount_deg_ + direction * kSetpointLeadDeg;

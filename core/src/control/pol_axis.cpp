@@ -19,7 +19,8 @@ double PolAxis::drive(double now_s, const PolDemand& demand) {
   if (demand.feed_deg && std::isfinite(*demand.feed_deg)) {
     target_mount_deg_ = plan_pol_mount(axis_.mount_deg(), *demand.feed_deg, travel_);
   }
-  const double rate = target_mount_deg_ && std::isfinite(demand.rate_deg_s) ? demand.rate_deg_s : 0.0;
+  const double rate =
+      target_mount_deg_ && std::isfinite(demand.rate_deg_s) ? demand.rate_deg_s : 0.0;
   return axis_.drive(now_s, target_mount_deg_, rate);
 }
 

@@ -89,8 +89,9 @@ Result<PolTravel> PolTravel::make(double min_deg, double max_deg) {
     return fail("the polarisation travel must be finite");
   }
   if (max_deg - min_deg < 180.0) {
-    return fail("the polarisation travel (min_deg to max_deg) must span at least 180 degrees, "
-                "or some linear polarisations cannot be reached");
+    return fail(
+        "the polarisation travel (min_deg to max_deg) must span at least 180 degrees, "
+        "or some linear polarisations cannot be reached");
   }
   return PolTravel{min_deg, max_deg};
 }

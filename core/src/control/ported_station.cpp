@@ -10,8 +10,7 @@ constexpr std::array<const char*, 2> kAxisNames{"az", "el"};
 
 void add_axis_fault(std::vector<std::string>& out, const char* name, const AxisStatus& axis) {
   if (axis.fault == FaultKind::None) return;
-  out.push_back(std::string(name) + ": " + std::string(to_string(axis.fault)) + ": " +
-                axis.reason);
+  out.push_back(std::string(name) + ": " + std::string(to_string(axis.fault)) + ": " + axis.reason);
 }
 
 void add_once(std::vector<std::string>& out, const std::optional<std::string>& fault) {
@@ -26,7 +25,8 @@ PortedStation::PortedStation(const StationControlConfig& control, AzEl start_mou
     : ports_(std::move(ports)), station_(control, start_mount) {
   station_.set_corrections(corrections);
   // A pol axis needs its settings and both its ports; with any of them missing there is none.
-  if (control.pol && ports_.pol_drive && ports_.pol_sensor) pol_.emplace(*control.pol, control.tick_s);
+  if (control.pol && ports_.pol_drive && ports_.pol_sensor)
+    pol_.emplace(*control.pol, control.tick_s);
 }
 
 PortedStation::~PortedStation() { stop_with(0.0, "stopped by the daemon"); }

@@ -104,9 +104,7 @@ std::optional<AzEl> StationController::sky_position(double now_s) const {
   return AzEl{wrap_360(az_.mount_deg()), el_.mount_deg()};
 }
 
-bool StationController::faulted() const {
-  return az_.faulted() || el_.faulted();
-}
+bool StationController::faulted() const { return az_.faulted() || el_.faulted(); }
 
 void StationController::emergency_stop(double now_s, std::string_view reason) {
   az_.emergency_stop(now_s, reason);

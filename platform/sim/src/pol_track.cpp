@@ -43,10 +43,10 @@ class DpolNodes {
     if (!time) return std::nullopt;
     auto epoch = astro::make_epoch(*setup_.ephemeris, *time);
     if (!epoch) return std::nullopt;
-    const auto own = astro::observe_moon(*setup_.ephemeris, *epoch,
-                                         astro::make_station(*epoch, setup_.own));
-    const auto dx = astro::observe_moon(*setup_.ephemeris, *epoch,
-                                        astro::make_station(*epoch, *setup_.dx));
+    const auto own =
+        astro::observe_moon(*setup_.ephemeris, *epoch, astro::make_station(*epoch, setup_.own));
+    const auto dx =
+        astro::observe_moon(*setup_.ephemeris, *epoch, astro::make_station(*epoch, *setup_.dx));
     if (!own || !dx) return std::nullopt;
     // As moon_conditions does for the EME data: the airless elevation, as WSJT-X's.
     return eme::dpol_deg(

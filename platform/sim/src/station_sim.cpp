@@ -67,8 +67,7 @@ class PolMeter {
   }
 
   /// After the tick at `t_s` that was asked for `feed_deg`.
-  void measure(double t_s, double tick_s, const StationLoop& loop,
-               std::optional<double> feed_deg) {
+  void measure(double t_s, double tick_s, const StationLoop& loop, std::optional<double> feed_deg) {
     if (!active_ || !loop.pol()) return;
     // NaN while holding (a plain double: GCC 12 misreads two optionals compared here).
     const double target = loop.pol()->target_mount_deg().value_or(std::nan(""));

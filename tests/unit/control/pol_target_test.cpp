@@ -28,8 +28,8 @@ PolInputs inputs(std::optional<double> spatial_deg, bool transmitting = false) {
 }
 
 TEST(PolMode, NamesRoundTripAndUnknownNamesAreRefusedWithTheList) {
-  for (const PolMode m : {PolMode::Off, PolMode::Fixed, PolMode::Manual, PolMode::Self,
-                          PolMode::Dx, PolMode::Split}) {
+  for (const PolMode m : {PolMode::Off, PolMode::Fixed, PolMode::Manual, PolMode::Self, PolMode::Dx,
+                          PolMode::Split}) {
     const auto parsed = parse_pol_mode(to_string(m));
     ASSERT_TRUE(parsed.ok()) << to_string(m);
     EXPECT_EQ(*parsed, m);

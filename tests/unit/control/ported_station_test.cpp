@@ -52,9 +52,8 @@ class FakeSensor final : public ports::AxisSensor {
 };
 
 struct Station {
-  std::array<std::shared_ptr<FakeAxis>, 3> axes{std::make_shared<FakeAxis>(),
-                                                std::make_shared<FakeAxis>(),
-                                                std::make_shared<FakeAxis>()};
+  std::array<std::shared_ptr<FakeAxis>, 3> axes{
+      std::make_shared<FakeAxis>(), std::make_shared<FakeAxis>(), std::make_shared<FakeAxis>()};
   std::unique_ptr<PortedStation> station;
   double t = 0.0;
 

@@ -1,8 +1,9 @@
 #pragma once
 // One driven axis of a station: its controller, its supervisor, how its motor is moved (PWM,
 // relays or a setpoint box) and its pair of travel-end switches. StationController holds two of
-// them (azimuth and elevation) and PortedStation a third for the polarisation feed (pol_target.hpp);
-// a station of one axis, a brake or a motor trip is added here once rather than per axis.
+// them (azimuth and elevation) and PortedStation a third for the polarisation feed
+// (pol_target.hpp); a station of one axis, a brake or a motor trip is added here once rather than
+// per axis.
 
 #include <cstdint>
 #include <optional>

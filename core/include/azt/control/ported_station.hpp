@@ -3,9 +3,10 @@
 // sensors, hands the controller a reading when both have a new one, and applies its duties to
 // both drives. A station with a polarisation axis (StationControlConfig::pol and both pol ports)
 // drives it beside them, read and supervised alone: its own demand each tick, its own faults; an
-// E-stop, a drive's write error and shutdown stop it with the others. The daemon's one station backend and the virtual-time simulations both run it,
-// so a simulated hour exercises exactly the code a station runs; what differs is the ports (the
-// plants read by the hub model or by the hub firmware, the Linux devices, a Hamlib box).
+// E-stop, a drive's write error and shutdown stop it with the others. The daemon's one station
+// backend and the virtual-time simulations both run it, so a simulated hour exercises exactly the
+// code a station runs; what differs is the ports (the plants read by the hub model or by the hub
+// firmware, the Linux devices, a Hamlib box).
 
 #include <array>
 #include <optional>

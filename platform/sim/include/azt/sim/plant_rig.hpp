@@ -1,9 +1,9 @@
 #pragma once
-// What a simulated station's ports share: the plants (and the polarisation plant, if any), the faults due to them, the hub
-// reading their encoders, and the duties the drives last set. The first sensor read at a new
-// time runs the plants and the hub for the time since the last one (capped at 1 s, after a
-// suspend), in the hub's steps, with the duties then applied (a late tick is simulated exactly
-// as long as it was late); then both axes report the hub's newest frame, each once.
+// What a simulated station's ports share: the plants (and the polarisation plant, if any), the
+// faults due to them, the hub reading their encoders, and the duties the drives last set. The first
+// sensor read at a new time runs the plants and the hub for the time since the last one (capped at
+// 1 s, after a suspend), in the hub's steps, with the duties then applied (a late tick is simulated
+// exactly as long as it was late); then both axes report the hub's newest frame, each once.
 
 #include <array>
 #include <memory>

@@ -23,8 +23,8 @@ class StationLoop {
 
   /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold),
   /// and the polarisation axis, if any, towards `pol`.
-  void tick(double t_s, const std::optional<control::AzEl>& demand,
-            const control::AzEl& rate_deg_s, const control::PolDemand& pol = {});
+  void tick(double t_s, const std::optional<control::AzEl>& demand, const control::AzEl& rate_deg_s,
+            const control::PolDemand& pol = {});
 
   [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
   [[nodiscard]] const AxisPlant& az_plant() const { return rig_->plants().az(); }
