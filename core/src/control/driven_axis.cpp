@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <utility>
 
 namespace azt::control {
 namespace {
@@ -50,10 +49,10 @@ bool sends_setpoint(DriveKind kind) {
   return false;
 }
 
-DrivenAxis::DrivenAxis(const AxisControlConfig& control, SupervisorConfig supervisor,
+DrivenAxis::DrivenAxis(const AxisControlConfig& control, const SupervisorConfig& supervisor,
                        const AxisDriveConfig& drive, double start_mount_deg, double tick_s)
     : controller_(control),
-      supervisor_(with_lsb(std::move(supervisor), control)),
+      supervisor_(with_lsb(supervisor, control)),
       drive_(drive),
       relay_(drive.relay),
       mount_deg_(start_mount_deg),

@@ -98,9 +98,13 @@ Result<PolTravel> PolTravel::make(double min_deg, double max_deg) {
 
 double plan_pol_mount(double present_mount_deg, double feed_deg, const PolTravel& travel) {
   // The equivalent angles feed + k·180 from the one at or above the travel's start upwards.
-  double candidate = feed_deg + 180.0 * std::ceil((travel.min_deg - feed_deg) / 180.0);
+  const double first = feed_deg + 180.0 * std::ceil((travel.min_deg - feed_deg) / 180.0);
   std::optional<double> best;
-  for (; candidate <= travel.max_deg; candidate += 180.0) {
+  // Bounded: a travel of any sense spans a few half turns, and a NaN must not loop forever.
+  constexpr int kMaxHalfTurns = 16;
+  for (int k = 0; k < kMaxHalfTurns; ++k) {
+    const double candidate = first + 180.0 * k;
+    if (!(candidate <= travel.max_deg)) break;
     if (!best || std::fabs(candidate - present_mount_deg) < std::fabs(*best - present_mount_deg)) {
       best = candidate;
     }

@@ -15,7 +15,7 @@ constexpr double kNodeS = 10.0;
 
 class DpolNodes {
  public:
-  explicit DpolNodes(PolTrackSetup setup) : setup_(std::move(setup)) {}
+  explicit DpolNodes(const PolTrackSetup& setup) : setup_(setup) {}
 
   std::optional<double> at(double t_s) {
     const double k = std::floor(t_s / kNodeS);

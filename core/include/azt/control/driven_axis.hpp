@@ -53,7 +53,7 @@ class DrivenAxis {
  public:
   /// `start_mount_deg`: where the axis is believed to be before its first reading. The
   /// supervisor is given the controller's encoder step.
-  DrivenAxis(const AxisControlConfig& control, SupervisorConfig supervisor,
+  DrivenAxis(const AxisControlConfig& control, const SupervisorConfig& supervisor,
              const AxisDriveConfig& drive, double start_mount_deg, double tick_s);
 
   /// A reading in mount degrees: kept unless the supervisor rejects it as a jump.
