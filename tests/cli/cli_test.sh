@@ -92,6 +92,14 @@ json_check "simulate slew" \
 json_check "simulate moon" \
   "all(k in j for k in ['rms_error_deg','max_error_deg','slew_time_s','slew_min_time_s','overshoot_deg','faults']) and set(j['motor_starts_per_hour']) == {'az','el'} and j['max_error_deg'] < 0.3" \
   "${sim[@]}" --scenario moon --from 2025-03-14T02:00:00Z --hours 0.5 --json
+json_check "simulate moon: no pol figures without [mount.pol]" \
+  "'pol_max_error_deg' not in j and 'pol' not in j" \
+  "${sim[@]}" --scenario moon --from 2025-03-14T02:00:00Z --hours 0.1 --json
+# The polarisation axis (docs/eme.md): split mode on 60 s periods, FN06 to JO22.
+json_check "simulate moon with a pol axis: split within 1 deg after settling" \
+  "j['pol']['mode'] == 'split' and j['pol_max_error_deg'] < 1.0 and 0 < j['pol_rms_error_deg'] < 0.5 and j['pol']['settle_s'] == 23.0 and j['pol']['counted_s'] > 600 and j['faults'] == []" \
+  simulate --config "$root/examples/pol.toml" --scenario moon --from 2025-03-14T00:00:00Z --hours 0.5 --ptt-period-s 60 --json
+expect_usage_error "simulate bad PTT period" simulate --config "$root/examples/pol.toml" --scenario moon --ptt-period-s -1
 expect_usage_error "simulate bad scenario" "${sim[@]}" --scenario mars
 expect_usage_error "simulate slew without target" "${sim[@]}" --scenario slew
 expect_usage_error "simulate slew below the horizon" "${sim[@]}" --scenario slew --to-az 10 --to-el -20

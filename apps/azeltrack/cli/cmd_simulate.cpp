@@ -9,6 +9,7 @@
 
 #include "antenna/sim_hub.hpp"
 #include "azt/sim/pass_sim.hpp"
+#include "azt/sim/pol_track.hpp"
 #include "azt/sim/sky_track.hpp"
 #include "azt/sim/station_sim.hpp"
 #include "azt/track/satellite_pass_track.hpp"
@@ -32,6 +33,7 @@ struct SimulateOptions {
   std::string tle, sat;
   std::string source;
   std::string sun_every_min = "0";
+  std::string ptt_period_s = "0";
   bool json = false;
 };
 
@@ -66,7 +68,46 @@ nlohmann::json result_json(const sim::SimResult& r, const std::string& scenario,
            {{"kind", hub_kind}, {"frames_ok", r.hub.frames_ok()}, {"rejected", r.hub.rejected()}}}};
 }
 
-sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double hours) {
+/// With a pol axis: its error against the feed angle, beside az and el's.
+void add_pol_json(nlohmann::json& j, const sim::SimResult& r, const SimConfig& c, double settle_s) {
+  if (!r.pol) return;
+  j["pol_max_error_deg"] = r.pol->max_error_deg;
+  j["pol_rms_error_deg"] = r.pol->rms_error_deg;
+  j["pol"] = axis_json(*r.pol);
+  j["pol"]["mode"] = control::to_string(c.pol.mode);
+  j["pol"]["settle_s"] = settle_s;
+  j["pol"]["settling_s"] = r.pol_settling_s;
+  j["pol"]["counted_s"] = r.pol_counted_s;
+}
+
+/// How long after a jump of the pol target its error is left uncounted: the turn between the
+/// receive and transmit angles (Split: 2·dx_offset, folded) at the mount's rate, the soft start
+/// and stop, and 2 s of final approach; 0 without a PTT sequence.
+double pol_settle_s(const SimConfig& c, double ptt_period_s) {
+  if (ptt_period_s <= 0.0 || !c.mount.pol || c.pol.mode != control::PolMode::Split) return 0.0;
+  const double swing_deg = std::fabs(control::fold_linear_deg(2.0 * c.pol.dx_offset_deg));
+  return swing_deg / c.mount.pol->axis.max_rate_deg_s + c.setup.station.pol->control.ramp_s + 2.0;
+}
+
+/// What the pol axis follows through the run: [pol] with Dpol to [sky] dx_grid and the PTT
+/// sequence; an empty track without a pol axis.
+sim::PolTracking pol_tracking(const SimConfig& c, const astro::Ephemeris& ephemeris,
+                              const astro::UtcInstant& start, double ptt_period_s) {
+  if (!c.setup.plant.pol || !c.setup.station.pol) return {};
+  sim::PolTrackSetup p;
+  p.ephemeris = &ephemeris;
+  p.own = c.sky.settings.observer;
+  p.dx = c.sky.settings.dx;
+  p.start = start;
+  p.dut1_s = c.sky.settings.dut1_s;
+  p.leap_table = &leap_table();
+  p.settings = c.pol;
+  p.ptt_period_s = ptt_period_s;
+  return sim::PolTracking{sim::make_pol_track(p), {}, pol_settle_s(c, ptt_period_s)};
+}
+
+sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double hours,
+                            double ptt_period_s) {
   const auto ephemeris = open_ephemeris(c.sky.settings.ephemeris);
   astro::UtcInstant start = utc_now();
   if (!o.from.empty()) {
@@ -84,7 +125,8 @@ sim::SimResult run_tracking(const SimConfig& c, const SimulateOptions& o, double
   track.dut1_s = c.sky.settings.dut1_s;
   track.leap_table = &leap_table();
   return sim::simulate_tracking(c.setup, sim::make_sky_track(track), hours * 3600.0,
-                                make_sim_hub(c.setup.plant, c.hub));
+                                make_sim_hub(c.setup.plant, c.hub),
+                                pol_tracking(c, *ephemeris, start, ptt_period_s));
 }
 
 /// The next pass of --sat after --from, flown by the real controller on the simulated plant
@@ -161,6 +203,10 @@ int run_simulate(const SimulateOptions& o) {
   if (sun_every_min < 0.0 || sun_every_min > 1440.0) {
     throw UsageError("--sun-every-min must be in [0, 1440]");
   }
+  const double ptt_period_s = parse_number_option("--ptt-period-s", o.ptt_period_s);
+  if (ptt_period_s < 0.0 || ptt_period_s > 3600.0) {
+    throw UsageError("--ptt-period-s must be in [0, 3600]");
+  }
   const CalibrationScenario c{o.from, hours, o.source, sun_every_min, o.json};
   if (o.scenario == "calibrate" || o.scenario == "scan") {
     return o.scenario == "scan" ? run_scan_scenario(config, c) : run_calibrate_scenario(config, c);
@@ -181,11 +227,12 @@ int run_simulate(const SimulateOptions& o) {
     result =
         sim::simulate_slew(config.setup, to, 3600.0, make_sim_hub(config.setup.plant, config.hub));
   } else {
-    result = run_tracking(config, o, hours);
+    result = run_tracking(config, o, hours, ptt_period_s);
   }
   const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-  const nlohmann::json j =
+  nlohmann::json j =
       result_json(result, o.scenario, cpu_s, config.hub.firmware ? "firmware" : "model");
+  add_pol_json(j, result, config, pol_settle_s(config, ptt_period_s));
   std::cout << (o.json ? j.dump() : j.dump(2)) << '\n';
   return 0;
 }
@@ -211,6 +258,9 @@ Runner add_simulate_command(CLI::App& app) {
   cmd->add_option("--sun-every-min", opts->sun_every_min,
                   "calibrate: scan the Sun every N minutes while it is up (default 0: when it "
                   "adds coverage, as the other sources)");
+  cmd->add_option("--ptt-period-s", opts->ptt_period_s,
+                  "moon, sun: with [mount.pol], transmit every other period of this length, "
+                  "receiving first (default 0: never); the split mode turns the feed for each");
   cmd->add_flag("--json", opts->json, "One JSON line instead of indented JSON");
   return [opts] { return run_simulate(*opts); };
 }

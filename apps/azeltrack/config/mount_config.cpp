@@ -15,6 +15,15 @@ AxisMount read_axis(const ConfigSection& s, AxisMount a) {
   return a;
 }
 
+PolMount read_pol(const ConfigSection& s) {
+  PolMount p;
+  p.axis = read_axis(s, p.axis);
+  p.min_deg = s.number("min_deg").value_or(p.min_deg);
+  p.max_deg = s.number("max_deg").value_or(p.max_deg);
+  p.window_deg = s.number("window_deg").value_or(p.window_deg);
+  return p;
+}
+
 }  // namespace
 
 MountConfig mount_config_from(const ConfigFile& file) {
@@ -22,6 +31,7 @@ MountConfig mount_config_from(const ConfigFile& file) {
   MountConfig m;
   m.az = read_axis(mount.child("az"), m.az);
   m.el = read_axis(mount.child("el"), m.el);
+  if (const ConfigSection pol = mount.child("pol"); pol.present()) m.pol = read_pol(pol);
   return m;
 }
 

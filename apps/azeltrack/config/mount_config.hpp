@@ -1,9 +1,10 @@
 #pragma once
-// [mount.az] / [mount.el]: what the controller must know about the real antenna's axes, whatever
-// drives them. The simulated plant ([sim.az], [sim.el]) is a model of this mount:
-// it turns at the mount's rate and reads the mount's encoders; only its imperfections are its own.
+// [mount.az] / [mount.el] / [mount.pol]: what the controller must know about the real antenna's
+// axes, whatever drives them. The simulated plant ([sim.az], [sim.el]) is a model of this mount: it
+// turns at the mount's rate and reads the mount's encoders; only its imperfections are its own.
 
 #include <cstdint>
+#include <optional>
 
 namespace azt::app {
 
@@ -17,9 +18,19 @@ struct AxisMount {
   double backlash_deg = 0.05;      ///< gear play the controller allows for
 };
 
+/// [mount.pol]: the polarisation axis (docs/eme.md, "Polarisation axis"), turning a linear feed
+/// or the whole array: the axis as [mount.az] describes one, its travel and its window.
+struct PolMount {
+  AxisMount axis{2.0};     ///< a feed rotator's 2°/s by default
+  double min_deg = -95.0;  ///< travel, feed degrees from level (at least 180° wide)
+  double max_deg = 95.0;
+  double window_deg = 0.5;  ///< a tenth of a dB of polarisation loss at 4° (20·log10 cos)
+};
+
 struct MountConfig {
   AxisMount az;
-  AxisMount el{1.0};  ///< the reference elevation axis turns at 1.0°/s
+  AxisMount el{1.0};            ///< the reference elevation axis turns at 1.0°/s
+  std::optional<PolMount> pol;  ///< only with a [mount.pol] table
 };
 
 /// Throws UsageError naming the key on any invalid value.

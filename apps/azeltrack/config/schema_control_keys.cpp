@@ -210,7 +210,75 @@ constexpr std::array<KeySpec, 5> mount_keys(std::string_view max_rate_default) {
 constexpr auto kMountAz = mount_keys("1.5");
 constexpr auto kMountEl = mount_keys("1.0");
 
-constexpr std::array<SectionSpec, 8> kSections{{
+/// [mount.pol]: an axis as [mount.az] describes one, with its travel and window.
+constexpr std::array<KeySpec, 8> mount_pol_keys() {
+  const auto axis = mount_keys("2.0");
+  return {{axis[0],
+           axis[1],
+           axis[2],
+           axis[3],
+           axis[4],
+           {.key = "min_deg",
+            .type = KeyType::Number,
+            .unit = "°",
+            .range = closed(-360.0, 360.0),
+            .default_toml = "-95.0",
+            .help = "the feed's travel, in degrees from level (clockwise seen from behind the "
+                    "antenna); at least 180° wide, so every linear polarisation is reachable"},
+           {.key = "max_deg",
+            .type = KeyType::Number,
+            .unit = "°",
+            .range = closed(-360.0, 360.0),
+            .default_toml = "95.0",
+            .help = "the travel's other end"},
+           {.key = "window_deg",
+            .type = KeyType::Number,
+            .unit = "°",
+            .range = closed(0.0, 5.0),
+            .default_toml = "0.5",
+            .help = "the pol axis's movement window (`[control] window_deg` is az and el's)"}}};
+}
+
+constexpr auto kMountPol = mount_pol_keys();
+
+constexpr std::array<std::string_view, 6> kPolModes{"off",  "fixed", "manual",
+                                                    "self", "dx",    "split"};
+
+constexpr std::array<KeySpec, 5> kPol{{
+    {.key = "mode",
+     .type = KeyType::Choice,
+     .choices = kPolModes,
+     .default_toml = "\"off\"",
+     .help = "what the feed follows ([eme.md](eme.md)): `off` (held), `fixed` (`fixed_deg`), "
+             "`manual` (the operator's angle), `self` (our own echo), `dx` (Dpol to `[sky] "
+             "dx_grid` + `dx_offset_deg`), `split` (as `dx` receiving; G3SEK's TX = 2·Dpol − RX "
+             "transmitting)"},
+    {.key = "fixed_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .range = within(180.0),
+     .default_toml = "0.0",
+     .help = "the feed angle of `fixed`, degrees from level"},
+    {.key = "self_offset_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .range = within(180.0),
+     .default_toml = "0.0",
+     .help = "`self`: the Faraday correction peaked on our own echo"},
+    {.key = "dx_offset_deg",
+     .type = KeyType::Number,
+     .unit = "°",
+     .range = within(180.0),
+     .default_toml = "0.0",
+     .help = "`dx` and `split`: the correction peaked on the DX station's signal, added to Dpol"},
+    {.key = "hold_while_keyed",
+     .type = KeyType::Boolean,
+     .default_toml = "false",
+     .help = "give the feed no new angle while the transmitter is keyed (it holds), in every "
+             "mode"},
+}};
+
+constexpr std::array<SectionSpec, 10> kSections{{
     {.name = "control",
      .chapter = Chapter::Control,
      .keys = kControl,
@@ -253,6 +321,18 @@ constexpr std::array<SectionSpec, 8> kSections{{
      .keys = kMountEl,
      .title = "The mount's elevation axis",
      .help = "As `[mount.az]`, for the elevation axis."},
+    {.name = "mount.pol",
+     .chapter = Chapter::Control,
+     .keys = kMountPol,
+     .title = "The mount's polarisation axis",
+     .help = "A feed or array rotator ([eme.md](eme.md)); without this table the station has "
+             "no pol axis. As `[mount.az]`, with its travel and window."},
+    {.name = "pol",
+     .chapter = Chapter::Control,
+     .keys = kPol,
+     .title = "What the polarisation axis follows",
+     .help = "The modes of [eme.md](eme.md)'s polarisation axis; the DX station is `[sky] "
+             "dx_grid`."},
 }};
 
 }  // namespace

@@ -158,7 +158,11 @@ constexpr std::array<KeySpec, 10> kSimReceiver{{
      .help = "random seed of the noise"},
 }};
 
-constexpr std::array<SectionSpec, 5> kSections{{
+/// [sim.pol]: the plant's own keys without the scheduled faults (none for the pol plant yet).
+constexpr std::array<KeySpec, 6> kPolPlant{
+    {kPlant[0], kPlant[1], kPlant[2], kPlant[3], kPlant[4], kPlant[5]}};
+
+constexpr std::array<SectionSpec, 6> kSections{{
     {.name = "sim",
      .chapter = Chapter::Simulation,
      .keys = kSim,
@@ -175,6 +179,12 @@ constexpr std::array<SectionSpec, 5> kSections{{
      .keys = kPlant,
      .title = "The simulated elevation axis",
      .help = "As `[sim.az]`, for the elevation axis."},
+    {.name = "sim.pol",
+     .chapter = Chapter::Simulation,
+     .keys = kPolPlant,
+     .title = "The simulated polarisation axis",
+     .help = "With `[mount.pol]`: the plant of the feed rotator, its encoder read each tick; as "
+             "`[sim.az]` without the faults."},
     {.name = "sim.mount_errors",
      .chapter = Chapter::Simulation,
      .keys = kMountErrors,

@@ -6,6 +6,7 @@
 #include "azt/proto/hub_frame.hpp"
 #include "config/config_file.hpp"
 #include "config/pointing_config.hpp"
+#include "config/pol_config.hpp"
 #include "config/station_setup_config.hpp"
 
 namespace azt::app {
@@ -80,6 +81,16 @@ sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& moun
   read_plant_fault(sim_section.child("az"), true, plant);
   read_plant_fault(sim_section.child("el"), false, plant);
   read_link(sim_section, plant);
+  const ConfigSection pol = sim_section.child("pol");  // its keys are checked even unused
+  if (mount.pol) {
+    // The pol plant's end stops are its travel's; it has no scheduled faults of its own yet.
+    sim::AxisParams pol_defaults;
+    pol_defaults.min_deg = mount.pol->min_deg;
+    pol_defaults.max_deg = mount.pol->max_deg;
+    plant.pol = read_plant(pol, mount.pol->axis, pol_defaults);
+  } else if (pol.present()) {
+    file.fail("[sim.pol] models the axis of [mount.pol], which the file does not have");
+  }
   plant.pointing_errors = mount_errors_from(sim_section);
   return plant;
 }
@@ -118,6 +129,7 @@ SimConfig sim_config_from(const ConfigFile& file) {
   config.setup.plant = plant_setup_from(file, config.mount, config.setup.station);
   config.hub = sim_hub_from(file);
   config.receiver = sim_receiver_from(file);
+  config.pol = pol_settings_from(file);
   return config;
 }
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 
+#include "azt/control/pol_target.hpp"
 #include "azt/sim/radio_receiver.hpp"
 #include "azt/sim/station_sim.hpp"
 #include "config/mount_config.hpp"
@@ -12,13 +13,13 @@ namespace azt::app {
 
 class ConfigFile;
 
-/// Everything `simulate` reads: the sky (sky_config.hpp), the mount ([mount.az], [mount.el]),
+/// Everything `simulate` reads: the sky (sky_config.hpp), the mount ([mount.az], [mount.el],
+/// [mount.pol]), the polarisation modes ([pol]),
 /// the station as its controller knows it (station_setup_config.hpp) and the simulated plants
-/// ([sim.az], [sim.el], [sim]). The controller's settings come from the mount, never from the
-/// plants.
-/// [sim] hub: what reads the simulated encoders. `model` encodes the plants' counts directly;
-/// `firmware` runs the EncoderHub firmware's ELF on a simulated ATmega328P and reads its frames
-/// through the daemon's decoder (docs/encoder-hub.md).
+/// ([sim.az], [sim.el], [sim.pol], [sim]). The controller's settings come from the mount, never
+/// from the plants. [sim] hub: what reads the simulated encoders. `model` encodes the plants'
+/// counts directly; `firmware` runs the EncoderHub firmware's ELF on a simulated ATmega328P and
+/// reads its frames through the daemon's decoder (docs/encoder-hub.md).
 struct SimHubConfig {
   bool firmware = false;
   std::string elf;  ///< [sim] hub_firmware; empty: the build's or the package's ELF
@@ -41,6 +42,7 @@ struct SimConfig {
   sim::StationSimSetup setup;
   SimHubConfig hub;
   SimReceiverConfig receiver;
+  control::PolSettings pol;  ///< [pol]: what the polarisation axis follows
 };
 
 /// [sim] hub and hub_firmware. Throws UsageError naming the key.

@@ -81,6 +81,22 @@ control::PositionCorrections read_corrections(const ConfigSection& s) {
   return c;
 }
 
+/// [mount.pol] as the controller's pol axis: the [control] settings but its own window, the
+/// travel checked.
+control::PolAxisConfig pol_axis_for(const ConfigSection& c, const ConfigSection& m,
+                                    const PolMount& mount, double stale_s) {
+  control::PolAxisConfig pol;
+  pol.control = control_for(c, mount.axis);
+  pol.control.window_deg = mount.window_deg;
+  pol.supervisor = supervisor_for(mount.axis);
+  pol.supervisor.stale_s = stale_s;
+  auto travel = control::PolTravel::make(mount.min_deg, mount.max_deg);
+  if (!travel) m.fail("min_deg", travel.error().message);
+  pol.travel = *travel;
+  pol.start_mount_deg = std::clamp(0.0, mount.min_deg, mount.max_deg);
+  return pol;
+}
+
 }  // namespace
 
 control::StationSetup station_setup_from(const ConfigFile& file, const MountConfig& mount) {
@@ -98,6 +114,10 @@ control::StationSetup station_setup_from(const ConfigFile& file, const MountConf
   // to one tick after it passes the threshold, so the threshold leaves room for one tick.
   station.az_supervisor.stale_s = std::max(0.1, 0.2 - station.tick_s);
   station.el_supervisor.stale_s = station.az_supervisor.stale_s;
+  if (mount.pol) {
+    station.pol = pol_axis_for(control, file.section("mount").child("pol"), *mount.pol,
+                               station.az_supervisor.stale_s);
+  }
   station.corrections = read_corrections(file.section("corrections"));
   station.corrections.model = station_pointing_from(file);
   return station;

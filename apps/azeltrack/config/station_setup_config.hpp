@@ -1,8 +1,8 @@
 #pragma once
 // What the station's controller knows, read from the configuration: the mount
-// ([mount.az], [mount.el]), the controller ([control]), the travel ([geometry]) and the pointing
-// corrections ([corrections]), as control::StationSetup. Every backend, the simulated one
-// included, runs its controller with this alone.
+// ([mount.az], [mount.el], [mount.pol]), the controller ([control]), the travel ([geometry]) and
+// the pointing corrections ([corrections]), as control::StationSetup. Every backend, the simulated
+// one included, runs its controller with this alone.
 
 #include "azt/control/station_setup.hpp"
 #include "config/mount_config.hpp"

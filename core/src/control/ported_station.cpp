@@ -8,17 +8,31 @@ namespace {
 
 constexpr std::array<const char*, 2> kAxisNames{"az", "el"};
 
+void add_axis_fault(std::vector<std::string>& out, const char* name, const AxisStatus& axis) {
+  if (axis.fault == FaultKind::None) return;
+  out.push_back(std::string(name) + ": " + std::string(to_string(axis.fault)) + ": " + axis.reason);
+}
+
+void add_once(std::vector<std::string>& out, const std::optional<std::string>& fault) {
+  // Two axes on one link (a hub) report its loss once.
+  if (fault && std::find(out.begin(), out.end(), *fault) == out.end()) out.push_back(*fault);
+}
+
 }  // namespace
 
 PortedStation::PortedStation(const StationControlConfig& control, AzEl start_mount,
                              const PositionCorrections& corrections, ports::StationPorts ports)
     : ports_(std::move(ports)), station_(control, start_mount) {
   station_.set_corrections(corrections);
+  // A pol axis needs its settings and both its ports; with any of them missing there is none.
+  if (control.pol && ports_.pol_drive && ports_.pol_sensor)
+    pol_.emplace(*control.pol, control.tick_s);
 }
 
 PortedStation::~PortedStation() { stop_with(0.0, "stopped by the daemon"); }
 
-void PortedStation::tick(double now_s, const Demand& demand, const AzEl& rate) {
+void PortedStation::tick(double now_s, const Demand& demand, const AzEl& rate,
+                         const PolDemand& pol) {
   if (const auto held = latched_sensor()) {
     // Never drive on angles read at the wrong resolution: stopped, and saying why.
     stop_with(now_s, "held by the sensor fault (" + *held + ")");
@@ -32,11 +46,21 @@ void PortedStation::tick(double now_s, const Demand& demand, const AzEl& rate) {
                                 fresh_[1]->deg);
     fresh_ = {};
   }
+  if (pol_) {
+    read_pol(now_s);
+    pol_->drive(now_s, pol);
+  }
   apply(now_s, station_.tick(now_s, demand, rate));
 }
 
 void PortedStation::set_limits(double now_s, const LimitSwitches& limits) {
   apply(now_s, station_.set_limits(limits));
+}
+
+void PortedStation::set_pol_limits(double now_s, const LimitPair& limits) {
+  if (!pol_) return;
+  pol_->axis().set_limits(limits);
+  apply(now_s, station_.duties());
 }
 
 void PortedStation::stop_with(double now_s, std::string_view reason) {
@@ -47,34 +71,46 @@ void PortedStation::stop_with(double now_s, std::string_view reason) {
     (void)ports_.drives.at(i)->apply(now_s, 0.0, setpoint.at(i));
     ports_.drives.at(i)->off(now_s);
   }
+  if (pol_) {
+    pol_->axis().emergency_stop(now_s, reason);
+    (void)ports_.pol_drive->apply(now_s, 0.0, pol_->axis().setpoint_deg());
+    ports_.pol_drive->off(now_s);
+  }
 }
 
 std::vector<std::string> PortedStation::faults() const {
   std::vector<std::string> out;
-  for (const auto& [name, axis] : {std::pair{"az", station_.az()}, {"el", station_.el()}}) {
-    if (axis.fault != FaultKind::None) {
-      out.push_back(std::string(name) + ": " + std::string(to_string(axis.fault)) + ": " +
-                    axis.reason);
-    }
-  }
+  add_axis_fault(out, "az", station_.az());
+  add_axis_fault(out, "el", station_.el());
+  if (pol_) add_axis_fault(out, "pol", pol_->axis().status());
   if (!drive_fault_.empty()) out.push_back(drive_fault_);
   for (std::size_t i = 0; i < 2; ++i) {
-    for (const auto& f : {ports_.sensors.at(i)->latched_fault(), sensor_fault_.at(i)}) {
-      // Two axes on one link (a hub) report its loss once.
-      if (f && std::find(out.begin(), out.end(), *f) == out.end()) out.push_back(*f);
-    }
+    add_once(out, ports_.sensors.at(i)->latched_fault());
+    add_once(out, sensor_fault_.at(i));
+  }
+  if (pol_) {
+    add_once(out, ports_.pol_sensor->latched_fault());
+    add_once(out, pol_sensor_fault_);
   }
   return out;
 }
 
 void PortedStation::clear_faults() {
   station_.clear_faults();
+  if (pol_) pol_->axis().clear_faults();
   drive_fault_.clear();
   for (const auto& sensor : ports_.sensors) sensor->clear_fault();
+  if (pol_) ports_.pol_sensor->clear_fault();
+}
+
+std::vector<const ports::AxisSensor*> PortedStation::sensors() const {
+  std::vector<const ports::AxisSensor*> out{ports_.sensors[0].get(), ports_.sensors[1].get()};
+  if (pol_) out.push_back(ports_.pol_sensor.get());
+  return out;
 }
 
 std::optional<std::string> PortedStation::latched_sensor() const {
-  for (const auto& sensor : ports_.sensors) {
+  for (const auto* sensor : sensors()) {
     if (auto fault = sensor->latched_fault()) return fault;
   }
   return std::nullopt;
@@ -93,6 +129,16 @@ void PortedStation::read_sensors(double now_s) {
   }
 }
 
+void PortedStation::read_pol(double now_s) {
+  auto r = ports_.pol_sensor->read(now_s);
+  if (!r) {
+    pol_sensor_fault_ = r.error().message;  // the pol axis goes stale and stops
+  } else if (r.value()) {
+    pol_->on_reading(r.value()->at_s, r.value()->deg);
+    pol_sensor_fault_.reset();
+  }
+}
+
 void PortedStation::apply(double now_s, const Duties& d) {
   const std::array<double, 2> duty{d.az, d.el};
   const std::array<std::optional<double>, 2> setpoint{d.az_setpoint_deg, d.el_setpoint_deg};
@@ -102,6 +148,12 @@ void PortedStation::apply(double now_s, const Duties& d) {
       stop_with(now_s, "stopped by the daemon");
       return;
     }
+  }
+  if (!pol_) return;
+  const DrivenAxis& axis = pol_->axis();
+  if (auto r = ports_.pol_drive->apply(now_s, axis.duty(), axis.setpoint_deg()); !r) {
+    drive_fault_ = "pol drive: " + r.error().message;
+    stop_with(now_s, "stopped by the daemon");
   }
 }
 

@@ -13,6 +13,7 @@ StationControlConfig StationSetup::control_config() const {
   c.az_range = az_range;
   c.el_range = el_range;
   c.tick_s = tick_s;
+  c.pol = pol;
   return c;
 }
 

@@ -7,12 +7,20 @@
 namespace azt::sim {
 
 PlantRig::PlantRig(const PlantSetup& plant, std::unique_ptr<SimulatedHub> hub)
-    : faults_(plant.faults), plants_(plant.az, plant.el), hub_(std::move(hub)) {}
+    : faults_(plant.faults), plants_(plant.az, plant.el), hub_(std::move(hub)) {
+  if (plant.pol) pol_.emplace(*plant.pol);
+}
 
 std::optional<HubArrival> PlantRig::frame_for(std::size_t axis, double now_s) {
   advance(now_s);
   if (!std::exchange(fresh_.at(axis), false)) return std::nullopt;
   return frame_;
+}
+
+std::optional<std::uint16_t> PlantRig::pol_raw(double now_s) {
+  advance(now_s);
+  if (!pol_) return std::nullopt;
+  return pol_->encoder_raw();
 }
 
 void PlantRig::advance(double now_s) {
@@ -26,6 +34,7 @@ void PlantRig::advance(double now_s) {
   for (int i = 0; i < steps; ++i) {
     const double step = std::min(step_s, dt - i * step_s);
     plants_.step(duty_[0], duty_[1], step);
+    if (pol_) pol_->step(pol_duty_, step);
     faults_.inject_due(from_s + std::min(dt, (i + 1) * step_s), plants_);
     hub_->run(plants_, step);
   }

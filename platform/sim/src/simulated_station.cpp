@@ -43,6 +43,40 @@ class SimSensor final : public ports::AxisSensor {
   std::size_t axis_;
 };
 
+/// The polarisation plant's motor.
+class SimPolDrive final : public ports::AxisDrive {
+ public:
+  explicit SimPolDrive(std::shared_ptr<PlantRig> rig) : rig_(std::move(rig)) {}
+  Result<bool> apply(double /*now_s*/, double duty, std::optional<double> /*setpoint*/) override {
+    rig_->set_pol_duty(duty);
+    return true;
+  }
+  void off(double /*now_s*/) override { rig_->set_pol_duty(0.0); }
+  [[nodiscard]] std::string describe() const override { return "simulated polarisation motor"; }
+
+ private:
+  std::shared_ptr<PlantRig> rig_;
+};
+
+/// The polarisation plant's absolute encoder, read each tick (no hub link between).
+class SimPolSensor final : public ports::AxisSensor {
+ public:
+  SimPolSensor(std::shared_ptr<PlantRig> rig, std::uint8_t bits)
+      : rig_(std::move(rig)), bits_(bits) {}
+  Result<ports::SensorReading> read(double now_s) override {
+    const auto raw = rig_->pol_raw(now_s);
+    if (!raw) return fail("the simulated station has no polarisation plant");
+    return ports::SensorReading{ports::AxisSample{proto::hub_raw_to_deg(*raw, bits_), now_s}};
+  }
+  [[nodiscard]] std::string describe() const override {
+    return "simulated polarisation encoder (" + std::to_string(bits_) + "-bit)";
+  }
+
+ private:
+  std::shared_ptr<PlantRig> rig_;
+  std::uint8_t bits_;
+};
+
 }  // namespace
 
 std::unique_ptr<SimulatedHub> make_model_hub(const PlantSetup& plant) {
@@ -57,6 +91,10 @@ SimulatedStation make_simulated_station(const PlantSetup& plant,
   for (std::size_t i = 0; i < 2; ++i) {
     station.ports.drives.at(i) = std::make_unique<SimDrive>(rig, i);
     station.ports.sensors.at(i) = std::make_unique<SimSensor>(rig, i);
+  }
+  if (plant.pol) {
+    station.ports.pol_drive = std::make_unique<SimPolDrive>(rig);
+    station.ports.pol_sensor = std::make_unique<SimPolSensor>(rig, plant.pol->encoder_bits);
   }
   station.rig = rig;
   return station;

@@ -47,6 +47,65 @@ AxisMetrics finish_axis(const Accumulator& acc, std::uint64_t starts, double hou
   return m;
 }
 
+/// The polarisation axis through a run (PolTracking): its demand each tick and its errors.
+class PolMeter {
+ public:
+  PolMeter(const StationSimSetup& setup, const PolTracking& pol)
+      : pol_(pol), active_(pol.track && setup.plant.pol && setup.station.pol) {
+    if (active_) {
+      acquire_deg_ = setup.station.pol->control.window_deg +
+                     2.0 * proto::hub_resolution_deg(setup.plant.pol->encoder_bits);
+    }
+  }
+
+  [[nodiscard]] control::PolDemand demand(double t_s) const {
+    if (!active_) return {};
+    control::PolDemand d{pol_.track(t_s), 0.0};
+    const auto ahead = pol_.track(t_s + 1.0);
+    if (d.feed_deg && ahead) d.rate_deg_s = control::fold_linear_deg(*ahead - *d.feed_deg);
+    return d;
+  }
+
+  /// After the tick at `t_s` that was asked for `feed_deg`.
+  void measure(double t_s, double tick_s, const StationLoop& loop, std::optional<double> feed_deg) {
+    if (!active_ || !loop.pol()) return;
+    // NaN while holding (a plain double: GCC 12 misreads two optionals compared here).
+    const double target = loop.pol()->target_mount_deg().value_or(std::nan(""));
+    if (std::fabs(target - last_target_deg_) > 1.0) settle_until_s_ = t_s + pol_.settle_s;
+    last_target_deg_ = target;
+    if (!feed_deg) return;
+    if (pol_.reference) feed_deg = pol_.reference(t_s);
+    if (!feed_deg) return;
+    const double error = control::fold_linear_deg(*feed_deg - loop.pol_plant()->shaft_deg());
+    if (!acquired_) acquired_ = std::fabs(error) <= acquire_deg_;
+    if (!acquired_) return;
+    if (t_s < settle_until_s_) {
+      settling_s_ += tick_s;
+      return;
+    }
+    errors_.add(error);
+    counted_s_ += tick_s;
+  }
+
+  void finish(SimResult& result, const StationLoop& loop) const {
+    if (!active_ || !loop.pol()) return;
+    result.pol = finish_axis(errors_, loop.pol()->axis().starts(), counted_s_ / 3600.0, 0.0);
+    result.pol_settling_s = settling_s_;
+    result.pol_counted_s = counted_s_;
+  }
+
+ private:
+  const PolTracking& pol_;
+  bool active_;
+  double acquire_deg_ = 0.0;
+  bool acquired_ = false;
+  double last_target_deg_ = std::nan("");
+  double settle_until_s_ = -1.0;
+  double settling_s_ = 0.0;
+  double counted_s_ = 0.0;
+  Accumulator errors_;
+};
+
 }  // namespace
 
 control::StationControlConfig station_control_config(const StationSimSetup& setup) {
@@ -55,12 +114,16 @@ control::StationControlConfig station_control_config(const StationSimSetup& setu
   // comes from a configuration file; tests may give the plants other resolutions).
   c.az_control.lsb_deg = proto::hub_resolution_deg(setup.plant.az.encoder_bits);
   c.el_control.lsb_deg = proto::hub_resolution_deg(setup.plant.el.encoder_bits);
+  if (c.pol && setup.plant.pol) {
+    c.pol->control.lsb_deg = proto::hub_resolution_deg(setup.plant.pol->encoder_bits);
+  }
   return c;
 }
 
 SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, double duration_s,
-                            std::unique_ptr<SimulatedHub> hub) {
+                            std::unique_ptr<SimulatedHub> hub, const PolTracking& pol) {
   StationLoop loop(setup, std::move(hub));
+  PolMeter pol_meter(setup, pol);
   SimResult result;
   Accumulator az_err, el_err;
   double tracked_s = 0.0, az_travel = 0.0, el_travel = 0.0;
@@ -80,8 +143,10 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
       }
     }
     // Out of range: hold where the antenna is, or drive to the park position.
-    loop.tick(t, target ? target : setup.station.park_when_out_of_range, rate);
+    const control::PolDemand pol_demand = pol_meter.demand(t);
+    loop.tick(t, target ? target : setup.station.park_when_out_of_range, rate, pol_demand);
     loop.collect_faults(result.faults, t);
+    pol_meter.measure(t, setup.station.tick_s, loop, pol_demand.feed_deg);
     if (!target) {
       previous.reset();
       continue;
@@ -116,6 +181,7 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
   result.max_duty_after_fault = loop.max_duty_after_fault();
   result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),
                            loop.el_plant().shaft_deg()};
+  pol_meter.finish(result, loop);
   return result;
 }
 

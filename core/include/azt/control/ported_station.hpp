@@ -1,9 +1,12 @@
 #pragma once
 // The station controller over its ports: each tick reads both axes'
 // sensors, hands the controller a reading when both have a new one, and applies its duties to
-// both drives. The daemon's one station backend and the virtual-time simulations both run it,
-// so a simulated hour exercises exactly the code a station runs; what differs is the ports (the
-// plants read by the hub model or by the hub firmware, the Linux devices, a Hamlib box).
+// both drives. A station with a polarisation axis (StationControlConfig::pol and both pol ports)
+// drives it beside them, read and supervised alone: its own demand each tick, its own faults; an
+// E-stop, a drive's write error and shutdown stop it with the others. The daemon's one station
+// backend and the virtual-time simulations both run it, so a simulated hour exercises exactly the
+// code a station runs; what differs is the ports (the plants read by the hub model or by the hub
+// firmware, the Linux devices, a Hamlib box).
 
 #include <array>
 #include <optional>
@@ -28,9 +31,12 @@ class PortedStation {
   PortedStation(PortedStation&&) = delete;
   PortedStation& operator=(PortedStation&&) = delete;
 
-  /// One control tick: read, decide, drive. A latched sensor fault stops both drives instead.
-  void tick(double now_s, const Demand& demand, const AzEl& rate);
+  /// One control tick: read, decide, drive. A latched sensor fault stops every drive instead.
+  /// `pol` is the polarisation axis's wish (ignored without one; nullopt feed: it holds).
+  void tick(double now_s, const Demand& demand, const AzEl& rate, const PolDemand& pol = {});
   void set_limits(double now_s, const LimitSwitches& limits);
+  /// The polarisation axis's travel-end switches (no pol axis: nothing to do).
+  void set_pol_limits(double now_s, const LimitPair& limits);
   /// Both drives off now, the station latched with `reason` until the faults are cleared.
   void stop_with(double now_s, std::string_view reason);
 
@@ -44,14 +50,21 @@ class PortedStation {
 
   /// The controller: its axes, position and the duties it last gave the drives.
   [[nodiscard]] const StationController& station() const { return station_; }
+  /// The polarisation axis; nullptr when the station has none.
+  [[nodiscard]] const PolAxis* pol() const { return pol_ ? &*pol_ : nullptr; }
 
  private:
   [[nodiscard]] std::optional<std::string> latched_sensor() const;
   void read_sensors(double now_s);
+  void read_pol(double now_s);
   void apply(double now_s, const Duties& d);
+  /// The sensors that hold a fault of their own: both axes', and the pol axis's if any.
+  [[nodiscard]] std::vector<const ports::AxisSensor*> sensors() const;
 
   ports::StationPorts ports_;
   StationController station_;
+  std::optional<PolAxis> pol_;
+  std::optional<std::string> pol_sensor_fault_;
   std::array<ports::SensorReading, 2> fresh_;
   std::array<std::optional<std::string>, 2> sensor_fault_;
   std::string drive_fault_;

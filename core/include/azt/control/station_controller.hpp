@@ -7,34 +7,17 @@
 
 #include <cstdint>
 #include <optional>
-#include <string>
 #include <string_view>
 
 #include "azt/control/axis_controller.hpp"
 #include "azt/control/axis_geometry.hpp"
 #include "azt/control/corrections.hpp"
+#include "azt/control/driven_axis.hpp"
 #include "azt/control/modes.hpp"
-#include "azt/control/relay_drive.hpp"
+#include "azt/control/pol_axis.hpp"
 #include "azt/control/supervisor.hpp"
 
 namespace azt::control {
-
-/// How an axis is moved (docs/hardware.md): a PWM H-bridge (soft start and stop, AxisController),
-/// on/off relays (RelayDrive: hysteresis, minimum on-time, reversal dead time), or a rotator box
-/// that closes its own loop around a setpoint (seed 001's digital pot: we only send the angle).
-enum class DriveKind : std::uint8_t { Pwm, Relay, Setpoint };
-
-std::string_view to_string(DriveKind kind);
-/// Whether the drive is sent an angle (the box closes the loop) rather than a duty.
-bool sends_setpoint(DriveKind kind);
-
-struct AxisDriveConfig {
-  DriveKind kind = DriveKind::Pwm;
-  RelayDriveConfig relay;  ///< Relay: window, minimum on-time, dead times
-  /// Setpoint: the box's own deadband. Further than this from the setpoint the box is driving,
-  /// which is what the supervisor watches for stalls and runaways.
-  double setpoint_band_deg = 2.0;
-};
 
 struct StationControlConfig {
   AxisControlConfig az_control;  ///< lsb_deg is the encoder step of the axis
@@ -49,15 +32,9 @@ struct StationControlConfig {
   /// The azimuth sensor reads the whole travel (a pot across a 450° rotator): its readings are
   /// mount angles, never resolved to the side nearest the last one as a single-turn encoder's are.
   bool az_absolute = false;
-};
-
-/// What the station knows of one axis.
-struct AxisStatus {
-  double mount_deg = 0.0;  ///< last accepted reading, mount degrees
-  double duty = 0.0;
-  bool moving = false;
-  FaultKind fault = FaultKind::None;
-  std::string reason;  ///< the supervisor's words when faulted
+  /// The polarisation axis, if the station has one: PortedStation drives it beside the two
+  /// axes this controller drives (pol_axis.hpp).
+  std::optional<PolAxisConfig> pol;
 };
 
 /// What to apply until the next tick. PWM axes: the duty. Relay axes: +1, −1 or 0 (forward,
@@ -114,12 +91,12 @@ class StationController {
   /// The sky position (azimuth 0..360; a flip mount past the zenith is turned back into sky
   /// terms), or nullopt while a reading is stale or an axis is faulted.
   [[nodiscard]] std::optional<AzEl> sky_position(double now_s) const;
-  [[nodiscard]] AxisStatus az() const { return status(az_); }
-  [[nodiscard]] AxisStatus el() const { return status(el_); }
+  [[nodiscard]] AxisStatus az() const { return az_.status(); }
+  [[nodiscard]] AxisStatus el() const { return el_.status(); }
   [[nodiscard]] bool faulted() const;
   /// Motor starts since construction (a relay closing, or a PWM move beginning).
-  [[nodiscard]] std::uint64_t starts_az() const { return starts(az_); }
-  [[nodiscard]] std::uint64_t starts_el() const { return starts(el_); }
+  [[nodiscard]] std::uint64_t starts_az() const { return az_.starts(); }
+  [[nodiscard]] std::uint64_t starts_el() const { return el_.starts(); }
   [[nodiscard]] const StationControlConfig& config() const { return config_; }
 
   /// Stops both motors now (E-stop or shutdown) and latches an E-stop fault.
@@ -128,35 +105,11 @@ class StationController {
   void clear_faults();
 
  private:
-  struct Axis {
-    AxisController controller;
-    AxisSupervisor supervisor;
-    double mount_deg;
-    AxisDriveConfig drive;
-    RelayDrive relay;
-    std::optional<double> setpoint_deg;  ///< Setpoint axes: what the box was last given
-    double setpoint_duty = 0.0;          ///< Setpoint axes: the direction the box drives
-    bool holding = false;                ///< the last tick had no target (STOP, or holding)
-    [[nodiscard]] double duty() const;
-    [[nodiscard]] bool moving() const;
-    /// Stops the drive now, whatever its kind (a setpoint axis is sent where it stands).
-    void halt(double now_s);
-  };
-  static AxisStatus status(const Axis& axis);
-  static std::uint64_t starts(const Axis& axis);
-  double drive_pwm(Axis& axis, double now_s, double target_deg, double rate_deg_s) const;
-  double drive_relay(Axis& axis, double now_s, double target_deg, double rate_deg_s) const;
-  double drive_setpoint(Axis& axis, double now_s, double target_deg) const;
-  double drive(Axis& axis, double now_s, std::optional<double> target_deg, double rate_deg_s) const;
-  /// The direction test's open-loop drive of one axis (Demand::test).
-  double drive_test(Axis& axis, double now_s, int direction) const;
-  /// A duty of `axis` that runs into a tripped switch.
-  [[nodiscard]] bool into_limit(const Axis& axis, double duty) const;
   [[nodiscard]] std::optional<double> jog_target(int direction, bool azimuth) const;
 
   StationControlConfig config_;
-  Axis az_;
-  Axis el_;
+  DrivenAxis az_;
+  DrivenAxis el_;
   PositionCorrections corrections_;
   LimitSwitches limits_;
   std::optional<AzEl> last_encoder_;  ///< the last raw encoder angles, to re-express on a change

@@ -11,6 +11,7 @@
 #include "azt/control/axis_geometry.hpp"
 #include "azt/control/corrections.hpp"
 #include "azt/control/modes.hpp"
+#include "azt/control/pol_axis.hpp"
 #include "azt/control/station_controller.hpp"
 #include "azt/control/supervisor.hpp"
 
@@ -29,6 +30,8 @@ struct StationSetup {
   /// Where to go while the tracked target is outside the travel (below the horizon limit);
   /// nullopt holds the antenna where it is (ModeController's OutOfRangePolicy).
   std::optional<AzEl> park_when_out_of_range;
+  /// The polarisation axis ([mount.pol]), if the station has one.
+  std::optional<PolAxisConfig> pol;
 
   /// Where the axes are believed to be before the first reading, when nothing says otherwise: 0°
   /// on each axis, or the nearest end of the travel. It decides only which turn a single-turn

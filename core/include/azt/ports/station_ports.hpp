@@ -1,5 +1,5 @@
 #pragma once
-// Both axes' drives and sensors: what a station backend is handed by the simulation, the Linux
+// The axes' drives and sensors: what a station backend is handed by the simulation, the Linux
 // devices or a Hamlib rotator box.
 
 #include <array>
@@ -10,10 +10,13 @@
 
 namespace azt::ports {
 
-/// Azimuth first, then elevation.
+/// Azimuth first, then elevation; the polarisation axis's, if the station has one (nullptr: no
+/// pol axis).
 struct StationPorts {
   std::array<std::unique_ptr<AxisDrive>, 2> drives;
   std::array<std::unique_ptr<AxisSensor>, 2> sensors;
+  std::unique_ptr<AxisDrive> pol_drive;
+  std::unique_ptr<AxisSensor> pol_sensor;
 };
 
 }  // namespace azt::ports

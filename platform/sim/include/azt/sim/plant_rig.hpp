@@ -1,9 +1,9 @@
 #pragma once
-// What a simulated station's four ports share: the plants, the faults due to them, the hub
-// reading their encoders, and the duties the drives last set. The first sensor read at a new
-// time runs the plants and the hub for the time since the last one (capped at 1 s, after a
-// suspend), in the hub's steps, with the duties then applied (a late tick is simulated exactly
-// as long as it was late); then both axes report the hub's newest frame, each once.
+// What a simulated station's ports share: the plants (and the polarisation plant, if any), the
+// faults due to them, the hub reading their encoders, and the duties the drives last set. The first
+// sensor read at a new time runs the plants and the hub for the time since the last one (capped at
+// 1 s, after a suspend), in the hub's steps, with the duties then applied (a late tick is simulated
+// exactly as long as it was late); then both axes report the hub's newest frame, each once.
 
 #include <array>
 #include <memory>
@@ -22,14 +22,21 @@ class PlantRig {
   PlantRig(const PlantSetup& plant, std::unique_ptr<SimulatedHub> hub);
 
   void set_duty(std::size_t axis, double duty) { duty_.at(axis) = duty; }
+  /// The polarisation plant's duty (no pol plant: ignored).
+  void set_pol_duty(double duty) { pol_duty_ = duty; }
   /// The duty the drive last set on `axis`.
   [[nodiscard]] double duty(std::size_t axis) const { return duty_.at(axis); }
   /// The frame that is new to `axis` at `now_s`, if any.
   std::optional<HubArrival> frame_for(std::size_t axis, double now_s);
+  /// The polarisation encoder's count at `now_s`, once the plants have run up to it; nullopt
+  /// without a pol plant.
+  std::optional<std::uint16_t> pol_raw(double now_s);
 
   /// The plants' truth (shaft angles, motor rates): what a simulation measures the station by.
   [[nodiscard]] const SimAntenna& plants() const { return plants_; }
   [[nodiscard]] const SimulatedHub& hub() const { return *hub_; }
+  /// The polarisation plant's truth; nullptr without one.
+  [[nodiscard]] const AxisPlant* pol_plant() const { return pol_ ? &*pol_ : nullptr; }
 
  private:
   void advance(double now_s);
@@ -38,6 +45,8 @@ class PlantRig {
   SimAntenna plants_;
   std::unique_ptr<SimulatedHub> hub_;
   std::array<double, 2> duty_{};
+  std::optional<AxisPlant> pol_;
+  double pol_duty_ = 0.0;
   std::optional<double> first_s_;  ///< the configured faults are timed from the first read
   std::optional<double> last_s_;
   std::optional<HubArrival> frame_;

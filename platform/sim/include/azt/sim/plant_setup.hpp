@@ -4,6 +4,7 @@
 // not here but in control::StationSetup: a real station runs with that alone.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "azt/calibration/pointing_model.hpp"
@@ -32,6 +33,9 @@ struct PlantSetup {
   /// Where the beam really points for the mount's angles ([sim.mount_errors], docs/calibration.md):
   /// the plants turn and the encoders read true, but the beam is off as on a real, imperfect mount.
   calibration::PointingTerms pointing_errors;
+  /// The polarisation axis's plant ([sim.pol]), if the station has one. Its absolute encoder is
+  /// read directly each tick, not through the hub (the EncoderHub carries two axes).
+  std::optional<AxisParams> pol;
 };
 
 }  // namespace azt::sim

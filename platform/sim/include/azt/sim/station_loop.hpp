@@ -21,14 +21,19 @@ class StationLoop {
   /// `hub` nullptr: the plain model of setup.plant.
   StationLoop(const StationSimSetup& setup, std::unique_ptr<SimulatedHub> hub);
 
-  /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold).
-  void tick(double t_s, const std::optional<control::AzEl>& demand,
-            const control::AzEl& rate_deg_s);
+  /// One control tick at `t_s`: read the hub, drive both axes towards `demand` (nullopt: hold),
+  /// and the polarisation axis, if any, towards `pol`.
+  void tick(double t_s, const std::optional<control::AzEl>& demand, const control::AzEl& rate_deg_s,
+            const control::PolDemand& pol = {});
 
   [[nodiscard]] double max_duty_after_fault() const { return max_duty_after_fault_; }
   [[nodiscard]] const AxisPlant& az_plant() const { return rig_->plants().az(); }
   [[nodiscard]] const AxisPlant& el_plant() const { return rig_->plants().el(); }
+  /// The polarisation plant; nullptr without one.
+  [[nodiscard]] const AxisPlant* pol_plant() const { return rig_->pol_plant(); }
   [[nodiscard]] const control::StationController& station() const { return station_.station(); }
+  /// The station's polarisation axis; nullptr without one.
+  [[nodiscard]] const control::PolAxis* pol() const { return station_.pol(); }
   [[nodiscard]] proto::HubCounters hub_counters() const { return rig_->hub().counters(); }
 
   /// Adds each axis's first latched fault to `out`: "az: stall at 12.3 s: …".
@@ -43,7 +48,7 @@ class StationLoop {
 
   std::shared_ptr<const PlantRig> rig_;
   control::PortedStation station_;
-  std::array<bool, 2> fault_reported_{};
+  std::array<bool, 3> fault_reported_{};
   double max_duty_after_fault_ = 0.0;
 };
 

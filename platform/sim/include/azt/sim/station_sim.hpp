@@ -35,6 +35,20 @@ control::StationControlConfig station_control_config(const StationSimSetup& setu
 /// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
 using SkyTrack = std::function<std::optional<control::AzEl>(double t_s)>;
 
+/// The polarisation axis's feed angle at `t_s` seconds after the start (control/pol_target.hpp's
+/// pol_feed_deg; nullopt: the axis holds).
+using PolTrack = std::function<std::optional<double>(double t_s)>;
+
+struct PolTracking {
+  PolTrack track;  ///< empty: a pol axis, if the station has one, holds
+  /// What the error is measured against (an outside program's angles); empty: `track` itself.
+  PolTrack reference;
+  /// A settling allowance: after the station's pol target jumps by more than 1° in one tick (a
+  /// change between receive and transmit, a turn to the other end of the travel), the error is not
+  /// counted for this long.
+  double settle_s = 0.0;
+};
+
 struct AxisMetrics {
   double rms_error_deg = 0.0;
   double max_error_deg = 0.0;
@@ -59,6 +73,12 @@ struct SimResult {
   /// motors stop in the tick that detects it).
   double max_duty_after_fault = 0.0;
   proto::HubCounters hub{};  ///< the decoder's counters after the run
+  /// The polarisation axis (with a pol plant and a PolTracking track): the true shaft against the
+  /// feed angle, folded as a linear polarisation, from its acquisition (within window + 2 LSB)
+  /// on, outside the settling allowances.
+  std::optional<AxisMetrics> pol;
+  double pol_settling_s = 0.0;  ///< time left uncounted as settling
+  double pol_counted_s = 0.0;   ///< time whose error is in `pol`
 };
 
 /// Tracks `sky` for `duration_s`. Errors are the true shaft positions against the target, counted
@@ -66,7 +86,8 @@ struct SimResult {
 /// The station is the daemon's (control::PortedStation) over the simulated station's ports, read
 /// through `hub` (nullptr: the plain model of setup.plant, simulated_station.hpp).
 SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, double duration_s,
-                            std::unique_ptr<SimulatedHub> hub = nullptr);
+                            std::unique_ptr<SimulatedHub> hub = nullptr,
+                            const PolTracking& pol = {});
 
 /// Slews from the plants' start positions to `to` and measures time and overshoot.
 SimResult simulate_slew(const StationSimSetup& setup, control::AzEl to, double max_duration_s,

@@ -1,0 +1,108 @@
+#pragma once
+// One driven axis of a station: its controller, its supervisor, how its motor is moved (PWM,
+// relays or a setpoint box) and its pair of travel-end switches. StationController holds two of
+// them (azimuth and elevation) and PortedStation a third for the polarisation feed
+// (pol_target.hpp); a station of one axis, a brake or a motor trip is added here once rather than
+// per axis.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "azt/control/axis_controller.hpp"
+#include "azt/control/relay_drive.hpp"
+#include "azt/control/supervisor.hpp"
+
+namespace azt::control {
+
+/// How an axis is moved (docs/hardware.md): a PWM H-bridge (soft start and stop, AxisController),
+/// on/off relays (RelayDrive: hysteresis, minimum on-time, reversal dead time), or a rotator box
+/// that closes its own loop around a setpoint (seed 001's digital pot: we only send the angle).
+enum class DriveKind : std::uint8_t { Pwm, Relay, Setpoint };
+
+std::string_view to_string(DriveKind kind);
+/// Whether the drive is sent an angle (the box closes the loop) rather than a duty.
+bool sends_setpoint(DriveKind kind);
+
+struct AxisDriveConfig {
+  DriveKind kind = DriveKind::Pwm;
+  RelayDriveConfig relay;  ///< Relay: window, minimum on-time, dead times
+  /// Setpoint: the box's own deadband. Further than this from the setpoint the box is driving,
+  /// which is what the supervisor watches for stalls and runaways.
+  double setpoint_band_deg = 2.0;
+};
+
+/// What the station knows of one axis.
+struct AxisStatus {
+  double mount_deg = 0.0;  ///< last accepted reading, mount degrees
+  double duty = 0.0;
+  bool moving = false;
+  FaultKind fault = FaultKind::None;
+  std::string reason;  ///< the supervisor's words when faulted
+};
+
+/// One axis's travel-end switches (docs/hardware.md), tripped or not: `reverse` at the end of
+/// decreasing angle (counter-clockwise, down), `forward` at the end of increasing angle.
+struct LimitPair {
+  bool reverse = false;
+  bool forward = false;
+};
+
+class DrivenAxis {
+ public:
+  /// `start_mount_deg`: where the axis is believed to be before its first reading. The
+  /// supervisor is given the controller's encoder step.
+  DrivenAxis(const AxisControlConfig& control, const SupervisorConfig& supervisor,
+             const AxisDriveConfig& drive, double start_mount_deg, double tick_s);
+
+  /// A reading in mount degrees: kept unless the supervisor rejects it as a jump.
+  void on_reading(double now_s, double mount_deg);
+  /// The reading's calibration moved by `delta_deg` (new corrections): not a jump, not motion.
+  void rebase(double delta_deg);
+
+  /// One tick towards `target_deg` (nullopt: hold where it stands), `rate_deg_s` the target's
+  /// own rate as feed-forward. Returns the duty (relays ±1/0, a setpoint box its direction).
+  double drive(double now_s, std::optional<double> target_deg, double rate_deg_s);
+  /// The direction test's open-loop drive (Demand::test): slowly, one way.
+  double drive_test(double now_s, int direction);
+  /// Stops the drive now, whatever its kind (a setpoint axis is sent where it stands).
+  void halt(double now_s);
+  /// The switches changed (an input edge): a drive into a tripped one stops at once.
+  void set_limits(const LimitPair& limits);
+
+  void emergency_stop(double now_s, std::string_view reason);
+  void clear_faults() { supervisor_.clear(); }
+
+  [[nodiscard]] double mount_deg() const { return mount_deg_; }
+  [[nodiscard]] double duty() const;
+  [[nodiscard]] bool moving() const;
+  /// Motor starts since construction (a relay closing, or a PWM move beginning).
+  [[nodiscard]] std::uint64_t starts() const;
+  [[nodiscard]] AxisStatus status() const;
+  /// Setpoint axes: the angle to send; nullopt for duty-driven axes.
+  [[nodiscard]] std::optional<double> setpoint_deg() const;
+  [[nodiscard]] bool faulted() const { return supervisor_.fault() != FaultKind::None; }
+  [[nodiscard]] bool stale(double now_s) const { return supervisor_.stale(now_s); }
+  [[nodiscard]] const AxisControlConfig& control_config() const { return controller_.config(); }
+
+ private:
+  double drive_pwm(double now_s, double target_deg, double rate_deg_s);
+  double drive_relay(double now_s, double target_deg, double rate_deg_s);
+  double drive_setpoint(double now_s, double target_deg);
+  /// A duty that runs into a tripped switch.
+  [[nodiscard]] bool into_limit(double duty) const;
+
+  AxisController controller_;
+  AxisSupervisor supervisor_;
+  AxisDriveConfig drive_;
+  RelayDrive relay_;
+  double mount_deg_;
+  double tick_s_;
+  LimitPair limits_;
+  std::optional<double> setpoint_deg_;  ///< Setpoint axes: what the box was last given
+  double setpoint_duty_ = 0.0;          ///< Setpoint axes: the direction the box drives
+  bool holding_ = false;                ///< the last tick had no target (STOP, or holding)
+};
+
+}  // namespace azt::control

@@ -1,0 +1,233 @@
+#include "azt/control/driven_axis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace azt::control {
+namespace {
+
+SupervisorConfig with_lsb(SupervisorConfig s, const AxisControlConfig& c) {
+  s.lsb_deg = c.lsb_deg;
+  return s;
+}
+
+double relay_duty(RelayCommand command) {
+  switch (command) {
+    case RelayCommand::Forward:
+      return 1.0;
+    case RelayCommand::Reverse:
+      return -1.0;
+    case RelayCommand::Off:
+      break;
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+std::string_view to_string(DriveKind kind) {
+  switch (kind) {
+    case DriveKind::Pwm:
+      return "pwm";
+    case DriveKind::Relay:
+      return "relay";
+    case DriveKind::Setpoint:
+      return "setpoint";
+  }
+  return "?";
+}
+
+bool sends_setpoint(DriveKind kind) {
+  switch (kind) {
+    case DriveKind::Pwm:
+    case DriveKind::Relay:
+      return false;
+    case DriveKind::Setpoint:
+      return true;
+  }
+  return false;
+}
+
+DrivenAxis::DrivenAxis(const AxisControlConfig& control, const SupervisorConfig& supervisor,
+                       const AxisDriveConfig& drive, double start_mount_deg, double tick_s)
+    : controller_(control),
+      supervisor_(with_lsb(supervisor, control)),
+      drive_(drive),
+      relay_(drive.relay),
+      mount_deg_(start_mount_deg),
+      tick_s_(tick_s) {}
+
+void DrivenAxis::on_reading(double now_s, double mount_deg) {
+  if (supervisor_.on_reading(now_s, mount_deg)) mount_deg_ = mount_deg;
+}
+
+void DrivenAxis::rebase(double delta_deg) {
+  mount_deg_ += delta_deg;
+  supervisor_.rebase(delta_deg);
+}
+
+double DrivenAxis::duty() const {
+  switch (drive_.kind) {
+    case DriveKind::Relay:
+      return relay_duty(relay_.command());
+    case DriveKind::Setpoint:
+      return setpoint_duty_;
+    case DriveKind::Pwm:
+      break;
+  }
+  return controller_.duty();
+}
+
+bool DrivenAxis::moving() const {
+  switch (drive_.kind) {
+    case DriveKind::Pwm:
+      return controller_.moving();  // through its soft stop, while the duty winds down
+    case DriveKind::Relay:
+    case DriveKind::Setpoint:
+      return duty() != 0.0;
+  }
+  return duty() != 0.0;
+}
+
+std::uint64_t DrivenAxis::starts() const {
+  switch (drive_.kind) {
+    case DriveKind::Relay:
+      return relay_.starts();
+    case DriveKind::Pwm:
+    case DriveKind::Setpoint:
+      return controller_.starts();
+  }
+  return controller_.starts();
+}
+
+AxisStatus DrivenAxis::status() const {
+  return AxisStatus{mount_deg_, duty(), moving(), supervisor_.fault(), supervisor_.reason()};
+}
+
+std::optional<double> DrivenAxis::setpoint_deg() const {
+  if (sends_setpoint(drive_.kind)) return setpoint_deg_;
+  return std::nullopt;
+}
+
+void DrivenAxis::halt(double now_s) {
+  controller_.halt();
+  relay_.halt(now_s);
+  if (sends_setpoint(drive_.kind)) {
+    setpoint_deg_ = mount_deg_;
+    setpoint_duty_ = 0.0;
+  }
+}
+
+void DrivenAxis::set_limits(const LimitPair& limits) {
+  limits_ = limits;
+  // No time here: a relay's dead times then run from its next update.
+  if (into_limit(duty())) halt(std::numeric_limits<double>::quiet_NaN());
+}
+
+void DrivenAxis::emergency_stop(double now_s, std::string_view reason) {
+  supervisor_.emergency_stop(now_s, reason);
+  halt(now_s);
+}
+
+double DrivenAxis::drive(double now_s, std::optional<double> target_deg, double rate_deg_s) {
+  if (!target_deg) {
+    // Holding: a PWM move finishes its soft stop at the present position. A setpoint axis is
+    // sent where it stands when the hold begins (a STOP mid-move stops the box there), then
+    // keeps that setpoint: re-sending the moving reading every tick would chase the coast.
+    const bool setpoint = sends_setpoint(drive_.kind);
+    if (setpoint && (!holding_ || !setpoint_deg_)) setpoint_deg_ = mount_deg_;
+    holding_ = true;
+    target_deg = setpoint ? *setpoint_deg_ : mount_deg_;
+    rate_deg_s = 0.0;
+  } else {
+    holding_ = false;
+  }
+  switch (drive_.kind) {
+    case DriveKind::Relay:
+      return drive_relay(now_s, *target_deg, rate_deg_s);
+    case DriveKind::Setpoint:
+      return drive_setpoint(now_s, *target_deg);
+    case DriveKind::Pwm:
+      break;
+  }
+  return drive_pwm(now_s, *target_deg, rate_deg_s);
+}
+
+double DrivenAxis::drive_pwm(double now_s, double target_deg, double rate_deg_s) {
+  double duty = controller_.update(target_deg, mount_deg_, rate_deg_s, tick_s_);
+  if (into_limit(duty)) {
+    // Held at the switch: the supervisor sees an axis at rest, not one driven without moving.
+    controller_.halt();
+    duty = 0.0;
+  }
+  const auto verdict = supervisor_.check(now_s, duty);
+  if (!verdict.allow_motion) controller_.halt();
+  return controller_.duty();
+}
+
+double DrivenAxis::drive_relay(double now_s, double target_deg, double rate_deg_s) {
+  double duty = relay_duty(relay_.update(target_deg, mount_deg_, now_s, rate_deg_s));
+  if (into_limit(duty)) {
+    relay_.halt(now_s);
+    duty = 0.0;
+  }
+  const auto verdict = supervisor_.check(now_s, duty);
+  if (!verdict.allow_motion) relay_.halt(now_s);
+  return this->duty();
+}
+
+double DrivenAxis::drive_setpoint(double now_s, double target_deg) {
+  double setpoint = target_deg;
+  // A setpoint beyond a tripped switch becomes "stay here": the box would drive into it.
+  if (into_limit(setpoint - mount_deg_)) setpoint = mount_deg_;
+  const double error = setpoint - mount_deg_;
+  setpoint_duty_ = std::fabs(error) > drive_.setpoint_band_deg ? std::copysign(1.0, error) : 0.0;
+  setpoint_deg_ = setpoint;
+  const auto verdict = supervisor_.check(now_s, setpoint_duty_);
+  if (!verdict.allow_motion) {
+    setpoint_deg_ = mount_deg_;
+    setpoint_duty_ = 0.0;
+  }
+  return setpoint_duty_;
+}
+
+double DrivenAxis::drive_test(double now_s, int direction) {
+  // Slow, so a wrong way is seen before it goes far: below the supervisor's "driven" duty where the
+  // motor still turns past its stiction. A relay has one speed; a setpoint box is given a goal a
+  // few degrees on, renewed each tick, so it keeps going the one way for the test's second.
+  constexpr double kTestDuty = 0.35;
+  constexpr double kSetpointLeadDeg = 5.0;
+  holding_ = false;
+  double duty = 0.0;
+  switch (drive_.kind) {
+    case DriveKind::Pwm:
+      duty = controller_.drive_open(
+          direction * std::max(kTestDuty, controller_.config().min_duty + 0.1), tick_s_);
+      break;
+    case DriveKind::Relay:
+      duty =
+          relay_duty(relay_.update(mount_deg_ + direction * kSetpointLeadDeg, mount_deg_, now_s));
+      break;
+    case DriveKind::Setpoint:
+      setpoint_deg_ = mount_deg_ + direction * kSetpointLeadDeg;
+      duty = setpoint_duty_ = direction;
+      break;
+  }
+  // The supervisor still stops it for a stale reading, a latched fault or the E-stop, but is not
+  // asked to judge the motion: which way the shaft goes is the test's question, and a reversed
+  // motor must come back as its answer rather than as a latched runaway.
+  if (into_limit(duty) || !supervisor_.check(now_s, 0.0).allow_motion) {
+    halt(now_s);
+    return 0.0;
+  }
+  return duty;
+}
+
+bool DrivenAxis::into_limit(double duty) const {
+  if (duty > 0.0) return limits_.forward;
+  if (duty < 0.0) return limits_.reverse;
+  return false;
+}
+
+}  // namespace azt::control
