@@ -49,16 +49,40 @@ void StationController::set_corrections(const PositionCorrections& corrections) 
   corrections_ = corrections;
 }
 
-std::optional<double> StationController::jog_target(int direction, bool azimuth) const {
-  if (direction == 0) return std::nullopt;
-  if (azimuth) return direction > 0 ? config_.az_range.max_deg : config_.az_range.min_deg;
-  return direction > 0 ? config_.el_range.max_deg : config_.el_range.min_deg;
+std::optional<double> StationController::jog_target(JogGoal& jog, const DrivenAxis& axis,
+                                                    int direction, double speed,
+                                                    const AxisTravel& travel,
+                                                    double& rate_deg_s) const {
+  rate_deg_s = 0.0;
+  if (direction == 0) {
+    jog = JogGoal{};
+    return std::nullopt;
+  }
+  // At full speed the goal is the end of the travel: the controller runs flat out and its
+  // deceleration zone stops the axis there if nobody stops it first.
+  if (speed >= 1.0) {
+    jog = JogGoal{direction, 0.0};
+    return direction > 0 ? travel.max_deg : travel.min_deg;
+  }
+  // Slower (a game pad's stick half way): a goal that leaves where the axis stands and moves at
+  // the asked fraction of the axis's full rate, tracked as a moving target with its rate fed
+  // forward. A PWM axis then runs at that speed; a relay axis, with one speed, moves in steps
+  // of its window that average it.
+  if (jog.direction != direction) jog = JogGoal{direction, axis.mount_deg()};
+  rate_deg_s = direction * speed * axis.control_config().max_rate_deg_s;
+  jog.goal_deg =
+      std::clamp(jog.goal_deg + rate_deg_s * config_.tick_s, travel.min_deg, travel.max_deg);
+  return jog.goal_deg;
 }
 
 Duties StationController::tick(double now_s, const Demand& demand, const AzEl& rate_deg_s) {
   std::optional<double> az_target;
   std::optional<double> el_target;
   AzEl rate = rate_deg_s;
+  if (!demand.jog) {
+    az_jog_ = JogGoal{};
+    el_jog_ = JogGoal{};
+  }
   if (demand.position && demand.mount) {
     // A planned mount position: only ever clamped into the travel, as a last line of defence.
     az_target =
@@ -73,11 +97,12 @@ Duties StationController::tick(double now_s, const Demand& demand, const AzEl& r
     tested.drive_test(now_s, demand.test->direction > 0 ? 1 : -1);
     return duties();
   } else if (demand.jog) {
-    // A continuous move runs to the end of the travel at full speed; the controller's
-    // deceleration zone stops it there if nobody stops it first.
-    az_target = jog_target(demand.jog->az, true);
-    el_target = jog_target(demand.jog->el, false);
-    rate = AzEl{};
+    az_target =
+        jog_target(az_jog_, az_, demand.jog->az, demand.jog->az_speed,
+                   AxisTravel{config_.az_range.min_deg, config_.az_range.max_deg}, rate.az_deg);
+    el_target =
+        jog_target(el_jog_, el_, demand.jog->el, demand.jog->el_speed,
+                   AxisTravel{config_.el_range.min_deg, config_.el_range.max_deg}, rate.el_deg);
   }
   az_.drive(now_s, az_target, rate.az_deg);
   el_.drive(now_s, el_target, rate.el_deg);

@@ -106,6 +106,37 @@ TEST(StationController, AJogRunsTowardsTheTravelEndAndHoldingStopsIt) {
   EXPECT_DOUBLE_EQ(rig.station.el().duty, 0.0);
 }
 
+// A game pad's stick half way: the axis runs at the asked fraction of its full rate (a moving
+// goal with its rate fed forward), not flat out; full speed still runs flat out.
+TEST(StationController, AContinuousMoveBelowFullSpeedRunsAtThatFractionOfTheFullRate) {
+  const auto rate_over = [](double speed) {
+    Rig rig;
+    Demand jog;
+    jog.jog = Jog{1, 0, speed, 1.0};
+    rig.run(jog, 5.0);  // past the soft start
+    const double from = rig.az.shaft_deg();
+    rig.run(jog, 10.0);
+    return (rig.az.shaft_deg() - from) / 10.0;
+  };
+  const double full = Rig{}.config().az_control.max_rate_deg_s;
+  EXPECT_NEAR(rate_over(0.4), 0.4 * full, 0.03 * full);
+  EXPECT_NEAR(rate_over(0.1), 0.1 * full, 0.03 * full);
+  EXPECT_GT(rate_over(1.0), 0.95 * full);
+}
+
+TEST(StationController, AStoppedSlowMoveDoesNotCarryOnFromItsOldGoal) {
+  Rig rig;
+  Demand jog;
+  jog.jog = Jog{0, 1, 1.0, 0.5};
+  rig.run(jog, 4.0);
+  rig.run(Demand{}, 5.0);  // hold
+  const double held = rig.el.shaft_deg();
+  jog.jog = Jog{0, -1, 1.0, 0.5};  // the other way: from where it stands, not from the old goal
+  rig.run(jog, 2.0);
+  EXPECT_LT(rig.el.shaft_deg(), held);
+  EXPECT_FALSE(rig.station.faulted()) << rig.station.el().reason;
+}
+
 TEST(StationController, NoReadingsMeansNoPositionAndNoMotion) {
   Rig rig;
   Demand go;

@@ -58,6 +58,12 @@ struct LimitSwitches {
   friend bool operator==(const LimitSwitches&, const LimitSwitches&) = default;
 };
 
+/// One axis's travel, mount degrees.
+struct AxisTravel {
+  double min_deg = 0.0;
+  double max_deg = 0.0;
+};
+
 class StationController {
  public:
   /// `start_mount` is where the axes are believed to be before the first reading (it resolves
@@ -105,7 +111,16 @@ class StationController {
   void clear_faults();
 
  private:
-  [[nodiscard]] std::optional<double> jog_target(int direction, bool azimuth) const;
+  /// Where a continuous move on one axis is going: its direction, and below full speed the goal
+  /// that moves at the asked speed (tick()).
+  struct JogGoal {
+    int direction = 0;
+    double goal_deg = 0.0;
+  };
+  /// The axis's target for a continuous move, and `rate_deg_s` its rate (fed forward).
+  std::optional<double> jog_target(JogGoal& jog, const DrivenAxis& axis, int direction,
+                                   double speed, const AxisTravel& travel,
+                                   double& rate_deg_s) const;
 
   StationControlConfig config_;
   DrivenAxis az_;
@@ -113,6 +128,8 @@ class StationController {
   PositionCorrections corrections_;
   LimitSwitches limits_;
   std::optional<AzEl> last_encoder_;  ///< the last raw encoder angles, to re-express on a change
+  JogGoal az_jog_;
+  JogGoal el_jog_;
 };
 
 }  // namespace azt::control
