@@ -1,12 +1,14 @@
-// The sysfs PWM adapter and the IBT-2 bridge on it, against a directory laid out like
-// /sys/class/pwm/pwmchipN. The fake kernel's export is a pwmN directory made
-// beforehand; the test checks what the adapter wrote into each attribute.
+// The sysfs PWM adapter and the drives on it (the IBT-2 bridge, a stepper's STEP input), against a
+// directory laid out like /sys/class/pwm/pwmchipN. The fake kernel's export is a pwmN directory
+// made beforehand; the test checks what the adapter wrote into each attribute.
 #include "azt/linux/sysfs_pwm.hpp"
 #include "azt/linux/pwm_hbridge.hpp"
+#include "azt/linux/step_dir_drive.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -114,6 +116,66 @@ TEST_F(FakePwmChip, AWriteErrorDisablesTheBridgeAndIsReported) {
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error().message.find("pwm0/duty_cycle"), std::string::npos) << r.error().message;
   EXPECT_EQ(attr(1, "enable"), "0");
+}
+
+/// A GPIO line that records its level (DIR, ENABLE).
+class RecordedLine final : public GpioOutput {
+ public:
+  explicit RecordedLine(std::string key) : spec_{"gpiochip0", 0, false, std::move(key)} {}
+  Result<bool> set(bool active) override {
+    active_ = active;
+    return true;
+  }
+  [[nodiscard]] bool active() const override { return active_; }
+  [[nodiscard]] const GpioLineSpec& spec() const override { return spec_; }
+
+ private:
+  GpioLineSpec spec_;
+  bool active_ = false;
+};
+
+TEST_F(FakePwmChip, TheStepRateIsThePeriodAtHalfDutyAndDirTurnsOnlyWithoutPulses) {
+  exported(0);
+  auto step = SysfsPwm::open(chip_.string(), 0, 1000.0);
+  ASSERT_TRUE(step.ok());
+  auto dir = std::make_unique<RecordedLine>("[hardware.az] dir");
+  auto enable = std::make_unique<RecordedLine>("[hardware.az] enable");
+  const RecordedLine* dir_line = dir.get();
+  const RecordedLine* enable_line = enable.get();
+  auto drive = make_step_dir_drive(std::move(step).value(), std::move(dir), std::move(enable),
+                                   control::StepDirConfig{2000.0, 200.0, 4000.0}, "stepper");
+  ASSERT_TRUE(drive->apply(0.0, 1.0, std::nullopt).ok());  // DIR's set-up tick: no pulses
+  EXPECT_TRUE(dir_line->active());
+  EXPECT_TRUE(enable_line->active());
+  EXPECT_EQ(attr(0, "duty_cycle"), "0");
+  ASSERT_TRUE(drive->apply(0.05, 1.0, std::nullopt).ok());
+  EXPECT_EQ(attr(0, "period"), "5000000");  // 200 Hz, the pull-in rate
+  EXPECT_EQ(attr(0, "duty_cycle"), "2500000");
+  ASSERT_TRUE(drive->apply(0.10, 1.0, std::nullopt).ok());
+  EXPECT_EQ(attr(0, "period"), "2500000");  // 400 Hz: 4000 Hz/s for one 50 ms tick
+  EXPECT_EQ(attr(0, "duty_cycle"), "1250000");
+  // Reversed: the pulses stop (the band's edge, then none) before DIR turns.
+  ASSERT_TRUE(drive->apply(0.15, -1.0, std::nullopt).ok());
+  EXPECT_EQ(attr(0, "period"), "5000000");
+  EXPECT_TRUE(dir_line->active());
+  ASSERT_TRUE(drive->apply(0.20, -1.0, std::nullopt).ok());
+  EXPECT_EQ(attr(0, "duty_cycle"), "0");
+  EXPECT_TRUE(dir_line->active());
+  ASSERT_TRUE(drive->apply(0.25, -1.0, std::nullopt).ok());
+  EXPECT_FALSE(dir_line->active());
+  EXPECT_EQ(attr(0, "duty_cycle"), "0");
+  drive->off(0.3);
+  EXPECT_FALSE(enable_line->active());
+  EXPECT_EQ(attr(0, "duty_cycle"), "0");
+}
+
+TEST_F(FakePwmChip, AStepRateOutsideWhatThePwmCanMakeIsRefused) {
+  exported(0);
+  auto step = SysfsPwm::open(chip_.string(), 0, 1000.0);
+  ASSERT_TRUE(step.ok());
+  EXPECT_FALSE(step.value().set_rate(0.5, 0.5).ok());
+  EXPECT_FALSE(step.value().set_rate(std::nan(""), 0.5).ok());
+  EXPECT_EQ(attr(0, "period"), "1000000");
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 #include "antenna/axis_devices.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "azt/linux/axis_drives.hpp"
 #include "azt/linux/pwm_hbridge.hpp"
+#include "azt/linux/step_dir_drive.hpp"
 #include "common/usage_error.hpp"
 
 namespace azt::app {
@@ -98,6 +100,27 @@ std::unique_ptr<ports::AxisDrive> open_pwm_drive(const HardwareAxisConfig& a, co
       a.enable ? "IBT-2 on sysfs PWM, enables on GPIO" : "IBT-2 on sysfs PWM");
 }
 
+/// STEP's channel first (opened at no pulses), then DIR and ENABLE; a line that cannot be had
+/// leaves the channel disabled.
+std::unique_ptr<ports::AxisDrive> open_step_dir_drive(const HardwareAxisConfig& a,
+                                                      HardwarePorts& ports) {
+  // The channel starts at the pull-in rate with no pulses; its rate is set at each start.
+  auto step =
+      linux_os::SysfsPwm::open(a.step_chip, a.step_channel, std::max(a.steps.start_hz, 10.0));
+  if (!step) throw UsageError(a.key("step_channel") + ": " + step.error().message);
+  std::unique_ptr<linux_os::GpioOutput> dir;
+  std::unique_ptr<linux_os::GpioOutput> enable;
+  try {
+    dir = output_line(ports, *a.step_dir);
+    if (a.enable) enable = output_line(ports, *a.enable);
+  } catch (const UsageError&) {
+    (void)step.value().disable();
+    throw;
+  }
+  return linux_os::make_step_dir_drive(std::move(step).value(), std::move(dir), std::move(enable),
+                                       a.steps, "step/dir driver on sysfs PWM and GPIO");
+}
+
 }  // namespace
 
 std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& a, const PwmConfig& pwm,
@@ -109,6 +132,8 @@ std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& a, c
       return open_pot_drive(a, ports);
     case AxisDriveKind::Pwm:
       return open_pwm_drive(a, pwm, ports);
+    case AxisDriveKind::StepDir:
+      return open_step_dir_drive(a, ports);
   }
   throw std::logic_error("an axis drive of no known kind");
 }

@@ -27,6 +27,10 @@ control::AxisDriveConfig drive_config(const HardwareAxisConfig& a) {
       d.kind = control::DriveKind::Setpoint;
       d.setpoint_band_deg = a.setpoint_band_deg;
       break;
+    case AxisDriveKind::StepDir:
+      // A step rate in proportion to the duty: to the controller, a PWM bridge without load.
+      d.kind = control::DriveKind::Pwm;
+      break;
   }
   return d;
 }

@@ -413,6 +413,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   read_start_target(file, c);
   c.sequencer = read_sequencer(file.section("sequencer"));
   c.gpio = read_gpio(file.section("gpio"), c.sequencer.outputs.size());
+  c.gamepad = read_gamepad(file);
   read_antenna(file, c);
   read_servers(file, c);
   const ConfigSection sats = file.section("satellites");

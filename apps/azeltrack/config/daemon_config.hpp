@@ -16,6 +16,7 @@
 #include "azt/sim/station_sim.hpp"
 #include "config/config_choice.hpp"
 #include "config/export_config.hpp"
+#include "config/gamepad_config.hpp"
 #include "config/gps_config.hpp"
 #include "config/hardware_config.hpp"
 #include "config/hooks_config.hpp"
@@ -160,7 +161,8 @@ struct DaemonConfig {
   linux_os::HubSerialConfig hub;  ///< [hub]: the EncoderHub's serial device (`pwm` backend)
   PwmConfig pwm;
   GpioConfig gpio;
-  HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] (`hardware` backend)
+  std::optional<GamepadConfig> gamepad;  ///< [gamepad]: a game pad at the mast
+  HardwareConfig hardware;               ///< [hardware.az] / [hardware.el] (`hardware` backend)
   SatellitesConfig satellites;
   std::vector<ScheduleEntryConfig> schedule;  ///< [[schedule]], highest priority first
   HooksConfig hooks;                          ///< [hooks]: programs run at the schedule's events

@@ -116,7 +116,23 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
 }
 
 void refuse_enable(const ConfigSection& s, const HardwareAxisConfig& a) {
-  if (a.enable) s.fail("enable", "is for drive = \"pwm\" (the IBT-2's enables)");
+  if (a.enable) {
+    s.fail("enable", "is for drive = \"pwm\" (the IBT-2's enables) or \"stepdir\" (the driver's)");
+  }
+}
+
+void read_step_dir(const ConfigSection& s, HardwareAxisConfig& a, const std::string& chip) {
+  if (!s.has("step_channel")) s.fail("step_channel", "is needed by drive = \"stepdir\" (STEP)");
+  a.step_channel = static_cast<unsigned>(*s.integer("step_channel"));
+  a.step_chip = s.text("step_chip").value_or(a.step_chip);
+  a.step_dir = read_gpio_line(s, "dir", chip, false);
+  if (!a.step_dir) s.fail("dir", "is needed by drive = \"stepdir\" (the driver's DIR)");
+  const control::StepDirConfig d;
+  auto steps = control::StepDirConfig::make(s.number("max_step_hz").value_or(d.max_step_hz),
+                                            s.number("start_step_hz").value_or(d.start_hz),
+                                            s.number("step_accel_hz_s").value_or(d.accel_hz_s));
+  if (!steps) s.fail("start_step_hz", steps.error().message);
+  a.steps = *steps;
 }
 
 HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
@@ -136,6 +152,9 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
     case AxisDriveKind::Pot:
       refuse_enable(s, a);
       read_pot_drive(s, a);
+      break;
+    case AxisDriveKind::StepDir:
+      read_step_dir(s, a, chip);
       break;
   }
   if (!read_by_hub(a.sensor)) read_adc(s, a);

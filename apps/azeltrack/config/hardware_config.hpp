@@ -10,6 +10,7 @@
 #include "azt/control/pot_calibration.hpp"
 #include "azt/control/relay_drive.hpp"
 #include "azt/control/setpoint_drive.hpp"
+#include "azt/control/step_dir.hpp"
 #include "azt/linux/gpio.hpp"
 #include "config/config_choice.hpp"
 
@@ -18,9 +19,9 @@ namespace azt::app {
 class ConfigFile;
 class ConfigSection;
 
-/// How an axis is turned: an IBT-2 H-bridge on [pwm], relays on GPIO, or an MCP41010 digital pot
-/// in place of the rotator box's control pot.
-enum class AxisDriveKind { Pwm, Relay, Pot };
+/// How an axis is turned: an IBT-2 H-bridge on [pwm], relays on GPIO, an MCP41010 digital pot
+/// in place of the rotator box's control pot, or a stepper's step/dir driver.
+enum class AxisDriveKind { Pwm, Relay, Pot, StepDir };
 /// How an axis is read: the EncoderHub on [hub], or a potentiometer on an MCP3008 or ADS1115.
 enum class AxisSensorKind { Hub, Mcp3008, Ads1115 };
 
@@ -37,8 +38,11 @@ constexpr bool read_by_hub(AxisSensorKind sensor) {
   return false;
 }
 
-inline constexpr ConfigChoices<AxisDriveKind, 3> kAxisDriveKinds{
-    {{"pwm", AxisDriveKind::Pwm}, {"relay", AxisDriveKind::Relay}, {"pot", AxisDriveKind::Pot}}};
+inline constexpr ConfigChoices<AxisDriveKind, 4> kAxisDriveKinds{
+    {{"pwm", AxisDriveKind::Pwm},
+     {"relay", AxisDriveKind::Relay},
+     {"pot", AxisDriveKind::Pot},
+     {"stepdir", AxisDriveKind::StepDir}}};
 inline constexpr ConfigChoices<AxisSensorKind, 3> kAxisSensorKinds{
     {{"hub", AxisSensorKind::Hub},
      {"mcp3008", AxisSensorKind::Mcp3008},
@@ -49,7 +53,8 @@ struct HardwareAxisConfig {
   AxisDriveKind drive = AxisDriveKind::Pwm;
   AxisSensorKind sensor = AxisSensorKind::Hub;
 
-  // drive = "pwm": the IBT-2's R_EN + L_EN on a GPIO line (absent: tied to 3.3 V).
+  // drive = "pwm": the IBT-2's R_EN + L_EN on a GPIO line (absent: tied to 3.3 V); drive =
+  // "stepdir": the driver's ENABLE.
   std::optional<linux_os::GpioLineSpec> enable;
 
   // drive = "relay": forward/reverse lines (CW/CCW, UP/DOWN), or power + polarity (seed 002).
@@ -66,6 +71,12 @@ struct HardwareAxisConfig {
   control::SetpointCalibration wiper;
   double setpoint_band_deg = 2.0;
 
+  // drive = "stepdir": STEP on a sysfs PWM channel, DIR on a GPIO line (docs/hardware.md).
+  std::string step_chip = "/sys/class/pwm/pwmchip0";
+  unsigned step_channel = 0;
+  std::optional<linux_os::GpioLineSpec> step_dir;
+  control::StepDirConfig steps;
+
   // sensor = "mcp3008" (spidev) or "ads1115" (i2c-dev): a potentiometer on the axis.
   std::string adc_device;
   unsigned adc_channel = 0;
@@ -75,7 +86,8 @@ struct HardwareAxisConfig {
   /// The GPIO lines this axis uses (relays, bridge enables).
   [[nodiscard]] std::vector<const linux_os::GpioLineSpec*> gpio_lines() const {
     std::vector<const linux_os::GpioLineSpec*> out;
-    for (const auto* l : {&relay_forward, &relay_reverse, &relay_power, &relay_polarity, &enable}) {
+    for (const auto* l :
+         {&relay_forward, &relay_reverse, &relay_power, &relay_polarity, &enable, &step_dir}) {
       if (*l) out.push_back(&**l);
     }
     return out;

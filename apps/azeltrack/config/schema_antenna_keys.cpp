@@ -141,13 +141,15 @@ constexpr KeySpec relay_number(std::string_view key, std::string_view unit, Rang
           .help = help};
 }
 
-constexpr std::array<KeySpec, 25> kHardwareAxis{{
+constexpr std::array<KeySpec, 31> kHardwareAxis{{
     {.key = "drive",
      .type = KeyType::Choice,
      .choices = kDriveNames,
      .default_toml = "\"pwm\"",
      .help = "`pwm`: an IBT-2 on the `[pwm]` channels; `relay`: GPIO relays (the `relay_*` keys); "
-             "`pot`: an MCP41010 in the rotator box (`spi_device`, `wiper_calibration`)"},
+             "`pot`: an MCP41010 in the rotator box (`spi_device`, `wiper_calibration`); "
+             "`stepdir`: a stepper's step/direction driver (`step_channel`, `dir`, the `*step*` "
+             "keys)"},
     {.key = "sensor",
      .type = KeyType::Choice,
      .choices = kSensorNames,
@@ -158,7 +160,26 @@ constexpr std::array<KeySpec, 25> kHardwareAxis{{
     {.key = "enable",
      .type = KeyType::GpioLine,
      .default_note = "tied high",
-     .help = "`drive = \"pwm\"`: the IBT-2's R_EN/L_EN on a GPIO line"},
+     .help = "`drive = \"pwm\"`: the IBT-2's R_EN/L_EN on a GPIO line; `drive = \"stepdir\"`: "
+             "the driver's ENABLE (off on a stop or fault: no holding torque)"},
+    {.key = "step_chip",
+     .type = KeyType::Text,
+     .default_toml = "\"/sys/class/pwm/pwmchip0\"",
+     .help = "`drive = \"stepdir\"`: the sysfs PWM chip of STEP"},
+    {.key = "step_channel",
+     .type = KeyType::Integer,
+     .range = closed(0.0, 15.0),
+     .default_note = "none",
+     .help = "`drive = \"stepdir\"`, required: the PWM channel wired to STEP (its frequency is "
+             "the step rate)"},
+    relay_line("dir", "`drive = \"stepdir\"`, required: the driver's DIR, active = clockwise / up"),
+    relay_number("max_step_hz", "Hz", closed(1.0, 100000.0), "2000.0",
+                 "`drive = \"stepdir\"`: the step rate at full speed, `[mount.*]` rate × steps "
+                 "per degree"),
+    relay_number("start_step_hz", "Hz", closed(0.0, 100000.0), "200.0",
+                 "the stepper's pull-in rate: started and stopped at without a ramp"),
+    relay_number("step_accel_hz_s", "Hz/s", closed(1.0, 1000000.0), "4000.0",
+                 "the largest change of step rate per second above the pull-in rate"),
     relay_line("relay_forward",
                "`drive = \"relay\"`: the clockwise / up relay, with relay_reverse"),
     relay_line("relay_reverse", "the counter-clockwise / down relay, with relay_forward"),

@@ -1,5 +1,5 @@
-// The schema's station I/O keys: the E-stop, limit switches and PTT on GPIO lines, and the T/R
-// sequencer (daemon_config.cpp reads them).
+// The schema's station I/O keys: the E-stop, limit switches, PTT and buttons on GPIO lines, the T/R
+// sequencer (daemon_config.cpp reads them) and a game pad (gamepad_config.cpp).
 #include <array>
 
 #include "azt/sequencer/tr_sequencer.hpp"
@@ -118,7 +118,30 @@ constexpr std::array<KeySpec, 6> kSequencer{{
      .help = "no antenna motion while keyed"},
 }};
 
-constexpr std::array<SectionSpec, 2> kSections{{
+constexpr std::array<KeySpec, 4> kGamepad{{
+    {.key = "device",
+     .type = KeyType::Text,
+     .default_note = "none",
+     .help = "the game pad's input node, best its `/dev/input/by-id/…-event-joystick` link; looked "
+             "for again every 2 s while absent (docs/hardware.md)"},
+    {.key = "dead_zone",
+     .type = KeyType::Number,
+     .range = closed(0.0, 0.9),
+     .default_toml = "0.15",
+     .help = "the stick's dead zone, a fraction of its half range beyond the driver's flat zone"},
+    {.key = "speed",
+     .type = KeyType::Number,
+     .range = closed(0.05, 1.0),
+     .default_toml = "1.0",
+     .help = "the speed at full deflection and the D-pad's, a fraction of the axis's full rate"},
+    {.key = "park_slot",
+     .type = KeyType::Integer,
+     .range = closed(1.0, 4.0),
+     .default_toml = "1",
+     .help = "the `[[park]]` slot START parks in"},
+}};
+
+constexpr std::array<SectionSpec, 3> kSections{{
     {.name = "gpio",
      .chapter = Chapter::StationIo,
      .keys = kGpio,
@@ -130,6 +153,13 @@ constexpr std::array<SectionSpec, 2> kSections{{
      .title = "The T/R sequencer",
      .help = "How it behaves: [command-line.md](command-line.md) (`seq-sim`); wiring: "
              "[hardware.md](hardware.md)."},
+    {.name = "gamepad",
+     .chapter = Chapter::StationIo,
+     .keys = kGamepad,
+     .title = "A game pad at the mast",
+     .help =
+         "A USB game pad or joystick steering the antenna: the left stick or the D-pad moves, A "
+         "(✕) stops, START parks; wiring and rules in [hardware.md](hardware.md)."},
 }};
 
 }  // namespace

@@ -97,6 +97,7 @@ void StationDaemon::arm_tick() {
 void StationDaemon::tick() {
   const double now = now_s();
   if (buttons_) buttons_->tick();
+  if (pad_) pad_->tick();
   modes_.update(now);
   elements_->tick(unix_now_s());
   satellites_.refresh_passes(unix_now_s());

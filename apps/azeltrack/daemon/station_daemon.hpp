@@ -30,6 +30,7 @@
 #include "daemon/tick_stats.hpp"
 #include "elements/element_feed.hpp"
 #include "hands/hand_buttons.hpp"
+#include "hands/hand_pad.hpp"
 #include "radio/station_radio.hpp"
 #include "schedule/schedule_follower.hpp"
 #include "station/azel_dat_export.hpp"
@@ -206,6 +207,7 @@ class StationDaemon {
   StationCommands commands_;
   std::unique_ptr<HandButtons>
       buttons_;                   ///< [gpio] button_*: the buttons at the mast; none unwired
+  std::unique_ptr<HandPad> pad_;  ///< [gamepad]: a game pad at the mast; none unconfigured
   DirectionTest direction_test_;  ///< the console's direction test of one axis, while one runs
   std::unique_ptr<ScheduleHooks> hooks_;        ///< [hooks]: the programs run at its events
   std::unique_ptr<ScheduleFollower> schedule_;  ///< [[schedule]]: the station working by itself

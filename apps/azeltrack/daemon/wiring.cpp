@@ -120,6 +120,9 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
     buttons_ = std::make_unique<HandButtons>(config_.gpio.buttons, *gpio_, commands_,
                                              [this] { return now_s(); });
   }
+  pad_ = make_hand_pad(
+      io_, config_.gamepad, commands_, [this] { return now_s(); },
+      [](const std::string& line) { spdlog::info("{}", line); });
   gps_ = std::make_unique<GpsReceiver>(
       io_, GpsReceiverParts{config_.gps, [this] { return now_s(); },
                             [this] { return modes_.mode() == control::Mode::Track; },

@@ -82,6 +82,24 @@ Result<bool> SysfsPwm::set_duty(double fraction) {
   return true;
 }
 
+Result<bool> SysfsPwm::set_rate(double frequency_hz, double fraction) {
+  if (!std::isfinite(frequency_hz) || frequency_hz < 1.0 || frequency_hz > 1e6) {
+    return fail("a step rate must be 1 Hz to 1 MHz");
+  }
+  const auto period_ns = static_cast<std::uint64_t>(std::llround(1e9 / frequency_hz));
+  if (period_ns != period_ns_) {
+    if (!duty_ns_ || *duty_ns_ > period_ns) {
+      if (auto r = set_duty(0.0); !r) return r;
+    }
+    if (auto r = write_sysfs(dir_ + "/period", std::to_string(period_ns)); !r) {
+      duty_ns_.reset();
+      return r;
+    }
+    period_ns_ = period_ns;
+  }
+  return set_duty(fraction);
+}
+
 Result<bool> SysfsPwm::disable() {
   duty_ns_.reset();
   if (auto r = write_sysfs(dir_ + "/duty_cycle", "0"); !r) return r;

@@ -40,6 +40,21 @@ TEST(HardwareConfig, MistakesNameTheKey) {
             std::string::npos);
   EXPECT_NE(error_of("[hardware.az]\ndrive = \"stepper\"\n").find("[hardware.az].drive must be"),
             std::string::npos);
+  // A stepper needs its STEP channel and DIR line, and a pull-in rate it can reach.
+  const std::string stepper = "[hardware.az]\ndrive = \"stepdir\"\n";
+  EXPECT_EQ(error_of(stepper + "step_channel = 2\ndir = 17\nenable = 27\n"), "");
+  EXPECT_NE(error_of(stepper + "dir = 17\n").find("[hardware.az].step_channel"), std::string::npos);
+  EXPECT_NE(error_of(stepper + "step_channel = 2\n").find("[hardware.az].dir"), std::string::npos);
+  EXPECT_NE(error_of(stepper + "step_channel = 2\ndir = 17\nmax_step_hz = 500\n"
+                               "start_step_hz = 800\n")
+                .find("[hardware.az].start_step_hz"),
+            std::string::npos);
+  EXPECT_NE(error_of(stepper + "step_channel = 99\ndir = 17\n").find("[hardware.az].step_channel"),
+            std::string::npos);
+  EXPECT_NE(error_of("[hardware.az]\ndrive = \"relay\"\nrelay_forward = 5\nrelay_reverse = 6\n"
+                     "enable = 27\n")
+                .find("\"stepdir\" (the driver's)"),
+            std::string::npos);
   EXPECT_NE(error_of("[gpio]\nestop = 5\n[hardware.az]\ndrive = \"relay\"\nrelay_forward = 5\n"
                      "relay_reverse = 6\n")
                 .find("same line as [gpio] estop"),

@@ -21,6 +21,11 @@ class SysfsPwm {
 
   /// 0..1 of the period; written only when it changes.
   Result<bool> set_duty(double fraction);
+  /// A new frequency (1 Hz to 1 MHz) with the duty at `fraction` of the new period: a step/dir
+  /// driver's STEP input, whose pulse rate is the step rate. The period is written only when it
+  /// changes, the duty zeroed first when it would not fit the new period (the kernel refuses a
+  /// duty longer than the period).
+  Result<bool> set_rate(double frequency_hz, double fraction);
   /// Duty zero, then disabled.
   Result<bool> disable();
 
