@@ -143,27 +143,11 @@ struct AstropyRun {
 
 AstropyRun run_astropy(const std::vector<StarCase>& cases) {
   AstropyRun run;
-  const std::string in_path = oracle::temp_path("azt_astropy_cases", "csv");
-  const std::string out_path = oracle::temp_path("azt_astropy_out", "csv");
-  if (!oracle::write_file(in_path, cases_csv(cases))) {
-    run.error = "cannot write " + in_path;
-    return run;
-  }
   const auto started = std::chrono::steady_clock::now();
-  const std::string cmd = "/usr/bin/python3 " + oracle::shell_quote(AZT_ASTROPY_ORACLE) + " " +
-                          oracle::shell_quote(in_path) + " " + oracle::shell_quote(out_path) +
-                          " 2>&1";
-  const auto log = oracle::run_command(cmd, &run.error);
+  const auto text =
+      oracle::run_csv_oracle(AZT_ASTROPY_ORACLE, "", cases_csv(cases), run.error, &run.log);
   run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const auto text = oracle::read_file(out_path);
-  std::remove(in_path.c_str());
-  std::remove(out_path.c_str());
-  if (!log) return run;
-  run.log = *log;
-  if (!text) {
-    run.error = "astropy oracle wrote no " + out_path;
-    return run;
-  }
+  if (!text) return run;
   const auto lines = oracle::split_lines(*text);
   for (std::size_t i = 1; i < lines.size(); ++i) {  // line 0 is the header
     const auto f = oracle::split_fields(lines[i], ',');

@@ -98,21 +98,9 @@ std::map<int, Reference> run_oracle(const std::vector<Case>& cases, std::string&
            fmt(c.b.lat_deg) + "," + fmt(c.b.lon_deg) + "," + fmt(c.b.height_m) + "," +
            fmt(c.freq_mhz) + "\n";
   }
-  const std::string in = oracle::temp_path("azt_eme_cases", "csv");
-  const std::string out = oracle::temp_path("azt_eme_out", "csv");
   std::map<int, Reference> refs;
-  if (!oracle::write_file(in, csv)) {
-    error = "cannot write " + in;
-    return refs;
-  }
-  const auto log =
-      oracle::run_command("/usr/bin/python3 " + oracle::shell_quote(AZT_EME_ORACLE) + " " +
-                              oracle::shell_quote(in) + " " + oracle::shell_quote(out) + " 2>&1",
-                          &error);
-  const auto text = oracle::read_file(out);
-  std::remove(in.c_str());
-  std::remove(out.c_str());
-  if (!log || !text) return refs;
+  const auto text = oracle::run_csv_oracle(AZT_EME_ORACLE, "", csv, error);
+  if (!text) return refs;
   const auto lines = oracle::split_lines(*text);
   for (std::size_t i = 1; i < lines.size(); ++i) {
     std::vector<double> v;

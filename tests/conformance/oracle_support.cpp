@@ -85,6 +85,28 @@ std::optional<std::string> read_file(const std::string& path) {
   return buffer.str();
 }
 
+std::optional<std::string> run_csv_oracle(const std::string& script, const std::string& args,
+                                          std::string_view cases, std::string& error,
+                                          std::string* log) {
+  const std::string in = temp_path("azt_oracle_cases", "csv");
+  const std::string out = temp_path("azt_oracle_out", "csv");
+  if (!write_file(in, cases)) {
+    error = "cannot write " + in;
+    return std::nullopt;
+  }
+  const auto printed =
+      run_command("/usr/bin/python3 " + shell_quote(script) + (args.empty() ? "" : " " + args) +
+                      " " + shell_quote(in) + " " + shell_quote(out) + " 2>&1",
+                  &error);
+  auto text = read_file(out);
+  std::remove(in.c_str());
+  std::remove(out.c_str());
+  if (printed && log != nullptr) *log = *printed;
+  if (!printed) return std::nullopt;
+  if (!text) error = script + " wrote no " + out + ": " + *printed;
+  return text;
+}
+
 namespace {
 
 std::string_view trim(std::string_view s) {

@@ -35,6 +35,14 @@ bool write_file(const std::string& path, std::string_view text);
 /// Reads a whole file; nullopt on any I/O error.
 std::optional<std::string> read_file(const std::string& path);
 
+/// Runs one of the Python oracles that read cases from a CSV file and write their answers to
+/// another (`python3 SCRIPT [ARGS] IN OUT`): `cases` go to a temp file, the answers' text (header
+/// first) comes back, both files are removed. nullopt when the oracle fails or writes nothing;
+/// `error` then says why. `log`, if given, receives what the oracle printed.
+std::optional<std::string> run_csv_oracle(const std::string& script, const std::string& args,
+                                          std::string_view cases, std::string& error,
+                                          std::string* log = nullptr);
+
 // ---- Parsing program output --------------------------------------------------------------------
 
 /// Splits on '\n', dropping a trailing '\r' on each line and empty lines.

@@ -54,20 +54,8 @@ class OracleDpol {
       csv += std::to_string(i) + "," + oracle::unix_to_iso8601(t) + "," + row(kOwn) + "," +
              row(kDx) + ",432\n";
     }
-    const std::string in = oracle::temp_path("azt_pol_cases", "csv");
-    const std::string out = oracle::temp_path("azt_pol_out", "csv");
-    if (!oracle::write_file(in, csv)) {
-      error = "cannot write " + in;
-      return false;
-    }
-    const auto log =
-        oracle::run_command("/usr/bin/python3 " + oracle::shell_quote(AZT_EME_ORACLE) + " " +
-                                oracle::shell_quote(in) + " " + oracle::shell_quote(out) + " 2>&1",
-                            &error);
-    const auto text = oracle::read_file(out);
-    std::remove(in.c_str());
-    std::remove(out.c_str());
-    if (!log || !text) return false;
+    const auto text = oracle::run_csv_oracle(AZT_EME_ORACLE, "", csv, error);
+    if (!text) return false;
     const auto lines = oracle::split_lines(*text);
     for (std::size_t i = 1; i < lines.size(); ++i) {
       const auto fields = oracle::split_fields(lines[i], ',');

@@ -67,23 +67,10 @@ std::string csv_number(double v) { return oracle::format_number(v, 17); }
 
 std::map<int, std::vector<double>> run_oracle(const std::string& mode, const std::string& cases,
                                               std::string& error, std::vector<std::string>* rows) {
-  const std::string in = oracle::temp_path("azt_sat_cases", "csv");
-  const std::string out = oracle::temp_path("azt_sat_out", "csv");
   std::map<int, std::vector<double>> result;
-  if (!oracle::write_file(in, cases)) {
-    error = "cannot write " + in;
-    return result;
-  }
-  const auto log = oracle::run_command(
-      "/usr/bin/python3 " + oracle::shell_quote(AZT_SKYFIELD_ORACLE) + " " + mode + " " +
-          oracle::shell_quote(in) + " " + oracle::shell_quote(out) + " 2>&1",
-      &error);
-  const auto text = oracle::read_file(out);
-  std::remove(in.c_str());
-  std::remove(out.c_str());
-  if (!log || !text) {
+  const auto text = oracle::run_csv_oracle(AZT_SKYFIELD_ORACLE, mode, cases, error);
+  if (!text) {
     if (error.empty()) error = "the skyfield oracle wrote nothing";
-    if (log) error += ": " + *log;
     return result;
   }
   const auto lines = oracle::split_lines(*text);
