@@ -163,8 +163,9 @@ check(answer.stdout.split() == ["1", "GPS", "0"],
 
 # 3: the daemon's view beside chronyc's.
 check(wait_until(lambda: time_state(base)["chrony_synced"], 15), f"3: chrony_synced: {time_state(base)}")
-# Right after selection the dispersion is seconds and falls fast: compare once chrony has settled.
-check(wait_until(lambda: time_state(base)["root_dispersion_s"] < 0.01, 30),
+# Right after selection the dispersion is seconds and falls fast: compare once chrony has settled
+# (a minute at most: on a loaded machine gpsfake's sentences come late and chrony takes longer).
+check(wait_until(lambda: time_state(base)["root_dispersion_s"] < 0.01, 60),
       f"3: settled: {time_state(base)['root_dispersion_s']}")
 t = time_state(base)
 rc, out, err = chronyc("-c", "-n", "tracking")

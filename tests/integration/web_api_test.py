@@ -70,7 +70,7 @@ check("password_hash" not in open(lan).read(), "nothing generated for a LAN bind
 log = open(os.path.join(TMP, "daemon.log"), "w")
 daemon = subprocess.Popen([BIN, "serve", "--config", CONFIG], stdout=log, stderr=log)
 try:
-    wait_for("the daemon", lambda: state()["antenna"]["known"])
+    wait_for("the daemon", lambda: state()["antenna"]["known"], 30.0)
 
     # Reading is open; the page and its files are served.
     for route in ["/", "/js/main.js", "/js/bands.js", "/app.css", "/css/sky.css", "/pages/radio.html",
