@@ -82,15 +82,18 @@ constexpr KeySpec pwm_channel(std::string_view key, std::string_view default_tom
           .help = help};
 }
 
-constexpr std::array<KeySpec, 7> kPwm{{
+constexpr std::array<KeySpec, 9> kPwm{{
     {.key = "chip",
      .type = KeyType::Text,
      .default_toml = "\"/sys/class/pwm/pwmchip0\"",
-     .help = "the sysfs PWM chip of both bridges"},
-    pwm_channel("az_rpwm", "0", "the azimuth bridge's RPWM channel; the four channels differ"),
+     .help = "the sysfs PWM chip of every bridge"},
+    pwm_channel("az_rpwm", "0", "the azimuth bridge's RPWM channel; the channels all differ"),
     pwm_channel("az_lpwm", "1", "the azimuth bridge's LPWM channel"),
     pwm_channel("el_rpwm", "2", "the elevation bridge's RPWM channel"),
     pwm_channel("el_lpwm", "3", "the elevation bridge's LPWM channel"),
+    pwm_channel("pol_rpwm", "4",
+                "the polarisation bridge's RPWM channel (`[hardware.pol]` drive = \"pwm\")"),
+    pwm_channel("pol_lpwm", "5", "the polarisation bridge's LPWM channel"),
     {.key = "frequency_hz",
      .type = KeyType::Number,
      .unit = "Hz",
@@ -231,7 +234,7 @@ constexpr std::array<KeySpec, 25> kHardwareAxis{{
 
 static_assert(control::MovingAverage::kCapacity == 64, "[hardware.*] average_samples' range");
 
-constexpr std::array<SectionSpec, 8> kSections{{
+constexpr std::array<SectionSpec, 9> kSections{{
     {.name = "antenna",
      .chapter = Chapter::Antenna,
      .keys = kAntenna,
@@ -269,6 +272,14 @@ constexpr std::array<SectionSpec, 8> kSections{{
      .keys = kHardwareAxis,
      .title = "The elevation axis's drive and sensor",
      .help = "As `[hardware.az]`, for the elevation axis."},
+    {.name = "hardware.pol",
+     .chapter = Chapter::Antenna,
+     .keys = kHardwareAxis,
+     .title = "The polarisation axis's drive and sensor",
+     .help = "As `[hardware.az]`, for the axis of `[mount.pol]` (needed with `backend = "
+             "\"hardware\"` and `[mount.pol]`; [eme.md](eme.md) \"Polarisation axis\"). The "
+             "EncoderHub reads azimuth and elevation only: the pol axis's sensor is a pot on an "
+             "`mcp3008` or `ads1115`; `drive = \"pwm\"` is the `[pwm]` pol_* channels."},
 }};
 
 }  // namespace

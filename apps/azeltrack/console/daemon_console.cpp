@@ -67,6 +67,10 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     act_schedule(action, body, source, std::move(done));
     return;
   }
+  if (action == "pol") {
+    act_pol(body, source, std::move(done));
+    return;
+  }
   if (action == "faults/clear") {
     p_.antenna.clear_faults();
     p_.log(source + ": latched faults cleared");
