@@ -173,6 +173,11 @@ HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chi
   h.az = read_axis(hw.child("az"), "az", gpio_chip);
   h.el = read_axis(hw.child("el"), "el", gpio_chip);
   if (const ConfigSection pol = hw.child("pol"); pol.present()) {
+    if (!pol.has("sensor")) {
+      pol.fail("sensor",
+               "is needed: a pot on an ADC (\"mcp3008\" or \"ads1115\"); the EncoderHub reads "
+               "azimuth and elevation only");
+    }
     h.pol = read_axis(pol, "pol", gpio_chip);
     // The hub's frames carry two angles (docs/encoder-hub.md): there is no third to read.
     if (read_by_hub(h.pol->sensor)) {

@@ -234,6 +234,26 @@ constexpr std::array<KeySpec, 25> kHardwareAxis{{
 
 static_assert(control::MovingAverage::kCapacity == 64, "[hardware.*] average_samples' range");
 
+/// The pol axis's sensor names: the ADCs only (the EncoderHub's frames carry two angles).
+constexpr std::array<std::string_view, 2> kPolSensorNames{"mcp3008", "ads1115"};
+
+/// [hardware.pol]: [hardware.az]'s keys, with a sensor that must be given and is never the hub.
+constexpr std::array<KeySpec, 25> pol_axis_keys() {
+  std::array<KeySpec, 25> keys = kHardwareAxis;
+  for (KeySpec& k : keys) {
+    if (k.key != "sensor") continue;
+    k.choices = kPolSensorNames;
+    k.default_toml = "";
+    k.default_note = "none: required";
+    k.help =
+        "a pot read by an ADC: `mcp3008` (spidev, 10 bits of 3.3 V) or `ads1115` (i2c-dev, "
+        "±4.096 V, 15 bits), with the `adc_*` keys and `pot_calibration`; the EncoderHub "
+        "reads azimuth and elevation only";
+  }
+  return keys;
+}
+constexpr std::array<KeySpec, 25> kHardwarePolAxis = pol_axis_keys();
+
 constexpr std::array<SectionSpec, 9> kSections{{
     {.name = "antenna",
      .chapter = Chapter::Antenna,
@@ -274,12 +294,11 @@ constexpr std::array<SectionSpec, 9> kSections{{
      .help = "As `[hardware.az]`, for the elevation axis."},
     {.name = "hardware.pol",
      .chapter = Chapter::Antenna,
-     .keys = kHardwareAxis,
+     .keys = kHardwarePolAxis,
      .title = "The polarisation axis's drive and sensor",
      .help = "As `[hardware.az]`, for the axis of `[mount.pol]` (needed with `backend = "
-             "\"hardware\"` and `[mount.pol]`; [eme.md](eme.md) \"Polarisation axis\"). The "
-             "EncoderHub reads azimuth and elevation only: the pol axis's sensor is a pot on an "
-             "`mcp3008` or `ads1115`; `drive = \"pwm\"` is the `[pwm]` pol_* channels."},
+             "\"hardware\"` and `[mount.pol]`; [eme.md](eme.md) \"Polarisation axis\"): the "
+             "sensor is a pot on an ADC, and `drive = \"pwm\"` is the `[pwm]` pol_* channels."},
 }};
 
 }  // namespace

@@ -173,8 +173,13 @@ TEST(PolHardware, AnAxisThatCannotBeDrivenIsRefusedNotIgnored) {
   const std::string station = testing::kHardwareStation;
   std::string hub = kPolAxis;
   hub.replace(hub.find("sensor = \"mcp3008\""), 18, "sensor = \"hub\"");
-  EXPECT_NE(refusal(station + hub).find("EncoderHub reads azimuth and elevation only"),
-            std::string::npos);
+  EXPECT_NE(refusal(station + hub).find("[hardware.pol].sensor must be"), std::string::npos)
+      << refusal(station + hub);
+  std::string none = kPolAxis;
+  none.erase(none.find("sensor = \"mcp3008\""), 18);
+  EXPECT_NE(refusal(station + none).find("EncoderHub reads azimuth and elevation only"),
+            std::string::npos)
+      << refusal(station + none);
   EXPECT_NE(refusal(station + "[mount.pol]\n").find("[hardware.pol]"), std::string::npos);
   std::string pwm = station;
   pwm.replace(pwm.find("backend = \"hardware\""), 20, "backend = \"pwm\"\n[hub]\ndevice = \"x\"");
