@@ -7,10 +7,18 @@ import { deg, parseNum } from './format.js';
 import { toast } from './toast.js';
 import { act } from './actions.js';
 
+let shownMode = null; // the mode the selector was last set to from the state
+
 export function renderPol(st) {
   const p = st.pol;
   $('pol-panel').hidden = !p;
   if (!p) return;
+  // The selector follows the station's mode when it changes (from here, a script or the file),
+  // and is left alone between, while the operator chooses.
+  if (p.mode !== shownMode) {
+    $('pol-mode-select').value = p.mode;
+    shownMode = p.mode;
+  }
   const target = p.feed_target_deg === null ? 'holds' : deg(p.feed_target_deg, 1);
   setText('pol-angle', `${deg(p.mount_deg, 1)} / ${target}${p.moving ? ' · moving' : ''}`);
   const angle = p.mode === 'manual' ? deg(p.manual_deg, 1) : p.mode === 'fixed' ? deg(p.fixed_deg, 1) : '';
