@@ -28,6 +28,11 @@ function writeConfig(port) {
   // The token's hash belongs in [web], which simConfig leaves open at the end.
   const tokenHash = crypto.createHash('sha256').update(TOKEN).digest('hex');
   fs.writeFileSync(config, `${simConfig('sun', port)}api_token_sha256 = "${tokenHash}"
+[mount.pol]
+max_rate_deg_s = 10.0
+[pol]
+mode = "fixed"
+fixed_deg = 20.0
 [time]
 chrony_socket = "${path.join(tmp, 'nonexistent.sock')}"
 poll_s = 1
@@ -153,6 +158,18 @@ async function main() {
       }, 15000, 200).catch(() => { throw new Error(`page and state differ: ${JSON.stringify(diff)}`); });
       if (await visible(page, '#echo-row')) throw new Error('the Echo line is shown with the Sun as the target');
       await checkScreen(page, 'main');
+    });
+
+    await scenario('the polarisation axis shows its angle as read and its mode', async () => {
+      let last = null;
+      await until('the pol line to show the state', async () => {
+        const s = await state();
+        const shown = await visible(page, '#pol-row') ? await text(page, '#pol-angle') : null;
+        last = { shown, pol: s.pol };
+        return shown !== null && s.pol !== null && shown.endsWith(' fixed') &&
+          Math.abs(num(shown) - s.pol.mount_deg) <= 0.06 && Math.abs(s.pol.mount_deg - 20) < 1;
+      }, 15000, 200).catch(() => { throw new Error(`pol line: ${JSON.stringify(last)}`); });
+      await checkScreen(page, 'main-pol');
     });
 
     await scenario('MOON asks for the password on the keyboard, then tracks the Moon and shows its echo', async () => {

@@ -10,6 +10,7 @@ import { drawSky } from './sky.js';
 import { markActiveTarget } from './targets.js';
 import { renderStation } from './station.js';
 import { renderCorrectionsAndPosition } from './position.js';
+import { renderPol } from './pol.js';
 
 // "AOS 12:34 UTC (18:04 local) · max 83° · 8 s beyond 10° from 12:40:05 · in 4 min 12 s", or the tracker's phase.
 function passLine(sat, utc) {
@@ -100,6 +101,7 @@ export function onState(st) {
   renderLog('command-list', 'commandsKey', Array.isArray(st.commands) ? st.commands : [], 6);
   renderMoon(m);
   renderStation(st);
+  renderPol(st);
   // trend
   const now = performance.now() / 1000;
   S.trend.push([now, e && isNum(e.az) ? e.az : null, e && isNum(e.el) ? e.el : null]);

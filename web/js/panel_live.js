@@ -74,6 +74,9 @@ export function renderPanel(st) {
   setText('ant-moving', !known ? 'position unknown' : a.moving ? 'moving' : 'still');
   const e = st.error_deg;
   setText('err-az', e ? sdeg(e.az) : '—');
+  // The polarisation axis, when the station has one: its angle as read and its mode.
+  $('pol-row').hidden = !st.pol;
+  if (st.pol) setText('pol-angle', `${deg(st.pol.mount_deg, 1)} ${st.pol.mode}`);
   setText('err-el', e ? sdeg(e.el) : '—');
   const faults = Array.isArray(st.faults) ? st.faults.map(String) : [];
   renderBar(st, faults);

@@ -12,6 +12,7 @@ import { loadSky } from './sky.js';
 import { radecHint, radecTarget, track } from './targets.js';
 import { clean, loadConfig, showOther } from './setup.js';
 import { wireStation } from './station.js';
+import { wirePol } from './pol.js';
 
 function confirmTwice(btn, label, fn) { // a second press within 4 s confirms
   if (btn.dataset.armed) { delete btn.dataset.armed; setText(btn, btn.dataset.label); fn(); return; }
@@ -25,6 +26,7 @@ export function wire() {
   $('target-pick').addEventListener('click', () => go('targets'));
   $('offset-btn').addEventListener('click', () => go('antenna'));
   wireStation(go);
+  wirePol();
 
   // login
   $('login-form').addEventListener('submit', login);

@@ -10,6 +10,7 @@
 
 #include "azt/control/corrections.hpp"
 #include "azt/control/modes.hpp"
+#include "azt/control/pol_axis.hpp"
 #include "azt/control/station_controller.hpp"
 #include "azt/proto/rotator_service.hpp"
 #include "azt/sim/plant_rig.hpp"
@@ -20,6 +21,16 @@ class io_context;
 }  // namespace boost::asio
 
 namespace azt::app {
+
+/// The polarisation axis as the station knows it (docs/eme.md, "Polarisation axis").
+struct PolStatus {
+  double mount_deg = 0.0;                  ///< the last accepted reading, feed degrees
+  std::optional<double> target_mount_deg;  ///< where it was last sent; nullopt while it holds
+  bool moving = false;
+  std::string fault;     ///< the supervisor's words when faulted, else empty
+  double min_deg = 0.0;  ///< the travel ([mount.pol])
+  double max_deg = 0.0;
+};
 
 class AntennaBackend {
  public:
@@ -44,6 +55,11 @@ class AntennaBackend {
   /// The encoder angles as read, before corrections; nullopt when there are no encoders of ours.
   [[nodiscard]] virtual std::optional<control::AzEl> encoder_reading() const = 0;
   [[nodiscard]] virtual std::string describe() const = 0;
+  /// The polarisation axis's wish for the next ticks (pol_axis.hpp; nullopt feed: it holds). A
+  /// backend without a pol axis ignores it.
+  virtual void set_pol_demand(const control::PolDemand& demand) { (void)demand; }
+  /// The polarisation axis; nullopt when the station has none (a Hamlib box never has one).
+  [[nodiscard]] virtual std::optional<PolStatus> pol_status() const { return std::nullopt; }
   /// The travel-end switches changed (an input edge, between ticks): a drive towards a tripped
   /// switch goes off now. A Hamlib rotator has its own limit switches, so the default ignores
   /// them.

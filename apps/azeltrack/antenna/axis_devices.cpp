@@ -28,7 +28,7 @@ std::shared_ptr<linux_os::Ads1115Chip> ads1115_chip(const HardwareAxisConfig& a,
     if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
     chip = std::make_shared<linux_os::Ads1115Chip>(std::move(bus).value(), a.adc_address);
   } else if (chip->has_channel(a.adc_channel)) {
-    throw UsageError(a.key("adc_channel") + ": the other axis reads channel " +
+    throw UsageError(a.key("adc_channel") + ": another axis reads channel " +
                      std::to_string(a.adc_channel) + " of this ADS1115 already");
   }
   chip->add_channel(a.adc_channel);
@@ -58,6 +58,12 @@ HardwarePorts HardwarePorts::linux_devices(linux_os::GpioProvider* gpio) {
 
 namespace {
 
+/// "azimuth", "elevation" or "polarisation", for messages.
+std::string axis_words(const std::string& name) {
+  if (name == "az") return "azimuth";
+  return name == "pol" ? "polarisation" : "elevation";
+}
+
 std::unique_ptr<ports::AxisDrive> open_relay_drive(const HardwareAxisConfig& a,
                                                    HardwarePorts& ports) {
   const bool pp = a.relay_power.has_value();
@@ -83,8 +89,7 @@ std::unique_ptr<ports::AxisDrive> open_pwm_drive(const HardwareAxisConfig& a, co
                                                  HardwarePorts& ports) {
   auto bridge = linux_os::PwmHBridge::open(pwm.of(a.name));
   if (!bridge) {
-    throw UsageError(std::string("[pwm] ") + (a.name == "az" ? "azimuth" : "elevation") + ": " +
-                     bridge.error().message);
+    throw UsageError("[pwm] " + axis_words(a.name) + ": " + bridge.error().message);
   }
   std::unique_ptr<linux_os::GpioOutput> enable;
   if (a.enable) {

@@ -1,6 +1,6 @@
 #pragma once
-// Opening one axis's devices for the `hardware` backend from [hardware.az|el]: what moves it (an
-// IBT-2 bridge on sysfs PWM, relays on GPIO lines, or an MCP41010 in a rotator box) and what
+// Opening one axis's devices for the `hardware` backend from [hardware.az|el|pol]: what moves it
+// (an IBT-2 bridge on sysfs PWM, relays on GPIO lines, or an MCP41010 in a rotator box) and what
 // reads it (a potentiometer on an MCP3008 or ADS1115; the EncoderHub reads both axes at once).
 // The devices themselves are platform/linux's, behind the core's ports; they are opened through
 // HardwarePorts, so tests put simulated buses behind them.

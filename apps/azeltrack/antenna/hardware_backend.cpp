@@ -1,8 +1,9 @@
 // The `hardware` backend (and `pwm`, its both-axes-on-IBT-2-and-EncoderHub form): the one station
-// backend over each axis's own drive and sensor (axis_devices.hpp). The mount's rates and
-// encoder resolutions are [mount.az] / [mount.el], the travel is [geometry]. The EncoderHub
-// reports its jumpers' bits in every frame: a frame whose bits are not the mount's is never
-// used, and latches a fault naming both (azt/linux/hub_sensors.hpp).
+// backend over each axis's own drive and sensor (axis_devices.hpp), and the polarisation axis's
+// when [hardware.pol] gives them (a pot on an ADC: the EncoderHub reads az and el only). The
+// mount's rates and encoder resolutions are [mount.az] / [mount.el], the travel is [geometry]. The
+// EncoderHub reports its jumpers' bits in every frame: a frame whose bits are not the mount's is
+// never used, and latches a fault naming both (azt/linux/hub_sensors.hpp).
 #include "antenna/antenna_backend.hpp"
 #include "antenna/axis_devices.hpp"
 #include "antenna/station_backend.hpp"
@@ -40,6 +41,7 @@ control::StationControlConfig control_config(const DaemonConfig& config) {
   c.az_drive = drive_config(config.hardware.az);
   c.el_drive = drive_config(config.hardware.el);
   c.az_absolute = !read_by_hub(config.hardware.az.sensor);
+  if (c.pol && config.hardware.pol) c.pol->drive = drive_config(*config.hardware.pol);
   return c;
 }
 
@@ -60,9 +62,24 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
   for (std::size_t i = 0; i < 2; ++i) {
     if (!read_by_hub(axes.at(i)->sensor)) p.sensors.at(i) = open_adc_sensor(*axes.at(i), devices);
   }
+  // The pol axis only with both its settings and its devices (the configuration refuses one
+  // without the other: config/pol_config.hpp).
+  const HardwareAxisConfig* pol = nullptr;
+  if (config.station.pol && config.hardware.pol) pol = &*config.hardware.pol;
+  if (pol != nullptr) p.pol_sensor = open_adc_sensor(*pol, devices);
   for (std::size_t i = 0; i < 2; ++i)
     p.drives.at(i) = open_axis_drive(*axes.at(i), config.pwm, devices);
+  if (pol != nullptr) p.pol_drive = open_axis_drive(*pol, config.pwm, devices);
   return p;
+}
+
+std::string describe_ports(const ports::StationPorts& p) {
+  std::string out = "az: " + p.drives[0]->describe() + ", " + p.sensors[0]->describe() +
+                    "; el: " + p.drives[1]->describe() + ", " + p.sensors[1]->describe();
+  if (p.pol_drive && p.pol_sensor) {
+    out += "; pol: " + p.pol_drive->describe() + ", " + p.pol_sensor->describe();
+  }
+  return out;
 }
 
 }  // namespace
@@ -71,8 +88,7 @@ std::unique_ptr<AntennaBackend> make_hardware_backend(boost::asio::io_context& i
                                                       const DaemonConfig& config,
                                                       HardwarePorts devices) {
   ports::StationPorts p = open_ports(io, config, devices);
-  const std::string describe = "az: " + p.drives[0]->describe() + ", " + p.sensors[0]->describe() +
-                               "; el: " + p.drives[1]->describe() + ", " + p.sensors[1]->describe();
+  const std::string describe = describe_ports(p);
   return make_station_backend(control_config(config), config.station.believed_start(),
                               config.station.corrections, std::move(p), describe);
 }

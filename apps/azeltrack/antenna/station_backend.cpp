@@ -30,7 +30,15 @@ class StationBackend final : public AntennaBackend {
         describe_(std::move(describe)) {}
 
   void tick(double now_s, const control::Demand& demand, const control::AzEl& rate) override {
-    station_.tick(now_s, demand, rate);
+    station_.tick(now_s, demand, rate, pol_demand_);
+  }
+  void set_pol_demand(const control::PolDemand& demand) override { pol_demand_ = demand; }
+  [[nodiscard]] std::optional<PolStatus> pol_status() const override {
+    const control::PolAxis* pol = station_.pol();
+    if (pol == nullptr) return std::nullopt;
+    const control::AxisStatus s = pol->axis().status();
+    return PolStatus{s.mount_deg, pol->target_mount_deg(), s.moving,
+                     s.reason,    pol->travel().min_deg,   pol->travel().max_deg};
   }
   void set_limits(double now_s, const control::LimitSwitches& limits) override {
     station_.set_limits(now_s, limits);
@@ -51,6 +59,7 @@ class StationBackend final : public AntennaBackend {
 
  private:
   control::PortedStation station_;
+  control::PolDemand pol_demand_;  ///< held until the daemon sets another: none holds the axis
   std::string describe_;
 };
 

@@ -8,6 +8,7 @@
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
 #include "config/hardware_config.hpp"
+#include "config/pol_config.hpp"
 #include "config/sim_config.hpp"
 #include "config/sky_config.hpp"
 #include "config/token_label.hpp"
@@ -210,10 +211,10 @@ GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
 
 PwmConfig read_pwm(const ConfigSection& s) {
   PwmConfig p;
-  unsigned* channels[] = {&p.az.rpwm_channel, &p.az.lpwm_channel, &p.el.rpwm_channel,
-                          &p.el.lpwm_channel};
-  const char* keys[] = {"az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm"};
-  for (std::size_t i = 0; i < 4; ++i) {
+  unsigned* channels[] = {&p.az.rpwm_channel, &p.az.lpwm_channel,  &p.el.rpwm_channel,
+                          &p.el.lpwm_channel, &p.pol.rpwm_channel, &p.pol.lpwm_channel};
+  const char* keys[] = {"az_rpwm", "az_lpwm", "el_rpwm", "el_lpwm", "pol_rpwm", "pol_lpwm"};
+  for (std::size_t i = 0; i < 6; ++i) {
     *channels[i] = static_cast<unsigned>(s.integer(keys[i]).value_or(*channels[i]));
     for (std::size_t j = 0; j < i; ++j) {
       if (*channels[j] == *channels[i])
@@ -222,7 +223,7 @@ PwmConfig read_pwm(const ConfigSection& s) {
   }
   const double frequency_hz = s.number("frequency_hz").value_or(p.az.frequency_hz);
   const double dead_time_s = s.number("dead_time_s").value_or(p.az.dead_time_s);
-  for (linux_os::PwmHBridgeConfig* bridge : {&p.az, &p.el}) {
+  for (linux_os::PwmHBridgeConfig* bridge : {&p.az, &p.el, &p.pol}) {
     bridge->chip_dir = s.text("chip").value_or(bridge->chip_dir);
     bridge->frequency_hz = frequency_hz;
     bridge->dead_time_s = dead_time_s;
@@ -260,7 +261,7 @@ std::array<control::ParkSlot, control::ModeController::kParkSlots> read_park(
 /// A relay line that is also a [gpio] line (or another relay) would be driven by two functions.
 void check_relay_lines(const DaemonConfig& c, const ConfigSection& antenna) {
   std::vector<const linux_os::GpioLineSpec*> seen = c.gpio.lines();
-  for (const HardwareAxisConfig* a : {&c.hardware.az, &c.hardware.el}) {
+  for (const HardwareAxisConfig* a : c.hardware.axes()) {
     for (const auto* l : a->gpio_lines()) {
       if (const auto* other = same_line(seen, *l)) {
         antenna.fail("backend", l->key + " is the same line as " + other->key);
@@ -278,7 +279,7 @@ void check_power_relay(const DaemonConfig& c, const ConfigSection& antenna) {
     antenna.fail("backend", "[hardware.power] relay on \"sim\" needs backend = \"sim\"");
   }
   std::vector<const linux_os::GpioLineSpec*> seen = c.gpio.lines();
-  for (const HardwareAxisConfig* a : {&c.hardware.az, &c.hardware.el}) {
+  for (const HardwareAxisConfig* a : c.hardware.axes()) {
     if (c.backend != BackendKind::Hardware) break;
     for (const auto* l : a->gpio_lines()) seen.push_back(l);
   }
@@ -410,11 +411,13 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.sim = sim.setup.plant;
   c.sim_hub = sim.hub;
   c.sim_receiver = sim.receiver;
+  c.pol = sim.pol;
   read_start_target(file, c);
   c.sequencer = read_sequencer(file.section("sequencer"));
   c.gpio = read_gpio(file.section("gpio"), c.sequencer.outputs.size());
   c.gamepad = read_gamepad(file);
   read_antenna(file, c);
+  check_pol_backend(file, c);
   read_servers(file, c);
   const ConfigSection sats = file.section("satellites");
   c.gps = gps_config_from(file);

@@ -63,13 +63,17 @@ struct NetServerConfig {
   unsigned short port = 0;  ///< 0: disabled
 };
 
-/// [pwm]: two IBT-2 H-bridges on one sysfs PWM chip (the `pwm` backend; docs/hardware.md), with
-/// the chip, frequency and dead time shared and two channels each.
+/// [pwm]: the IBT-2 H-bridges on one sysfs PWM chip (the `pwm` backend, and `hardware` axes with
+/// drive = "pwm"; docs/hardware.md), with the chip, frequency and dead time shared and two
+/// channels each; the pol axis's bridge is used only by a [hardware.pol] with drive = "pwm".
 struct PwmConfig {
   linux_os::PwmHBridgeConfig az;
   linux_os::PwmHBridgeConfig el{"/sys/class/pwm/pwmchip0", 2, 3, 1000.0, 0.1};
+  linux_os::PwmHBridgeConfig pol{"/sys/class/pwm/pwmchip0", 4, 5, 1000.0, 0.1};
+  /// The bridge of HardwareAxisConfig::name: "az", "el" or "pol" (nothing else is an axis).
   [[nodiscard]] const linux_os::PwmHBridgeConfig& of(const std::string& axis) const {
-    return axis == "az" ? az : el;
+    if (axis == "az") return az;
+    return axis == "pol" ? pol : el;
   }
 };
 
@@ -150,7 +154,8 @@ struct WebConfig {
 /// Everything `serve` reads (docs/configuration.md).
 struct DaemonConfig {
   SkyConfig sky;                      ///< where the station is and what it can point at
-  MountConfig mount;                  ///< [mount.az] / [mount.el]
+  MountConfig mount;                  ///< [mount.az] / [mount.el] / [mount.pol]
+  control::PolSettings pol;           ///< [pol]: what the polarisation axis follows
   control::StationSetup station;      ///< what the controller knows, for every backend
   sim::PlantSetup sim;                ///< [sim.*]: the simulated plants (the `sim` backend only)
   SimHubConfig sim_hub;               ///< [sim] hub: the plain model or the hub firmware
@@ -162,7 +167,7 @@ struct DaemonConfig {
   PwmConfig pwm;
   GpioConfig gpio;
   std::optional<GamepadConfig> gamepad;  ///< [gamepad]: a game pad at the mast
-  HardwareConfig hardware;               ///< [hardware.az] / [hardware.el] (`hardware` backend)
+  HardwareConfig hardware;  ///< [hardware.az] / [hardware.el] / [hardware.pol] (`hardware`)
   SatellitesConfig satellites;
   std::vector<ScheduleEntryConfig> schedule;  ///< [[schedule]], highest priority first
   HooksConfig hooks;                          ///< [hooks]: programs run at the schedule's events

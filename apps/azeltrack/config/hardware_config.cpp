@@ -191,6 +191,20 @@ HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chi
   HardwareConfig h;
   h.az = read_axis(hw.child("az"), "az", gpio_chip);
   h.el = read_axis(hw.child("el"), "el", gpio_chip);
+  if (const ConfigSection pol = hw.child("pol"); pol.present()) {
+    if (!pol.has("sensor")) {
+      pol.fail("sensor",
+               "is needed: a pot on an ADC (\"mcp3008\" or \"ads1115\"); the EncoderHub reads "
+               "azimuth and elevation only");
+    }
+    h.pol = read_axis(pol, "pol", gpio_chip);
+    // The hub's frames carry two angles (docs/encoder-hub.md): there is no third to read.
+    if (read_by_hub(h.pol->sensor)) {
+      pol.fail("sensor",
+               "is \"hub\", but the EncoderHub reads azimuth and elevation only: read the pol "
+               "axis with a pot on an ADC (sensor = \"mcp3008\" or \"ads1115\")");
+    }
+  }
   const ConfigSection power = hw.child("power");
   if (auto relay =
           read_gpio_line(power, "relay", gpio_chip, power.boolean("active_low").value_or(false))) {

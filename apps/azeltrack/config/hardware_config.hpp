@@ -1,6 +1,6 @@
 #pragma once
-// [hardware.az] / [hardware.el]: how each axis of the `hardware` backend is driven and read
-// (every drive and sensor of the seeds, chosen per axis; docs/hardware.md).
+// [hardware.az] / [hardware.el] / [hardware.pol]: how each axis of the `hardware` backend is
+// driven and read (every drive and sensor of the seeds, chosen per axis; docs/hardware.md).
 
 #include <cstdint>
 #include <optional>
@@ -49,7 +49,7 @@ inline constexpr ConfigChoices<AxisSensorKind, 3> kAxisSensorKinds{
      {"ads1115", AxisSensorKind::Ads1115}}};
 
 struct HardwareAxisConfig {
-  std::string name;  ///< "az" or "el"
+  std::string name;  ///< "az", "el" or "pol"
   AxisDriveKind drive = AxisDriveKind::Pwm;
   AxisSensorKind sensor = AxisSensorKind::Hub;
 
@@ -111,10 +111,22 @@ struct MotorPowerConfig {
 struct HardwareConfig {
   HardwareAxisConfig az = default_axis("az");
   HardwareAxisConfig el = default_axis("el");
+  /// [hardware.pol]: the polarisation axis of [mount.pol], if the file has the table. Never read
+  /// by the hub (the EncoderHub reads azimuth and elevation only: refused when read).
+  std::optional<HardwareAxisConfig> pol;
   [[nodiscard]] bool uses_hub() const { return read_by_hub(az.sensor) || read_by_hub(el.sensor); }
   std::optional<MotorPowerConfig> power;
+  /// az, el, and pol when there is one.
+  [[nodiscard]] std::vector<const HardwareAxisConfig*> axes() const {
+    std::vector<const HardwareAxisConfig*> out{&az, &el};
+    if (pol) out.push_back(&*pol);
+    return out;
+  }
   [[nodiscard]] bool uses_gpio() const {
-    return !az.gpio_lines().empty() || !el.gpio_lines().empty() || (power && !power->simulated());
+    for (const auto* a : axes()) {
+      if (!a->gpio_lines().empty()) return true;
+    }
+    return power && !power->simulated();
   }
 };
 

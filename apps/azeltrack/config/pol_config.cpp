@@ -1,6 +1,7 @@
 #include "config/pol_config.hpp"
 
 #include "config/config_file.hpp"
+#include "config/daemon_config.hpp"
 
 namespace azt::app {
 
@@ -18,6 +19,33 @@ control::PolSettings pol_settings_from(const ConfigFile& file) {
   p.dx_offset_deg = s.number("dx_offset_deg").value_or(p.dx_offset_deg);
   p.hold_while_keyed = s.boolean("hold_while_keyed").value_or(p.hold_while_keyed);
   return p;
+}
+
+/// [mount.pol] on a backend that cannot drive it is refused rather than ignored: the operator
+/// would otherwise believe the feed follows (docs/eme.md, "Polarisation axis").
+void check_pol_backend(const ConfigFile& file, const DaemonConfig& c) {
+  const ConfigSection antenna = file.section("antenna");
+  if (c.hardware.pol && !c.mount.pol) {
+    file.fail("[hardware.pol] drives the axis of [mount.pol], which the file does not have");
+  }
+  if (!c.mount.pol) return;
+  switch (c.backend) {
+    case BackendKind::Sim:
+      return;
+    case BackendKind::Hardware:
+      if (c.hardware.pol) return;
+      antenna.fail("backend",
+                   "is \"hardware\" with [mount.pol]: give the pol axis's drive and "
+                   "sensor in [hardware.pol]");
+    case BackendKind::Pwm:
+      antenna.fail("backend",
+                   "is \"pwm\" (azimuth and elevation only) with [mount.pol]: use "
+                   "backend = \"hardware\" with [hardware.pol]");
+    case BackendKind::Hamlib:
+      antenna.fail("backend",
+                   "is \"hamlib\", which has no polarisation axis, with [mount.pol]: "
+                   "remove [mount.pol] or use backend = \"hardware\"");
+  }
 }
 
 }  // namespace azt::app

@@ -8,8 +8,14 @@
 namespace azt::app {
 
 class ConfigFile;
+struct DaemonConfig;
 
 /// Throws UsageError naming the key on any invalid value.
 control::PolSettings pol_settings_from(const ConfigFile& file);
+
+/// [mount.pol] and [hardware.pol] against [antenna] backend: the `sim` backend simulates the
+/// axis, `hardware` needs [hardware.pol], `pwm` and `hamlib` cannot drive one (refused, not
+/// ignored). Throws UsageError naming the key.
+void check_pol_backend(const ConfigFile& file, const DaemonConfig& config);
 
 }  // namespace azt::app

@@ -82,15 +82,18 @@ constexpr KeySpec pwm_channel(std::string_view key, std::string_view default_tom
           .help = help};
 }
 
-constexpr std::array<KeySpec, 7> kPwm{{
+constexpr std::array<KeySpec, 9> kPwm{{
     {.key = "chip",
      .type = KeyType::Text,
      .default_toml = "\"/sys/class/pwm/pwmchip0\"",
-     .help = "the sysfs PWM chip of both bridges"},
-    pwm_channel("az_rpwm", "0", "the azimuth bridge's RPWM channel; the four channels differ"),
+     .help = "the sysfs PWM chip of every bridge"},
+    pwm_channel("az_rpwm", "0", "the azimuth bridge's RPWM channel; the channels all differ"),
     pwm_channel("az_lpwm", "1", "the azimuth bridge's LPWM channel"),
     pwm_channel("el_rpwm", "2", "the elevation bridge's RPWM channel"),
     pwm_channel("el_lpwm", "3", "the elevation bridge's LPWM channel"),
+    pwm_channel("pol_rpwm", "4",
+                "the polarisation bridge's RPWM channel (`[hardware.pol]` drive = \"pwm\")"),
+    pwm_channel("pol_lpwm", "5", "the polarisation bridge's LPWM channel"),
     {.key = "frequency_hz",
      .type = KeyType::Number,
      .unit = "Hz",
@@ -252,7 +255,27 @@ constexpr std::array<KeySpec, 31> kHardwareAxis{{
 
 static_assert(control::MovingAverage::kCapacity == 64, "[hardware.*] average_samples' range");
 
-constexpr std::array<SectionSpec, 8> kSections{{
+/// The pol axis's sensor names: the ADCs only (the EncoderHub's frames carry two angles).
+constexpr std::array<std::string_view, 2> kPolSensorNames{"mcp3008", "ads1115"};
+
+/// [hardware.pol]: [hardware.az]'s keys, with a sensor that must be given and is never the hub.
+constexpr std::array<KeySpec, 25> pol_axis_keys() {
+  std::array<KeySpec, 25> keys = kHardwareAxis;
+  for (KeySpec& k : keys) {
+    if (k.key != "sensor") continue;
+    k.choices = kPolSensorNames;
+    k.default_toml = "";
+    k.default_note = "none: required";
+    k.help =
+        "a pot read by an ADC: `mcp3008` (spidev, 10 bits of 3.3 V) or `ads1115` (i2c-dev, "
+        "±4.096 V, 15 bits), with the `adc_*` keys and `pot_calibration`; the EncoderHub "
+        "reads azimuth and elevation only";
+  }
+  return keys;
+}
+constexpr std::array<KeySpec, 25> kHardwarePolAxis = pol_axis_keys();
+
+constexpr std::array<SectionSpec, 9> kSections{{
     {.name = "antenna",
      .chapter = Chapter::Antenna,
      .keys = kAntenna,
@@ -290,6 +313,13 @@ constexpr std::array<SectionSpec, 8> kSections{{
      .keys = kHardwareAxis,
      .title = "The elevation axis's drive and sensor",
      .help = "As `[hardware.az]`, for the elevation axis."},
+    {.name = "hardware.pol",
+     .chapter = Chapter::Antenna,
+     .keys = kHardwarePolAxis,
+     .title = "The polarisation axis's drive and sensor",
+     .help = "As `[hardware.az]`, for the axis of `[mount.pol]` (needed with `backend = "
+             "\"hardware\"` and `[mount.pol]`; [eme.md](eme.md) \"Polarisation axis\"): the "
+             "sensor is a pot on an ADC, and `drive = \"pwm\"` is the `[pwm]` pol_* channels."},
 }};
 
 }  // namespace

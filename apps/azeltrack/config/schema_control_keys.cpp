@@ -252,30 +252,35 @@ constexpr std::array<KeySpec, 5> kPol{{
      .help = "what the feed follows ([eme.md](eme.md)): `off` (held), `fixed` (`fixed_deg`), "
              "`manual` (the operator's angle), `self` (our own echo), `dx` (Dpol to `[sky] "
              "dx_grid` + `dx_offset_deg`), `split` (as `dx` receiving; G3SEK's TX = 2·Dpol − RX "
-             "transmitting)"},
+             "transmitting)",
+     .applies = Applies::Live},
     {.key = "fixed_deg",
      .type = KeyType::Number,
      .unit = "°",
      .range = within(180.0),
      .default_toml = "0.0",
-     .help = "the feed angle of `fixed`, degrees from level"},
+     .help = "the feed angle of `fixed`, degrees from level",
+     .applies = Applies::Live},
     {.key = "self_offset_deg",
      .type = KeyType::Number,
      .unit = "°",
      .range = within(180.0),
      .default_toml = "0.0",
-     .help = "`self`: the Faraday correction peaked on our own echo"},
+     .help = "`self`: the Faraday correction peaked on our own echo",
+     .applies = Applies::Live},
     {.key = "dx_offset_deg",
      .type = KeyType::Number,
      .unit = "°",
      .range = within(180.0),
      .default_toml = "0.0",
-     .help = "`dx` and `split`: the correction peaked on the DX station's signal, added to Dpol"},
+     .help = "`dx` and `split`: the correction peaked on the DX station's signal, added to Dpol",
+     .applies = Applies::Live},
     {.key = "hold_while_keyed",
      .type = KeyType::Boolean,
      .default_toml = "false",
      .help = "give the feed no new angle while the transmitter is keyed (it holds), in every "
-             "mode"},
+             "mode",
+     .applies = Applies::Live},
 }};
 
 constexpr std::array<SectionSpec, 10> kSections{{

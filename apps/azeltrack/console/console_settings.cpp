@@ -330,6 +330,10 @@ void DaemonConsole::apply_live(LiveApply what) {
       p_.config.schedule = saved.schedule;
       if (p_.schedule != nullptr) p_.schedule->set_entries(p_.config.schedule);
       break;
+    case LiveApply::Pol:
+      p_.config.pol = saved.pol;
+      if (p_.pol != nullptr) p_.pol->set_settings(p_.config.pol);
+      break;
   }
   snapshot_.unix_s = -1.0;  // the views are computed again with what changed
 }

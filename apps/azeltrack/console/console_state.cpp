@@ -199,6 +199,7 @@ json DaemonConsole::state() {
           {"recording", p_.recorder ? p_.recorder->to_json() : json{{"state", "idle"}}},
           {"calibration", calibration_json()},
           {"faults", p_.antenna.faults()},
+          {"pol", pol_json()},
           {"events", p_.events != nullptr ? p_.events->to_json() : json::array()},
           {"commands", p_.motions != nullptr ? p_.motions->to_json() : json::array()},
           {"station_io", p_.station_io ? p_.station_io() : json(nullptr)},

@@ -55,16 +55,15 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     return;
   }
   if (action == "satellites/refresh") {
-    if (p_.elements == nullptr) throw ApiError(404, "", "no element feed here");
-    if (!p_.elements->refresh_now(p_.unix_s())) {
-      throw ApiError(409, "", "the sources are being fetched: try again when that is done");
-    }
-    p_.log(source + ": element sources fetched now");
-    done(ActResult{});
+    act_satellites_refresh(source, done);
     return;
   }
   if (action == "schedule" || action == "schedule/resume") {
     act_schedule(action, body, source, std::move(done));
+    return;
+  }
+  if (action == "pol") {
+    act_pol(body, source, std::move(done));
     return;
   }
   if (action == "faults/clear") {
@@ -93,6 +92,15 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     return;
   }
   throw ApiError(404, "", "no such action: " + action);
+}
+
+void DaemonConsole::act_satellites_refresh(const std::string& source, const ActDone& done) {
+  if (p_.elements == nullptr) throw ApiError(404, "", "no element feed here");
+  if (!p_.elements->refresh_now(p_.unix_s())) {
+    throw ApiError(409, "", "the sources are being fetched: try again when that is done");
+  }
+  p_.log(source + ": element sources fetched now");
+  done(ActResult{});
 }
 
 void DaemonConsole::act_direction_test(const json& body, const std::string& source, ActDone done) {

@@ -29,6 +29,7 @@
 #include "station/direction_test.hpp"
 #include "station/noise_runner.hpp"
 #include "station/pointing_scanner.hpp"
+#include "station/pol_follower.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
 #include "station/sky_follower.hpp"
@@ -97,6 +98,8 @@ struct ConsoleParts {
   CalibrationRunner* calibration = nullptr;
   /// The models saved as [pointing] (with `calibration`).
   PointingHistory* pointing_history = nullptr;
+  /// The polarisation axis's follower (null: no pol axis; `pol` null, POST /api/pol 404).
+  PolFollower* pol = nullptr;
 };
 
 class DaemonConsole final : public ConsoleModel {
@@ -172,6 +175,8 @@ class DaemonConsole final : public ConsoleModel {
   /// POST /api/recording and /api/recording/stop (recording_actions.cpp).
   nlohmann::json act_recording(const std::string& action, const nlohmann::json& body,
                                const std::string& source);
+  /// POST /api/satellites/refresh: every element source fetched now.
+  void act_satellites_refresh(const std::string& source, const ActDone& done);
   /// POST /api/hardware/direction-test {"axis"}: answered when the test ends (about 1.6 s).
   void act_direction_test(const nlohmann::json& body, const std::string& source, ActDone done);
   /// POST /api/schedule (the list replaced whole) and /api/schedule/resume (schedule_api.cpp).
@@ -192,6 +197,11 @@ class DaemonConsole final : public ConsoleModel {
   nlohmann::json apply_settings(const SettingsChange& change);
   /// Brings the running station to the saved configuration's settings of one kind.
   void apply_live(LiveApply what);
+  /// POST /api/pol {"mode", "angle_deg"} (pol_actions.cpp): through the front door's rules,
+  /// saved as [pol] (the manual angle is not saved), then followed.
+  void act_pol(const nlohmann::json& body, const std::string& source, ActDone done);
+  /// /api/state `pol`: null without a pol axis (pol_actions.cpp).
+  [[nodiscard]] nlohmann::json pol_json() const;
   /// POST time/servers {"servers": [...]}: chrony's upstream servers ([time] manage_chrony).
   void act_time_servers(const nlohmann::json& body, ActDone done);
 

@@ -155,6 +155,7 @@ std::optional<LiveApply> live_apply_of(std::string_view section, std::string_vie
   if (section == "corrections" || section == "pointing") return LiveApply::Corrections;
   if (section == "park") return LiveApply::Park;
   if (section == "schedule") return LiveApply::Schedule;
+  if (section == "pol") return LiveApply::Pol;  // the follower takes the modes at its next tick
   return std::nullopt;
 }
 

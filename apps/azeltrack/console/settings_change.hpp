@@ -21,7 +21,7 @@
 namespace azt::app {
 
 /// The console's ways of bringing a saved setting into the running station.
-enum class LiveApply { Station, Band, DxGrid, Corrections, Park, Schedule };
+enum class LiveApply { Station, Band, DxGrid, Corrections, Park, Schedule, Pol };
 
 /// How the running station takes `section`'s `key` once saved; nullopt: at the next start. The
 /// keys the schema marks live are exactly those that have one.

@@ -102,6 +102,7 @@ void StationDaemon::tick() {
   elements_->tick(unix_now_s());
   satellites_.refresh_passes(unix_now_s());
   schedule_->tick();
+  pol_tick();
   if (commands_.tracking_satellite()) {
     control::AzEl rate;
     const control::Demand demand = satellites_.demand(unix_now_s(), mount_az(), rate);

@@ -41,6 +41,7 @@
 #include "station/network_watch.hpp"
 #include "station/noise_runner.hpp"
 #include "station/pointing_scanner.hpp"
+#include "station/pol_follower.hpp"
 #include "station/power_receiver.hpp"
 #include "station/recent_events.hpp"
 #include "station/satellite_tracker.hpp"
@@ -118,6 +119,11 @@ class StationDaemon {
   /// An accepted motion command: in the journal (at most 10 lines a minute per source, the rest
   /// counted) and in the console's recent commands, one line per source and kind of command.
   void motion_event(const CommandSource& source, const CommandRecord& record);
+  // pol_parts.cpp: the polarisation axis's follower.
+  /// None when the antenna has no pol axis.
+  std::unique_ptr<PolFollower> make_pol_follower();
+  /// Before the antenna's tick: the pol axis's demand for it.
+  void pol_tick();
   // control_loop.cpp: the tick, the signals, the ways out.
   void arm_tick();
   void tick();
@@ -204,6 +210,8 @@ class StationDaemon {
   std::unique_ptr<CalibrationRunner> calibration_;  ///< the calibration session, while one runs
   std::unique_ptr<StationRadio> radio_;             ///< [radio] and [wsjtx]: the rig and WSJT-X
   std::unique_ptr<MotorPower> power_;               ///< [hardware.power]; none when not set
+  std::unique_ptr<PolFollower> pol_;  ///< [mount.pol]'s follower; none without a pol axis
+  std::string pol_dx_grid_;           ///< the DX grid its Dpol nodes are for
   StationCommands commands_;
   std::unique_ptr<HandButtons>
       buttons_;                   ///< [gpio] button_*: the buttons at the mast; none unwired

@@ -146,6 +146,7 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
   recorder_ = make_recorder();
   calibration_ = make_calibration_runner();
   radio_ = make_radio();
+  pol_ = make_pol_follower();
   schedule_ = make_schedule();
 }
 
@@ -460,7 +461,8 @@ void StationDaemon::open_console() {
                    beside_config(kRecordingsDir),
                    beside_config(kNoiseLogFile),
                    calibration_.get(),
-                   &pointing_history_},
+                   &pointing_history_,
+                   pol_.get()},
       [](const std::string& line) { spdlog::warn("{}", line); },
       SoftwareUpdates::Config{std::string(program_version()), std::string(package_architecture()),
                               options_.update_inbox, options_.update_status});

@@ -104,8 +104,11 @@ void GuardedAntenna::tick(double now_s, const control::Demand& demand, const con
   }
   // Held: no position and no jog, so the backend lets any move finish its soft stop (a latched
   // E-stop has already stopped the drives hard).
+  inner_->set_pol_demand(latched_ ? control::PolDemand{} : pol_demand_);
   inner_->tick(now_s, hold ? control::Demand{} : demand, hold ? control::AzEl{} : rate);
 }
+
+void GuardedAntenna::set_pol_demand(const control::PolDemand& demand) { pol_demand_ = demand; }
 
 std::optional<proto::PositionReport> GuardedAntenna::position(double now_s) const {
   auto p = inner_->position(now_s);

@@ -52,6 +52,13 @@ class GuardedAntenna final : public AntennaBackend {
   [[nodiscard]] std::optional<control::AzEl> encoder_reading() const override;
   [[nodiscard]] std::string describe() const override;
   void set_limits(double now_s, const control::LimitSwitches& limits) override;
+  /// The pol axis holds while the E-stop is latched. The sequencer's and WSJT-X's motion hold
+  /// are for azimuth and elevation: the pol axis follows its own rule while keyed ([pol]
+  /// hold_while_keyed; a split turns it on the PTT by design).
+  void set_pol_demand(const control::PolDemand& demand) override;
+  [[nodiscard]] std::optional<PolStatus> pol_status() const override {
+    return inner_->pol_status();
+  }
 
   /// Another program's transmit hold (WSJT-X transmitting, docs/radio.md): held as the
   /// sequencer's motion hold is.
@@ -80,6 +87,7 @@ class GuardedAntenna final : public AntennaBackend {
   std::unique_ptr<linux_os::GpioInput> el_up_;
   control::LimitSwitches limits_;
   std::function<bool()> other_hold_;
+  control::PolDemand pol_demand_;  ///< the pol axis's wish, handed on at each tick unless latched
   bool latched_ = false;
   std::string latch_reason_;
   std::optional<double> held_since_s_;

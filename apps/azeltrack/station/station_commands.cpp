@@ -244,6 +244,12 @@ CommandOutcome StationCommands::allow_pc(const CommandSource& source) {
   return accept(source, {"allow PC control (nothing moves until a program sends a position)", ""});
 }
 
+std::optional<Refusal> StationCommands::check_pol(const CommandSource& source) {
+  auto not_now = check_now(source);
+  if (not_now) report_refusal(source, *not_now);
+  return not_now;
+}
+
 ControlHolder StationCommands::control() const {
   std::string holder;
   switch (commander_kind_) {

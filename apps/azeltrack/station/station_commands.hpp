@@ -98,6 +98,12 @@ class StationCommands {
   /// position; lifts the console STOP's lock-out. Moves nothing.
   CommandOutcome allow_pc(const CommandSource& source);
   [[nodiscard]] ControlHolder control() const;
+  /// A polarisation command (the console's POST /api/pol) meets the same rules as a motion
+  /// command: refused (and reported) while a fault is latched, the E-stop among them, or, from
+  /// a program, while programs are locked out. It does not change the az/el mode, who holds the
+  /// antenna, or the schedule (the record of motion commands is for az/el). nullopt: it may go
+  /// ahead.
+  std::optional<Refusal> check_pol(const CommandSource& source);
   /// Any traffic from a program: the keep-alive of its continuous move.
   void heard_from(const CommandSource& source);
   /// A refusal decided before the front door (a session's malformed line): reported the same way.

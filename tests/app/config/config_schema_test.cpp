@@ -59,6 +59,12 @@ std::string context_of(const SectionSpec& s, std::string_view key) {
     needed = {{"name", "\"Probe\""},
               {"file", "\"" + kDataDir + "/horizons/moon_vectors_csv_kms.txt\""}};
   }
+  // The pol axis's sensor is a pot that must be given (the EncoderHub reads az and el only).
+  if (s.name == "hardware.pol" && key != "sensor") {
+    needed = {{"sensor", "\"mcp3008\""},
+              {"adc_device", "\"/dev/spidev0.0\""},
+              {"pot_calibration", "[100.0, -90.0, 900.0, 90.0]"}};
+  }
   std::string out;
   for (const auto& [k, v] : needed) {
     if (k != key) out += std::string(k) + " = " + v + "\n";
@@ -70,7 +76,9 @@ std::string context_of(const SectionSpec& s, std::string_view key) {
 std::string table_with(const SectionSpec& s, std::string_view key, const std::string& value_toml) {
   const std::string head =
       s.array_of_tables ? "[[" + std::string(s.name) + "]]\n" : "[" + std::string(s.name) + "]\n";
-  return head + context_of(s, key) + std::string(key) + " = " + value_toml + "\n";
+  // [hardware.pol] drives the axis [mount.pol] describes: without it the file is refused.
+  const std::string before = s.name == "hardware.pol" ? "[mount.pol]\n" : "";
+  return before + head + context_of(s, key) + std::string(key) + " = " + value_toml + "\n";
 }
 
 /// The choices that need another table to be usable: the backend's device, the receiver's input,

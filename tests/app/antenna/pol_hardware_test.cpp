@@ -1,0 +1,207 @@
+// The `hardware` backend's polarisation axis ([hardware.pol], docs/hardware.md): relays on GPIO
+// and a pot on an MCP3008, opened beside the azimuth and elevation devices of the hardware
+// station, on simulated buses. The pol plant follows its relays; azimuth and elevation stand
+// still (their demand holds). Time is virtual. And the configurations that cannot drive a pol
+// axis, refused with the reason.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <span>
+#include <string>
+
+#include "antenna/antenna_backend.hpp"
+#include "antenna/axis_devices.hpp"
+#include "azt/sim/axis_plant.hpp"
+#include "common/usage_error.hpp"
+#include "config/config_file.hpp"
+#include "config/daemon_config.hpp"
+#include "support/fake_gpio.hpp"
+#include "support/hardware_station.hpp"
+
+namespace azt::app {
+namespace {
+
+constexpr const char* kPolAxis = R"(
+[mount.pol]
+max_rate_deg_s = 2.0
+min_deg = -95.0
+max_deg = 95.0
+[sim.pol]
+start_deg = -20.0
+[hardware.pol]
+drive = "relay"
+relay_forward = 7
+relay_reverse = 8
+window_deg = 0.5
+lsb_deg = 0.2
+sensor = "mcp3008"
+adc_device = "/dev/spidev0.2"
+pot_calibration = [0, -95.0, 1023, 95.0]
+)";
+
+/// An MCP3008 answering `code` on every channel; an MCP41010's frames set `wiper`.
+class CodeSpi final : public linux_os::SpiBus {
+ public:
+  explicit CodeSpi(std::function<int()> code, std::function<void(int)> wiper = {})
+      : code_(std::move(code)), wiper_(std::move(wiper)) {}
+  Result<bool> transfer(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) override {
+    if (tx.size() == 2 && wiper_) wiper_(tx[1]);
+    if (tx.size() == 3 && rx.size() == 3) {
+      const auto c = static_cast<unsigned>(std::clamp(code_(), 0, 1023));
+      rx[0] = 0;
+      rx[1] = static_cast<std::uint8_t>((c >> 8) & 0x3U);
+      rx[2] = static_cast<std::uint8_t>(c & 0xFFU);
+    }
+    return true;
+  }
+
+ private:
+  std::function<int()> code_;
+  std::function<void(int)> wiper_;
+};
+
+/// The rotator box of the elevation, ideal: the ADS1115 reads the angle of the wiper last sent.
+class CodeI2c final : public linux_os::I2cBus {
+ public:
+  explicit CodeI2c(const double* el_deg) : el_deg_(el_deg) {}
+  Result<bool> write(std::uint8_t /*addr*/, std::span<const std::uint8_t> bytes) override {
+    if (!bytes.empty()) pointer_ = bytes[0];
+    return true;
+  }
+  Result<bool> read(std::uint8_t /*addr*/, std::span<std::uint8_t> bytes) override {
+    const int v =
+        pointer_ == 0x01 ? 0x8000 : static_cast<int>(std::lround(*el_deg_ / 90.0 * 26000.0));
+    bytes[0] = static_cast<std::uint8_t>((v >> 8) & 0xFF);
+    bytes[1] = static_cast<std::uint8_t>(v & 0xFF);
+    return true;
+  }
+
+ private:
+  const double* el_deg_;
+  std::uint8_t pointer_ = 0;
+};
+
+struct PolRig {
+  explicit PolRig(const std::string& extra = kPolAxis)
+      : config(daemon_config_from(
+            ConfigFile::parse(std::string(testing::kHardwareStation) + extra, "hw.toml"))),
+        pol(*config.sim.pol) {
+    ports.gpio = &gpio;
+    ports.open_spi = [this](const std::string& path,
+                            std::uint32_t) -> Result<std::unique_ptr<linux_os::SpiBus>> {
+      if (path == "/dev/spidev0.2") {
+        return std::unique_ptr<linux_os::SpiBus>(std::make_unique<CodeSpi>([this] {
+          return static_cast<int>(std::lround((pol.shaft_deg() + 95.0) / 190.0 * 1023.0));
+        }));
+      }
+      // The azimuth pot at 100° (0–450° on 1023 counts); the elevation box's wiper is written.
+      return std::unique_ptr<linux_os::SpiBus>(std::make_unique<CodeSpi>(
+          [] { return 227; }, [this](int wiper) { el_deg = wiper / 255.0 * 180.0; }));
+    };
+    ports.open_i2c = [this](const std::string&) -> Result<std::unique_ptr<linux_os::I2cBus>> {
+      return std::unique_ptr<linux_os::I2cBus>(std::make_unique<CodeI2c>(&el_deg));
+    };
+  }
+
+  [[nodiscard]] bool relay(const char* key) const {
+    const auto it = gpio.outputs.find(key);
+    return it != gpio.outputs.end() && it->second;
+  }
+  void run(AntennaBackend& a, const control::PolDemand& demand, double seconds) {
+    for (const double end = t + seconds; t < end; t += 0.05) {
+      const bool fwd = relay("[hardware.pol] relay_forward");
+      const bool rev = relay("[hardware.pol] relay_reverse");
+      pol.step(fwd ? 1.0 : rev ? -1.0 : 0.0, 0.05);
+      a.set_pol_demand(demand);
+      a.tick(t, control::Demand{}, control::AzEl{});
+    }
+  }
+
+  boost::asio::io_context io;
+  DaemonConfig config;
+  testing::FakeGpio gpio{io};
+  HardwarePorts ports;
+  sim::AxisPlant pol;
+  double el_deg = 10.0;
+  double t = 0.0;
+};
+
+TEST(PolHardware, RelaysAndAPotTurnTheFeedToItsTarget) {
+  PolRig rig;
+  auto backend = make_hardware_backend(rig.io, rig.config, rig.ports);
+  EXPECT_NE(backend->describe().find("pol: relays"), std::string::npos) << backend->describe();
+  ASSERT_TRUE(backend->pol_status().has_value());
+  rig.run(*backend, control::PolDemand{30.0, 0.0}, 40.0);
+  EXPECT_NEAR(rig.pol.shaft_deg(), 30.0, 0.5 + 0.2 + 0.1);  // window + pot step + a tick's run
+  const auto status = backend->pol_status();
+  EXPECT_NEAR(status->mount_deg, 30.0, 1.0);
+  ASSERT_TRUE(status->target_mount_deg.has_value());
+  EXPECT_NEAR(*status->target_mount_deg, 30.0, 1e-9);
+  EXPECT_FALSE(status->moving);
+  EXPECT_DOUBLE_EQ(status->min_deg, -95.0);
+  EXPECT_TRUE(backend->faults().empty()) << backend->faults().front();
+  // −80° and +100° are the same linear polarisation; +100° is beyond the travel.
+  rig.run(*backend, control::PolDemand{-80.0, 0.0}, 70.0);
+  EXPECT_NEAR(rig.pol.shaft_deg(), -80.0, 0.9);
+  // Held (no feed angle): the relays open and stay open.
+  rig.run(*backend, control::PolDemand{}, 1.0);
+  EXPECT_FALSE(rig.relay("[hardware.pol] relay_forward"));
+  EXPECT_FALSE(rig.relay("[hardware.pol] relay_reverse"));
+}
+
+TEST(PolHardware, StopNowStopsThePolAxisWithTheOthers) {
+  PolRig rig;
+  auto backend = make_hardware_backend(rig.io, rig.config, rig.ports);
+  rig.run(*backend, control::PolDemand{60.0, 0.0}, 2.0);
+  ASSERT_TRUE(rig.relay("[hardware.pol] relay_forward"));
+  backend->stop_now(rig.t);
+  EXPECT_FALSE(rig.relay("[hardware.pol] relay_forward"));
+  rig.run(*backend, control::PolDemand{60.0, 0.0}, 1.0);
+  EXPECT_FALSE(rig.relay("[hardware.pol] relay_forward")) << "moved while latched";
+}
+
+std::string refusal(const std::string& text) {
+  try {
+    (void)daemon_config_from(ConfigFile::parse(text, "pol.toml"));
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PolHardware, AnAxisThatCannotBeDrivenIsRefusedNotIgnored) {
+  const std::string station = testing::kHardwareStation;
+  std::string hub = kPolAxis;
+  hub.replace(hub.find("sensor = \"mcp3008\""), 18, "sensor = \"hub\"");
+  EXPECT_NE(refusal(station + hub).find("[hardware.pol].sensor must be"), std::string::npos)
+      << refusal(station + hub);
+  std::string none = kPolAxis;
+  none.erase(none.find("sensor = \"mcp3008\""), 18);
+  EXPECT_NE(refusal(station + none).find("EncoderHub reads azimuth and elevation only"),
+            std::string::npos)
+      << refusal(station + none);
+  EXPECT_NE(refusal(station + "[mount.pol]\n").find("[hardware.pol]"), std::string::npos);
+  std::string pwm = station;
+  pwm.replace(pwm.find("backend = \"hardware\""), 20, "backend = \"pwm\"\n[hub]\ndevice = \"x\"");
+  EXPECT_NE(refusal(pwm + "[mount.pol]\n").find("azimuth and elevation only"), std::string::npos);
+  const std::string hamlib =
+      "[station]\ngrid = \"FN06HE\"\n[target]\nname = \"stop\"\n[antenna]\nbackend = "
+      "\"hamlib\"\n[hamlib]\nmodel = 1\n[mount.pol]\n";
+  EXPECT_NE(refusal(hamlib).find("no polarisation axis"), std::string::npos) << refusal(hamlib);
+  std::string no_mount = kPolAxis;
+  no_mount.erase(0, no_mount.find("[hardware.pol]"));
+  EXPECT_NE(refusal(station + no_mount).find("which the file does not have"), std::string::npos);
+}
+
+TEST(PolHardware, ThePwmBridgeOfThePolAxisHasChannelsOfItsOwn) {
+  const std::string head = "[station]\ngrid = \"FN06HE\"\n[target]\nname = \"stop\"\n";
+  const DaemonConfig c = daemon_config_from(
+      ConfigFile::parse(head + "[pwm]\npol_rpwm = 6\npol_lpwm = 7\n", "pwm.toml"));
+  EXPECT_EQ(c.pwm.of("pol").rpwm_channel, 6U);
+  EXPECT_EQ(c.pwm.of("pol").lpwm_channel, 7U);
+  EXPECT_EQ(c.pwm.of("el").rpwm_channel, 2U);
+  EXPECT_NE(refusal(head + "[pwm]\npol_rpwm = 1\n").find("az_lpwm"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace azt::app
