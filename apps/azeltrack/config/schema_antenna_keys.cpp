@@ -259,8 +259,8 @@ static_assert(control::MovingAverage::kCapacity == 64, "[hardware.*] average_sam
 constexpr std::array<std::string_view, 2> kPolSensorNames{"mcp3008", "ads1115"};
 
 /// [hardware.pol]: [hardware.az]'s keys, with a sensor that must be given and is never the hub.
-constexpr std::array<KeySpec, 25> pol_axis_keys() {
-  std::array<KeySpec, 25> keys = kHardwareAxis;
+constexpr std::array<KeySpec, kHardwareAxis.size()> pol_axis_keys() {
+  std::array<KeySpec, kHardwareAxis.size()> keys = kHardwareAxis;
   for (KeySpec& k : keys) {
     if (k.key != "sensor") continue;
     k.choices = kPolSensorNames;
@@ -273,7 +273,7 @@ constexpr std::array<KeySpec, 25> pol_axis_keys() {
   }
   return keys;
 }
-constexpr std::array<KeySpec, 25> kHardwarePolAxis = pol_axis_keys();
+constexpr std::array<KeySpec, kHardwareAxis.size()> kHardwarePolAxis = pol_axis_keys();
 
 constexpr std::array<SectionSpec, 9> kSections{{
     {.name = "antenna",
