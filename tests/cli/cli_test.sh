@@ -99,6 +99,14 @@ json_check "simulate moon: no pol figures without [mount.pol]" \
 json_check "simulate moon with a pol axis: split within 1 deg after settling" \
   "j['pol']['mode'] == 'split' and j['pol_max_error_deg'] < 1.0 and 0 < j['pol_rms_error_deg'] < 0.5 and j['pol']['settle_s'] == 23.0 and j['pol']['counted_s'] > 600 and j['faults'] == []" \
   simulate --config "$root/examples/pol.toml" --scenario moon --from 2025-03-14T00:00:00Z --hours 0.5 --ptt-period-s 60 --json
+# A fixed-elevation array (docs/eme.md): azimuth within window + 2 LSB, the elevation not tracked.
+json_check "simulate moon on a fixed-elevation array: azimuth within window + 2 LSB" \
+  "j['el'] == {'fixed_deg': 12.0} and j['az']['max_error_deg'] <= 0.5 + 2 * 360 / 4096 and j['motor_starts_per_hour']['el'] == 0 and j['acquired_s'] is not None and j['faults'] == []" \
+  simulate --config "$root/examples/fixed_el.toml" --scenario moon --from 2025-03-14T00:00:00Z --hours 0.5 --json
+json_check "moon-windows in a fixed array's beam" \
+  "j['el_band_deg'] == [2.0, 22.0] and len(j['windows']) > 0 and all(2.0 <= w['el_deg'] <= 22.0 for w in j['windows'])" \
+  moon-windows --grid FN06HE --dx-grid JO22 --from 2025-03-01T00:00:00Z --days 3 --fixed-el 12 --beam-width 20 --ephemeris erfa --json
+expect_usage_error "moon-windows bad beam width" moon-windows --grid FN06HE --dx-grid JO22 --fixed-el 12 --beam-width 0
 expect_usage_error "simulate bad PTT period" simulate --config "$root/examples/pol.toml" --scenario moon --ptt-period-s -1
 expect_usage_error "simulate bad scenario" "${sim[@]}" --scenario mars
 expect_usage_error "simulate slew without target" "${sim[@]}" --scenario slew

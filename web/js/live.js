@@ -61,12 +61,18 @@ export function onState(st) {
   // B: corrections; C: antenna
   const known = renderCorrectionsAndPosition(st);
   const a = st.antenna || {};
+  // A fixed-elevation array: the elevation is not pointed, the target is in its beam or not.
+  const fixedEl = isNum(a.el_fixed_deg);
+  const inBeam = fixedEl && typeof t.in_beam === 'boolean' && !wait;
+  $('beam-row').hidden = !inBeam;
+  if (inBeam) setText('beam-line', `${t.in_beam ? 'in' : 'outside'} the beam at ${deg(a.el_fixed_deg)} elevation`);
   const e = st.error_deg;
   setText('err-az', e ? sdeg(e.az) : '—');
-  setText('err-el', e ? sdeg(e.el) : '—');
+  setText('err-el', fixedEl ? 'fixed' : e ? sdeg(e.el) : '—');
   const pe = $('pointing-error');
   if (e && isNum(e.az) && isNum(e.el)) {
-    const tot = Math.hypot(e.az * Math.cos(((isNum(a.el_deg) ? a.el_deg : 0) * Math.PI) / 180), e.el);
+    const elErr = fixedEl ? 0 : e.el;
+    const tot = Math.hypot(e.az * Math.cos(((isNum(a.el_deg) ? a.el_deg : 0) * Math.PI) / 180), elErr);
     setText(pe, deg(tot));
     const win = S.config && S.config.control ? S.config.control.window_deg : 0.1;
     pe.className = `perr ${tot <= Math.max(win, 0.02) + 0.01 ? 'good' : tot > 3 ? 'far' : ''}`;

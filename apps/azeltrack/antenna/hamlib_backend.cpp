@@ -37,7 +37,9 @@ std::unique_ptr<AntennaBackend> make_hamlib_backend(const DaemonConfig& config) 
       (config.hamlib.device.empty() ? std::string() : " on " + config.hamlib.device);
   return make_station_backend(
       control_config(config), config.station.believed_start(), config.station.corrections,
-      linux_os::make_hamlib_rotator_ports(std::move(rotator).value(), describe), describe);
+      linux_os::make_hamlib_rotator_ports(std::move(rotator).value(), describe,
+                                          config.station.el_fixed_deg),
+      describe);
 }
 
 }  // namespace azt::app

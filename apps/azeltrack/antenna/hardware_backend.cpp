@@ -50,16 +50,19 @@ control::StationControlConfig control_config(const DaemonConfig& config) {
 ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& config,
                                HardwarePorts& devices) {
   const std::array<const HardwareAxisConfig*, 2> axes{&config.hardware.az, &config.hardware.el};
+  // A fixed elevation has no drive or sensor: the station is azimuth's alone.
+  const std::size_t driven = config.hardware.el_axis ? 2 : 1;
   ports::StationPorts p;
   if (config.hardware.uses_hub()) {
-    linux_os::HubSensorsConfig hub{config.hub,
-                                   {config.mount.az.encoder_bits, config.mount.el.encoder_bits},
-                                   {read_by_hub(axes[0]->sensor), read_by_hub(axes[1]->sensor)}};
+    linux_os::HubSensorsConfig hub{
+        config.hub,
+        {config.mount.az.encoder_bits, config.mount.el.encoder_bits},
+        {read_by_hub(axes[0]->sensor), driven == 2 && read_by_hub(axes[1]->sensor)}};
     auto sensors = linux_os::open_hub_sensors(io, hub);
     if (!sensors) throw UsageError("[hub] device: " + sensors.error().message);
     p.sensors = std::move(sensors).value();
   }
-  for (std::size_t i = 0; i < 2; ++i) {
+  for (std::size_t i = 0; i < driven; ++i) {
     if (!read_by_hub(axes.at(i)->sensor)) p.sensors.at(i) = open_adc_sensor(*axes.at(i), devices);
   }
   // The pol axis only with both its settings and its devices (the configuration refuses one
@@ -67,15 +70,16 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
   const HardwareAxisConfig* pol = nullptr;
   if (config.station.pol && config.hardware.pol) pol = &*config.hardware.pol;
   if (pol != nullptr) p.pol_sensor = open_adc_sensor(*pol, devices);
-  for (std::size_t i = 0; i < 2; ++i)
+  for (std::size_t i = 0; i < driven; ++i)
     p.drives.at(i) = open_axis_drive(*axes.at(i), config.pwm, devices);
   if (pol != nullptr) p.pol_drive = open_axis_drive(*pol, config.pwm, devices);
   return p;
 }
 
 std::string describe_ports(const ports::StationPorts& p) {
-  std::string out = "az: " + p.drives[0]->describe() + ", " + p.sensors[0]->describe() +
-                    "; el: " + p.drives[1]->describe() + ", " + p.sensors[1]->describe();
+  std::string out = "az: " + p.drives[0]->describe() + ", " + p.sensors[0]->describe() + "; el: " +
+                    (p.drives[1] ? p.drives[1]->describe() + ", " + p.sensors[1]->describe()
+                                 : std::string("fixed"));
   if (p.pol_drive && p.pol_sensor) {
     out += "; pol: " + p.pol_drive->describe() + ", " + p.pol_sensor->describe();
   }
@@ -97,6 +101,7 @@ std::unique_ptr<AntennaBackend> make_pwm_backend(boost::asio::io_context& io,
                                                  const DaemonConfig& config) {
   DaemonConfig both_pwm = config;
   both_pwm.hardware = HardwareConfig{};  // IBT-2 bridges and the EncoderHub on both axes
+  both_pwm.hardware.el_axis = config.hardware.el_axis;
   return make_hardware_backend(io, both_pwm, HardwarePorts{});
 }
 

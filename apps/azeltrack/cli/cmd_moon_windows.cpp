@@ -19,7 +19,8 @@ namespace {
 
 struct MoonWindowOptions {
   std::string grid, lat, lon, alt = "0", dx_grid, from, days = "30", min_el = "0", dx_min_el = "0",
-                              mask, dx_mask, band = "144", ephemeris = "auto";
+                              mask, dx_mask, band = "144", ephemeris = "auto", fixed_el,
+                              beam_width = "20";
   bool json = false;
 };
 
@@ -45,7 +46,12 @@ eme::MoonWindowSettings settings_from(const MoonWindowOptions& o) {
   const astro::AmateurBand* band = astro::find_band(o.band);
   if (band == nullptr) throw UsageError("--band: '" + o.band + "' is not a known band");
   s.freq_mhz = band->freq_mhz;
-  return s;
+  if (o.fixed_el.empty()) return s;
+  const double fixed_el = parse_number_option("--fixed-el", o.fixed_el);
+  const double beam = parse_number_option("--beam-width", o.beam_width);
+  if (!(fixed_el >= -5.0 && fixed_el <= 90.0)) throw UsageError("--fixed-el must be in [-5, 90]");
+  if (!(beam >= 1.0 && beam <= 90.0)) throw UsageError("--beam-width must be in [1, 90]");
+  return eme::in_fixed_beam(s, fixed_el, beam);
 }
 
 void print_window(const nlohmann::json& j) {
@@ -73,16 +79,18 @@ int run_moon_windows(const MoonWindowOptions& o) {
   if (o.json) {
     nlohmann::json all = nlohmann::json::array();
     for (const auto& w : windows.value()) all.push_back(moon_window_json(w));
-    std::cout << nlohmann::json{{"grid", grid},
-                                {"dx_grid", o.dx_grid},
-                                {"band", o.band},
-                                {"windows", all}}
-                     .dump()
-              << '\n';
+    nlohmann::json out{{"grid", grid}, {"dx_grid", o.dx_grid}, {"band", o.band}, {"windows", all}};
+    if (s.max_el_deg) out["el_band_deg"] = {s.min_el_deg, *s.max_el_deg};
+    std::cout << out.dump() << '\n';
     return 0;
   }
   std::cout << "Common Moon windows, " << grid << " and " << o.dx_grid << ", " << o.band
-            << " MHz (UTC; Dpol between the stations):\n";
+            << " MHz (UTC; Dpol between the stations)";
+  if (s.max_el_deg) {
+    std::cout << std::fixed << std::setprecision(1) << ", own Moon elevation " << s.min_el_deg
+              << "° to " << *s.max_el_deg << "° (the fixed array's beam)";
+  }
+  std::cout << ":\n";
   for (const auto& w : windows.value()) print_window(moon_window_json(w));
   if (windows.value().empty()) std::cout << "none\n";
   return 0;
@@ -105,6 +113,10 @@ Runner add_moon_windows_command(CLI::App& app) {
   cmd->add_option("--mask", o->mask, "Own horizon mask: AZ:MIN_EL sectors (instead of --min-el)");
   cmd->add_option("--dx-min-el", o->dx_min_el, "The DX station's lowest elevation (default 0)");
   cmd->add_option("--dx-mask", o->dx_mask, "The DX station's horizon mask");
+  cmd->add_option("--fixed-el", o->fixed_el,
+                  "A fixed-elevation array's angle: the Moon only within its vertical beam");
+  cmd->add_option("--beam-width", o->beam_width,
+                  "With --fixed-el: the vertical half-power beam width, degrees (default 20)");
   cmd->add_option("--band", o->band, "Band for Tsky and Dgrd, MHz (default 144)");
   cmd->add_option("--ephemeris", o->ephemeris, "auto (default), swiss or erfa");
   cmd->add_flag("--json", o->json, "JSON output");

@@ -233,6 +233,9 @@ int run_simulate(const SimulateOptions& o) {
   nlohmann::json j =
       result_json(result, o.scenario, cpu_s, config.hub.firmware ? "firmware" : "model");
   add_pol_json(j, result, config, pol_settle_s(config, ptt_period_s));
+  // A fixed elevation is not tracked: no error of its own, only the angle it stands at.
+  if (config.setup.station.el_fixed_deg)
+    j["el"] = {{"fixed_deg", *config.setup.station.el_fixed_deg}};
   std::cout << (o.json ? j.dump() : j.dump(2)) << '\n';
   return 0;
 }

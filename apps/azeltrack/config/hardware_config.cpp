@@ -191,6 +191,13 @@ HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chi
   HardwareConfig h;
   h.az = read_axis(hw.child("az"), "az", gpio_chip);
   h.el = read_axis(hw.child("el"), "el", gpio_chip);
+  // A fixed elevation ([mount.el] fixed_deg) has nothing to drive or read.
+  h.el_axis = !file.section("mount").child("el").has("fixed_deg");
+  if (!h.el_axis && hw.child("el").present()) {
+    file.fail(
+        "[hardware.el] drives an elevation that [mount.el] fixed_deg says does not move: "
+        "remove the table");
+  }
   if (const ConfigSection pol = hw.child("pol"); pol.present()) {
     if (!pol.has("sensor")) {
       pol.fail("sensor",

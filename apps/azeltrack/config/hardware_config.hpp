@@ -114,11 +114,16 @@ struct HardwareConfig {
   /// [hardware.pol]: the polarisation axis of [mount.pol], if the file has the table. Never read
   /// by the hub (the EncoderHub reads azimuth and elevation only: refused when read).
   std::optional<HardwareAxisConfig> pol;
-  [[nodiscard]] bool uses_hub() const { return read_by_hub(az.sensor) || read_by_hub(el.sensor); }
+  /// False when [mount.el] fixed_deg says the elevation does not move: `el` is then not used.
+  bool el_axis = true;
+  [[nodiscard]] bool uses_hub() const {
+    return read_by_hub(az.sensor) || (el_axis && read_by_hub(el.sensor));
+  }
   std::optional<MotorPowerConfig> power;
-  /// az, el, and pol when there is one.
+  /// az, el (unless fixed), and pol when there is one.
   [[nodiscard]] std::vector<const HardwareAxisConfig*> axes() const {
-    std::vector<const HardwareAxisConfig*> out{&az, &el};
+    std::vector<const HardwareAxisConfig*> out{&az};
+    if (el_axis) out.push_back(&el);
     if (pol) out.push_back(&*pol);
     return out;
   }

@@ -1,5 +1,7 @@
 #include "config/mount_config.hpp"
 
+#include <cmath>
+
 #include "config/config_file.hpp"
 
 namespace azt::app {
@@ -26,12 +28,20 @@ PolMount read_pol(const ConfigSection& s) {
 
 }  // namespace
 
+bool FixedElevation::in_beam(double target_el_deg) const {
+  return std::abs(target_el_deg - el_deg) <= beam_width_deg / 2.0;
+}
+
 MountConfig mount_config_from(const ConfigFile& file) {
   const ConfigSection mount = file.section("mount");
   MountConfig m;
   m.az = read_axis(mount.child("az"), m.az);
   m.el = read_axis(mount.child("el"), m.el);
   if (const ConfigSection pol = mount.child("pol"); pol.present()) m.pol = read_pol(pol);
+  const ConfigSection el = mount.child("el");
+  if (const auto fixed = el.number("fixed_deg")) {
+    m.el_fixed = FixedElevation{*fixed, el.number("beam_width_deg").value_or(20.0)};
+  }
   return m;
 }
 

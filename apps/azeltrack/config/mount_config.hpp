@@ -27,10 +27,19 @@ struct PolMount {
   double window_deg = 0.5;  ///< a tenth of a dB of polarisation loss at 4° (20·log10 cos)
 };
 
+/// [mount.el] fixed_deg: an elevation that does not move (docs/eme.md "Fixed-elevation arrays").
+struct FixedElevation {
+  double el_deg = 0.0;           ///< 0: an azimuth-only rotator
+  double beam_width_deg = 20.0;  ///< the array's vertical half-power beam width
+  /// The target is inside the vertical beam: within half the beam width of the fixed angle.
+  [[nodiscard]] bool in_beam(double target_el_deg) const;
+};
+
 struct MountConfig {
   AxisMount az;
-  AxisMount el{1.0};            ///< the reference elevation axis turns at 1.0°/s
-  std::optional<PolMount> pol;  ///< only with a [mount.pol] table
+  AxisMount el{1.0};                       ///< the reference elevation axis turns at 1.0°/s
+  std::optional<FixedElevation> el_fixed;  ///< only with [mount.el] fixed_deg
+  std::optional<PolMount> pol;             ///< only with a [mount.pol] table
 };
 
 /// Throws UsageError naming the key on any invalid value.

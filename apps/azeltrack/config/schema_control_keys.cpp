@@ -208,7 +208,35 @@ constexpr std::array<KeySpec, 5> mount_keys(std::string_view max_rate_default) {
 }
 
 constexpr auto kMountAz = mount_keys("1.5");
-constexpr auto kMountEl = mount_keys("1.0");
+
+/// [mount.el]: an axis as [mount.az] describes one, or an elevation that does not move.
+constexpr std::array<KeySpec, 7> mount_el_keys() {
+  const auto axis = mount_keys("1.0");
+  return {{axis[0],
+           axis[1],
+           axis[2],
+           axis[3],
+           axis[4],
+           {.key = "fixed_deg",
+            .type = KeyType::Number,
+            .unit = "°",
+            .range = closed(-5.0, 90.0),
+            .default_note = "none: the elevation is driven",
+            .help = "an elevation that does not move: a fixed-elevation EME array's angle, or 0 "
+                    "for an azimuth-only rotator. The station then needs no elevation drive or "
+                    "sensor, tracks in azimuth only and reports this angle to every client "
+                    "([eme.md](eme.md) \"Fixed-elevation arrays\")"},
+           {.key = "beam_width_deg",
+            .type = KeyType::Number,
+            .unit = "°",
+            .range = closed(1.0, 90.0),
+            .default_toml = "20.0",
+            .help = "with `fixed_deg`: the array's vertical half-power beam width; a target is "
+                    "in the beam within half of it above or below `fixed_deg` (`moon-windows`, "
+                    "the console's planner, `/api/state` `target_in_beam`)"}}};
+}
+
+constexpr auto kMountEl = mount_el_keys();
 
 /// [mount.pol]: an axis as [mount.az] describes one, with its travel and window.
 constexpr std::array<KeySpec, 8> mount_pol_keys() {
@@ -325,7 +353,8 @@ constexpr std::array<SectionSpec, 10> kSections{{
      .chapter = Chapter::Control,
      .keys = kMountEl,
      .title = "The mount's elevation axis",
-     .help = "As `[mount.az]`, for the elevation axis."},
+     .help = "As `[mount.az]`, for the elevation axis; or, with `fixed_deg`, an elevation that "
+             "does not move."},
     {.name = "mount.pol",
      .chapter = Chapter::Control,
      .keys = kMountPol,

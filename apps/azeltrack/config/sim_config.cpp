@@ -92,6 +92,11 @@ sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& moun
     file.fail("[sim.pol] models the axis of [mount.pol], which the file does not have");
   }
   plant.pointing_errors = mount_errors_from(sim_section);
+  if (station.el_fixed_deg) {
+    // The array stands at its fixed angle, whatever [sim.el] says: nothing would move it there.
+    plant.el_axis = false;
+    plant.el.start_deg = *station.el_fixed_deg;
+  }
   return plant;
 }
 

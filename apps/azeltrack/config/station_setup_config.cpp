@@ -118,6 +118,7 @@ control::StationSetup station_setup_from(const ConfigFile& file, const MountConf
     station.pol = pol_axis_for(control, file.section("mount").child("pol"), *mount.pol,
                                station.az_supervisor.stale_s);
   }
+  if (mount.el_fixed) station.el_fixed_deg = mount.el_fixed->el_deg;
   station.corrections = read_corrections(file.section("corrections"));
   station.corrections.model = station_pointing_from(file);
   return station;

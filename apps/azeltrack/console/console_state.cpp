@@ -160,6 +160,13 @@ json DaemonConsole::state() {
     antenna["encoder_el_deg"] = raw->el_deg;
   }
   json target = target_json();
+  if (const auto& fixed = p_.config.mount.el_fixed) {
+    // A fixed-elevation array: its elevation is known, not read, and a target counts when it
+    // is inside the array's vertical beam (docs/eme.md "Fixed-elevation arrays").
+    antenna["el_fixed_deg"] = fixed->el_deg;
+    if (target["el_deg"].is_number())
+      target["in_beam"] = fixed->in_beam(target["el_deg"].get<double>());
+  }
   json error = nullptr;
   // While the target is below the horizon limit the antenna holds: no error to show.
   const bool waiting = target.contains("waiting") && !target["waiting"].is_null();

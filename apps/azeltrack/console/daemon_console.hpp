@@ -106,7 +106,7 @@ class DaemonConsole final : public ConsoleModel {
  public:
   explicit DaemonConsole(ConsoleParts parts)
       : p_(std::move(parts)),
-        planner_({p_.config.sky, p_.offload, p_.unix_s}),
+        planner_({p_.config.sky, p_.config.mount.el_fixed, p_.offload, p_.unix_s}),
         wait_({p_.config.sky, p_.config.station.el_range.min_deg, p_.offload}),
         started_(p_.store.root()) {}
 

@@ -39,7 +39,8 @@ struct Plan {
   eme::MoonWindowSettings settings;
 };
 
-Plan plan_from(const std::string& query, const SkyConfig& sky, double now_unix_s) {
+Plan plan_from(const std::string& query, const MoonPlannerParts& parts, double now_unix_s) {
+  const SkyConfig& sky = parts.sky;
   Plan p;
   p.dx_grid = query_value(query, "dx_grid").value_or(sky.settings.dx_grid);
   if (p.dx_grid.empty()) throw ApiError(400, "dx_grid", "a DX locator is needed (dx_grid=…)");
@@ -64,6 +65,8 @@ Plan plan_from(const std::string& query, const SkyConfig& sky, double now_unix_s
     if (!t) throw ApiError(400, "from", "from: " + t.error().message);
     s.from_unix_s = t->unix_seconds();
   }
+  if (parts.el_fixed)
+    s = eme::in_fixed_beam(s, parts.el_fixed->el_deg, parts.el_fixed->beam_width_deg);
   return p;
 }
 
@@ -71,7 +74,7 @@ Plan plan_from(const std::string& query, const SkyConfig& sky, double now_unix_s
 
 void MoonPlanner::answer(const std::string& query, ActDone done) {
   if (busy_) throw ApiError(503, "", "busy finding Moon windows: try again in a moment");
-  const Plan plan = plan_from(query, p_.sky, p_.unix_s());
+  const Plan plan = plan_from(query, p_, p_.unix_s());
   const astro::Observer own = p_.sky.settings.observer;
   auto found = std::make_shared<Result<std::vector<eme::MoonWindow>>>(fail("not searched"));
   busy_ = true;
@@ -88,16 +91,18 @@ void MoonPlanner::answer(const std::string& query, ActDone done) {
         }
         json windows = json::array();
         for (const auto& w : found->value()) windows.push_back(moon_window_json(w));
-        done(ActResult{{{"grid", p_.sky.settings.grid},
-                        {"dx_grid", plan.dx_grid},
-                        {"band", plan.band},
-                        {"from", astro::format_iso8601_utc_unix(plan.settings.from_unix_s)},
-                        {"days", plan.settings.days},
-                        {"min_el_deg", plan.settings.min_el_deg},
-                        {"dx_min_el_deg", plan.settings.dx_min_el_deg},
-                        {"ephemeris", "erfa"},
-                        {"windows", windows}},
-                       std::nullopt});
+        json answer{{"grid", p_.sky.settings.grid},
+                    {"dx_grid", plan.dx_grid},
+                    {"band", plan.band},
+                    {"from", astro::format_iso8601_utc_unix(plan.settings.from_unix_s)},
+                    {"days", plan.settings.days},
+                    {"min_el_deg", plan.settings.min_el_deg},
+                    {"dx_min_el_deg", plan.settings.dx_min_el_deg},
+                    {"ephemeris", "erfa"},
+                    {"windows", windows}};
+        const auto& s = plan.settings;
+        if (s.max_el_deg) answer["el_band_deg"] = {s.min_el_deg, *s.max_el_deg};
+        done(ActResult{std::move(answer), std::nullopt});
       });
 }
 

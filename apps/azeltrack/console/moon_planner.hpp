@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/off_loop.hpp"
+#include "config/mount_config.hpp"
 #include "config/sky_config.hpp"
 #include "console/console_model.hpp"
 
@@ -16,6 +17,8 @@ namespace azt::app {
 
 struct MoonPlannerParts {
   const SkyConfig& sky;  ///< the running station: place, DX, band
+  /// A fixed-elevation array ([mount.el] fixed_deg): the Moon counts only within its beam.
+  std::optional<FixedElevation> el_fixed;
   Offload offload;
   std::function<double()> unix_s;
 };
@@ -26,7 +29,8 @@ class MoonPlanner {
 
   /// `query`: dx_grid (default: the station's [sky] dx_grid), days (0–60, default 30), from
   /// (ISO 8601 UTC, default now), min_el and dx_min_el (−5…85°, default 0), band (default the
-  /// station's). A bad value is a 400 naming it; 503 while another search runs.
+  /// station's). A fixed-elevation station's windows are those with the Moon in its vertical beam
+  /// (the answer's el_band_deg). A bad value is a 400 naming it; 503 while another search runs.
   void answer(const std::string& query, ActDone done);
 
  private:

@@ -97,13 +97,13 @@ StationDaemon::StationDaemon(ConfigStore& store, const DaemonOptions& options)
           [this](const CommandSource& source, const Refusal& refusal) {
             control_event(source.name + ": refused: " + refusal.reason);
           }}),
-      direction_test_(DirectionTestParts{*antenna_, commands_, modes_,
-                                         [this] {
-                                           return sequencer_->motion_hold() ||
-                                                  sequencer_->transmitting() ||
-                                                  (radio_ && radio_->motion_hold());
-                                         },
-                                         [this] { return now_s(); }}),
+      direction_test_(
+          DirectionTestParts{*antenna_, commands_, modes_,
+                             [this] {
+                               return sequencer_->motion_hold() || sequencer_->transmitting() ||
+                                      (radio_ && radio_->motion_hold());
+                             },
+                             [this] { return now_s(); }, config_.mount.el_fixed.has_value()}),
       service_(
           commands_, modes_, *antenna_, [this] { return now_s(); },
           // The locator first: Hamlib shows 63 characters of it (format_get_info).

@@ -39,6 +39,8 @@ std::optional<double> DirectionTest::reading_deg() const {
 std::optional<std::string> DirectionTest::start(const std::string& axis, const std::string& source,
                                                 DirectionTestDone done) {
   if (axis != "az" && axis != "el") return "axis must be \"az\" or \"el\"";
+  if (axis == "el" && p_.el_fixed)
+    return "the elevation is fixed ([mount.el] fixed_deg): it has no motor to test";
   if (auto no = refusal()) return no;
   // The console's STOP first: nothing else drives while the test runs, and PC programs stay out
   // after it as after any console STOP.

@@ -24,6 +24,7 @@ struct DirectionTestParts {
   const control::ModeController& modes;
   std::function<bool()> transmitting;  ///< the sequencer keys or holds for transmit
   std::function<double()> monotonic_s;
+  bool el_fixed = false;  ///< [mount.el] fixed_deg: there is no elevation motor to test
 };
 
 /// The test's answer: {axis, commanded, before_deg, after_deg, moved_deg, verdict} with verdict

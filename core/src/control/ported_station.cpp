@@ -40,8 +40,11 @@ void PortedStation::tick(double now_s, const Demand& demand, const AzEl& rate,
   }
   read_sensors(now_s);
   // Both axes' readings go in together, stamped with the older: if either sensor falls silent
-  // the station sees a stale position and stops the drives.
-  if (fresh_[0] && fresh_[1]) {
+  // the station sees a stale position and stops the drives. A fixed elevation has no sensor.
+  if (fresh_[0] && station_.el_fixed()) {
+    station_.on_encoder_reading(fresh_[0]->at_s, fresh_[0]->deg, 0.0);
+    fresh_ = {};
+  } else if (fresh_[0] && fresh_[1]) {
     station_.on_encoder_reading(std::min(fresh_[0]->at_s, fresh_[1]->at_s), fresh_[0]->deg,
                                 fresh_[1]->deg);
     fresh_ = {};
@@ -68,6 +71,7 @@ void PortedStation::stop_with(double now_s, std::string_view reason) {
   const Duties d = station_.duties();
   const std::array<std::optional<double>, 2> setpoint{d.az_setpoint_deg, d.el_setpoint_deg};
   for (std::size_t i = 0; i < 2; ++i) {
+    if (!ports_.drives.at(i)) continue;  // a fixed elevation has no drive
     (void)ports_.drives.at(i)->apply(now_s, 0.0, setpoint.at(i));
     ports_.drives.at(i)->off(now_s);
   }
@@ -85,7 +89,7 @@ std::vector<std::string> PortedStation::faults() const {
   if (pol_) add_axis_fault(out, "pol", pol_->axis().status());
   if (!drive_fault_.empty()) out.push_back(drive_fault_);
   for (std::size_t i = 0; i < 2; ++i) {
-    add_once(out, ports_.sensors.at(i)->latched_fault());
+    if (ports_.sensors.at(i)) add_once(out, ports_.sensors.at(i)->latched_fault());
     add_once(out, sensor_fault_.at(i));
   }
   if (pol_) {
@@ -99,12 +103,17 @@ void PortedStation::clear_faults() {
   station_.clear_faults();
   if (pol_) pol_->axis().clear_faults();
   drive_fault_.clear();
-  for (const auto& sensor : ports_.sensors) sensor->clear_fault();
+  for (const auto& sensor : ports_.sensors) {
+    if (sensor) sensor->clear_fault();
+  }
   if (pol_) ports_.pol_sensor->clear_fault();
 }
 
 std::vector<const ports::AxisSensor*> PortedStation::sensors() const {
-  std::vector<const ports::AxisSensor*> out{ports_.sensors[0].get(), ports_.sensors[1].get()};
+  std::vector<const ports::AxisSensor*> out;
+  for (const auto& sensor : ports_.sensors) {
+    if (sensor) out.push_back(sensor.get());
+  }
   if (pol_) out.push_back(ports_.pol_sensor.get());
   return out;
 }
@@ -118,6 +127,7 @@ std::optional<std::string> PortedStation::latched_sensor() const {
 
 void PortedStation::read_sensors(double now_s) {
   for (std::size_t i = 0; i < 2; ++i) {
+    if (!ports_.sensors.at(i)) continue;  // a fixed elevation has no sensor
     auto r = ports_.sensors.at(i)->read(now_s);
     if (!r) {
       sensor_fault_.at(i) = r.error().message;  // no reading: the station goes stale
@@ -143,6 +153,7 @@ void PortedStation::apply(double now_s, const Duties& d) {
   const std::array<double, 2> duty{d.az, d.el};
   const std::array<std::optional<double>, 2> setpoint{d.az_setpoint_deg, d.el_setpoint_deg};
   for (std::size_t i = 0; i < 2; ++i) {
+    if (!ports_.drives.at(i)) continue;
     if (auto r = ports_.drives.at(i)->apply(now_s, duty.at(i), setpoint.at(i)); !r) {
       drive_fault_ = std::string(kAxisNames.at(i)) + " drive: " + r.error().message;
       stop_with(now_s, "stopped by the daemon");

@@ -19,10 +19,12 @@ StationController::StationController(const StationControlConfig& config, AzEl st
     : config_(config),
       az_(config.az_control, config.az_supervisor, config.az_drive, start_mount.az_deg,
           config.tick_s),
-      el_(config.el_control, config.el_supervisor, config.el_drive, start_mount.el_deg,
-          config.tick_s) {}
+      el_(config.el_control, config.el_supervisor, config.el_drive,
+          config.el_fixed_deg.value_or(start_mount.el_deg), config.tick_s) {}
 
 void StationController::on_encoder_reading(double now_s, double az_deg, double el_deg) {
+  // A fixed elevation is known, not read: the tilt correction still sees the angle it is at.
+  if (config_.el_fixed_deg) el_deg = *config_.el_fixed_deg;
   last_encoder_ = AzEl{az_deg, el_deg};
   const CorrectedPosition corrected = apply_corrections(az_deg, el_deg, corrections_);
   // An absolute sensor keeps its turn: only the corrections' (small) shift is added.
@@ -32,7 +34,7 @@ void StationController::on_encoder_reading(double now_s, double az_deg, double e
           : plan_azimuth(az_.mount_deg(), corrected.az_deg, reading_range(config_.az_range));
   const double el_mount = corrected.el_deg > 270.0 ? corrected.el_deg - 360.0 : corrected.el_deg;
   az_.on_reading(now_s, az_mount);
-  el_.on_reading(now_s, el_mount);
+  if (!el_fixed()) el_.on_reading(now_s, el_mount);
 }
 
 void StationController::set_corrections(const PositionCorrections& corrections) {
@@ -44,7 +46,7 @@ void StationController::set_corrections(const PositionCorrections& corrections) 
     const double az_delta = std::remainder(after.az_deg - before.az_deg, 360.0);
     const double el_delta = after.el_deg - before.el_deg;
     az_.rebase(az_delta);
-    el_.rebase(el_delta);
+    if (!el_fixed()) el_.rebase(el_delta);
   }
   corrections_ = corrections;
 }
@@ -91,6 +93,9 @@ Duties StationController::tick(double now_s, const Demand& demand, const AzEl& r
   } else if (demand.position) {
     az_target = plan_azimuth(az_.mount_deg(), demand.position->az_deg, config_.az_range);
     el_target = plan_elevation(demand.position->el_deg, config_.el_range);
+  } else if (demand.test && !demand.test->azimuth && el_fixed()) {
+    az_.drive(now_s, std::nullopt, 0.0);  // no elevation to test: nothing moves
+    return duties();
   } else if (demand.test) {
     DrivenAxis& tested = demand.test->azimuth ? az_ : el_;
     (demand.test->azimuth ? el_ : az_).drive(now_s, std::nullopt, 0.0);
@@ -105,7 +110,8 @@ Duties StationController::tick(double now_s, const Demand& demand, const AzEl& r
                    AxisTravel{config_.el_range.min_deg, config_.el_range.max_deg}, rate.el_deg);
   }
   az_.drive(now_s, az_target, rate.az_deg);
-  el_.drive(now_s, el_target, rate.el_deg);
+  // A fixed elevation is never driven: whatever angle a demand names, only azimuth moves.
+  if (!el_fixed()) el_.drive(now_s, el_target, rate.el_deg);
   return duties();
 }
 
@@ -116,12 +122,12 @@ Duties StationController::duties() const {
 Duties StationController::set_limits(const LimitSwitches& limits) {
   limits_ = limits;
   az_.set_limits(LimitPair{limits.az_ccw, limits.az_cw});
-  el_.set_limits(LimitPair{limits.el_down, limits.el_up});
+  if (!el_fixed()) el_.set_limits(LimitPair{limits.el_down, limits.el_up});
   return duties();
 }
 
 std::optional<AzEl> StationController::sky_position(double now_s) const {
-  if (faulted() || az_.stale(now_s) || el_.stale(now_s)) return std::nullopt;
+  if (faulted() || az_.stale(now_s) || (!el_fixed() && el_.stale(now_s))) return std::nullopt;
   // Past the zenith on a flip mount the beam looks the other way: (az + 180, 180 − el).
   if (el_.mount_deg() > 90.0) {
     return AzEl{wrap_360(az_.mount_deg() + 180.0), 180.0 - el_.mount_deg()};
@@ -129,11 +135,11 @@ std::optional<AzEl> StationController::sky_position(double now_s) const {
   return AzEl{wrap_360(az_.mount_deg()), el_.mount_deg()};
 }
 
-bool StationController::faulted() const { return az_.faulted() || el_.faulted(); }
+bool StationController::faulted() const { return az_.faulted() || (!el_fixed() && el_.faulted()); }
 
 void StationController::emergency_stop(double now_s, std::string_view reason) {
   az_.emergency_stop(now_s, reason);
-  el_.emergency_stop(now_s, reason);
+  if (!el_fixed()) el_.emergency_stop(now_s, reason);
 }
 
 void StationController::clear_faults() {

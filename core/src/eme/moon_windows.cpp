@@ -38,8 +38,8 @@ class MoonWatch {
     if (!moon) return moon.error();
     if (!dx_moon) return dx_moon.error();
     Look l{false, *moon, *dx_moon, {}};
-    l.both_see =
-        above(*moon, s_.min_el_deg, s_.mask) && above(*dx_moon, s_.dx_min_el_deg, s_.dx_mask);
+    l.both_see = above(*moon, s_.min_el_deg, s_.mask) && below(*moon, s_.max_el_deg) &&
+                 above(*dx_moon, s_.dx_min_el_deg, s_.dx_mask);
     if (l.both_see) l.sun = astro::observe_sun(*epoch, astro::make_station(*epoch, own_));
     return l;
   }
@@ -58,6 +58,9 @@ class MoonWatch {
  private:
   static bool above(const astro::Place& p, double min_el, const orbit::HorizonMask& mask) {
     return p.el_geometric_deg >= std::max(min_el, mask.min_el_at(p.az_deg));
+  }
+  static bool below(const astro::Place& p, const std::optional<double>& max_el) {
+    return !max_el || p.el_geometric_deg <= *max_el;
   }
 
   const astro::Ephemeris& eph_;
@@ -117,19 +120,34 @@ Result<bool> fill_best(const MoonWatch& watch, MoonWindow& w, double step_s) {
   return true;
 }
 
+/// The search's step: a fixed-elevation array's band is never crossed between two samples.
+double sample_step_s(const MoonWindowSettings& s) {
+  constexpr double kSecondsPerBandDeg = 120.0;  // half the 240 s/° of the Moon's fastest climb
+  if (!s.max_el_deg) return s.step_s;
+  const double band_deg = std::max(*s.max_el_deg - s.min_el_deg, 0.1);
+  return std::min(s.step_s, kSecondsPerBandDeg * band_deg);
+}
+
 }  // namespace
+
+MoonWindowSettings in_fixed_beam(MoonWindowSettings s, double fixed_el_deg, double beam_width_deg) {
+  s.min_el_deg = std::max(s.min_el_deg, fixed_el_deg - beam_width_deg / 2.0);
+  s.max_el_deg = fixed_el_deg + beam_width_deg / 2.0;
+  return s;
+}
 
 Result<std::vector<MoonWindow>> moon_windows(const astro::Ephemeris& ephemeris,
                                              const astro::Observer& own, const astro::Observer& dx,
                                              const MoonWindowSettings& settings,
                                              const astro::LeapSecondTable& leap_seconds) {
   const MoonWatch watch(ephemeris, own, dx, settings, leap_seconds);
+  const double step_s = sample_step_s(settings);
   const double end = settings.from_unix_s + settings.days * kSecondsPerDay;
   std::vector<MoonWindow> windows;
   std::optional<double> open;  // the start of the window under way
   double prev_t = settings.from_unix_s;
   bool prev_seen = false;
-  for (double t = settings.from_unix_s;; t = std::min(t + settings.step_s, end)) {
+  for (double t = settings.from_unix_s;; t = std::min(t + step_s, end)) {
     const auto l = watch.at(t);
     if (!l) return l.error();
     if (l->both_see && !prev_seen) {
@@ -152,7 +170,7 @@ Result<std::vector<MoonWindow>> moon_windows(const astro::Ephemeris& ephemeris,
   }
   if (open) windows.push_back(MoonWindow{*open, end});
   for (auto& w : windows) {
-    if (auto r = fill_best(watch, w, settings.step_s); !r) return r.error();
+    if (auto r = fill_best(watch, w, step_s); !r) return r.error();
   }
   return windows;
 }

@@ -14,16 +14,17 @@ namespace {
 /// What both axes' ports share: the rotator, the setpoints asked for and the last reading given.
 class Box {
  public:
-  Box(std::unique_ptr<HamlibRotator> rotator, std::string describe)
-      : rotator_(std::move(rotator)), describe_(std::move(describe)) {}
+  Box(std::unique_ptr<HamlibRotator> rotator, std::string describe,
+      std::optional<double> el_fixed_deg)
+      : rotator_(std::move(rotator)), describe_(std::move(describe)), el_fixed_deg_(el_fixed_deg) {}
 
   /// The box takes both axes in one command: it goes out when either changes, once both are
-  /// known.
+  /// known. A fixed elevation is always the fixed angle (an azimuth-only box ignores it).
   void set_setpoint(std::size_t axis, std::optional<double> deg) {
     if (!deg || deg == asked_.at(axis)) return;
     asked_.at(axis) = deg;
-    if (asked_[0] && asked_[1])
-      rotator_->command_position(control::wrap_360(*asked_[0]), *asked_[1]);
+    const std::optional<double> el = el_fixed_deg_ ? el_fixed_deg_ : asked_[1];
+    if (asked_[0] && el) rotator_->command_position(control::wrap_360(*asked_[0]), *el);
   }
 
   void stop() {
@@ -50,6 +51,7 @@ class Box {
  private:
   std::unique_ptr<HamlibRotator> rotator_;
   std::string describe_;
+  std::optional<double> el_fixed_deg_;
   std::array<std::optional<double>, 2> asked_;
   std::array<std::optional<std::chrono::steady_clock::time_point>, 2> given_;
 };
@@ -83,10 +85,11 @@ class BoxSensor final : public ports::AxisSensor {
 }  // namespace
 
 ports::StationPorts make_hamlib_rotator_ports(std::unique_ptr<HamlibRotator> rotator,
-                                              const std::string& describe) {
-  auto box = std::make_shared<Box>(std::move(rotator), describe);
+                                              const std::string& describe,
+                                              std::optional<double> el_fixed_deg) {
+  auto box = std::make_shared<Box>(std::move(rotator), describe, el_fixed_deg);
   ports::StationPorts p;
-  for (std::size_t i = 0; i < 2; ++i) {
+  for (std::size_t i = 0; i < (el_fixed_deg ? 1U : 2U); ++i) {
     p.drives.at(i) = std::make_unique<BoxDrive>(box, i);
     p.sensors.at(i) = std::make_unique<BoxSensor>(box, i);
   }

@@ -88,7 +88,7 @@ SimulatedStation make_simulated_station(const PlantSetup& plant,
                                         std::unique_ptr<SimulatedHub> hub) {
   auto rig = std::make_shared<PlantRig>(plant, std::move(hub));
   SimulatedStation station;
-  for (std::size_t i = 0; i < 2; ++i) {
+  for (std::size_t i = 0; i < (plant.el_axis ? 2U : 1U); ++i) {
     station.ports.drives.at(i) = std::make_unique<SimDrive>(rig, i);
     station.ports.sensors.at(i) = std::make_unique<SimSensor>(rig, i);
   }

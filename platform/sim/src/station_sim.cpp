@@ -129,6 +129,8 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
   double tracked_s = 0.0, az_travel = 0.0, el_travel = 0.0;
   std::optional<AzEl> previous;
   const double l2_slack = 2.0;  // acquisition: both axes within window + 2 LSB
+  // A fixed elevation is not tracked: only azimuth's error counts.
+  const bool el_driven = !setup.station.el_fixed_deg;
   const std::uint64_t ticks =
       static_cast<std::uint64_t>(std::llround(duration_s / setup.station.tick_s));
   for (std::uint64_t k = 0; k < ticks; ++k) {
@@ -152,7 +154,7 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
       continue;
     }
     const double e_az = wrapped_difference(target->az_deg, loop.az_plant().shaft_deg());
-    const double e_el = target->el_deg - loop.el_plant().shaft_deg();
+    const double e_el = el_driven ? target->el_deg - loop.el_plant().shaft_deg() : 0.0;
     if (!result.acquired_s) {
       const double az_ok = setup.station.az_control.window_deg + l2_slack * lsb_deg(setup.plant.az);
       const double el_ok = setup.station.el_control.window_deg + l2_slack * lsb_deg(setup.plant.el);
@@ -160,11 +162,11 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
     }
     if (result.acquired_s) {
       az_err.add(e_az);
-      el_err.add(e_el);
+      if (el_driven) el_err.add(e_el);
       tracked_s += setup.station.tick_s;
       if (previous) {
         az_travel += std::fabs(wrapped_difference(target->az_deg, previous->az_deg));
-        el_travel += std::fabs(target->el_deg - previous->el_deg);
+        if (el_driven) el_travel += std::fabs(target->el_deg - previous->el_deg);
       }
       previous = target;
     }
@@ -189,6 +191,8 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
                         std::unique_ptr<SimulatedHub> hub) {
   StationLoop loop(setup, std::move(hub));
   SimResult result;
+  // A fixed elevation stays where it stands: the slew is azimuth's alone.
+  if (setup.station.el_fixed_deg) to.el_deg = *setup.station.el_fixed_deg;
   const double az_target =
       control::plan_azimuth(setup.plant.az.start_deg, to.az_deg, setup.station.az_range);
   const double az_dir = az_target >= setup.plant.az.start_deg ? 1.0 : -1.0;

@@ -70,9 +70,34 @@ class SimI2c final : public linux_os::I2cBus {
   }
 };
 
+/// Azimuth alone, as kHardwareStation's; the elevation fixed at 0 ([mount.el] fixed_deg).
+constexpr const char* kAzimuthOnly = R"([station]
+grid = "FN06HE"
+[target]
+name = "stop"
+[antenna]
+backend = "hardware"
+[mount.az]
+max_rate_deg_s = 3.0
+[mount.el]
+fixed_deg = 0.0
+[sim.az]
+start_deg = 100.0
+[hardware.az]
+drive = "relay"
+relay_forward = 5
+relay_reverse = 6
+window_deg = 1.0
+lsb_deg = 0.44
+coast_deg = 0.2
+sensor = "mcp3008"
+adc_device = "/dev/spidev0.1"
+pot_calibration = [0, 0.0, 1023, 450.0]
+)";
+
 struct Rig {
-  explicit Rig(const std::string& extra = "")
-      : config(daemon_config_from(ConfigFile::parse(kHardwareStation + extra, "hw.toml"))),
+  explicit Rig(const std::string& extra = "", const std::string& station = kHardwareStation)
+      : config(daemon_config_from(ConfigFile::parse(station + extra, "hw.toml"))),
         az(config.sim.az),
         el(config.sim.el) {
     ports.gpio = &gpio;
@@ -272,6 +297,22 @@ TEST(HardwareBackend, AnSpiWriteFailureIsADriveFault) {
   bool named = false;
   for (const auto& f : backend->faults()) named = named || f.find("el drive") != std::string::npos;
   EXPECT_TRUE(named);
+}
+
+TEST(HardwareBackend, AnAzimuthOnlyStationOpensNoElevationDeviceAndTurnsInAzimuth) {
+  Rig rig("", kAzimuthOnly);
+  auto backend = rig.open();
+  EXPECT_EQ(rig.pot, nullptr);  // neither the rotator box's pot nor the ADS1115 was opened
+  EXPECT_EQ(rig.el_adc, nullptr);
+  EXPECT_NE(backend->describe().find("el: fixed"), std::string::npos) << backend->describe();
+  control::Demand go;
+  go.position = control::AzEl{140.0, 40.0};  // a PC program's elevation: not this station's
+  rig.run(*backend, go, 60.0);
+  EXPECT_NEAR(rig.az.shaft_deg(), 140.0, 1.0 + 0.44 + 0.5);
+  EXPECT_TRUE(backend->faults().empty()) << backend->faults().front();
+  const auto report = backend->position(rig.t);
+  ASSERT_TRUE(report.has_value());
+  EXPECT_DOUBLE_EQ(report->el_deg, 0.0);
 }
 
 TEST(HardwareBackend, MissingDevicesNameTheirKeysAndLeaveNothingEnergized) {

@@ -75,5 +75,32 @@ TEST(HardwareConfig, MistakesNameTheKey) {
             std::string::npos);
 }
 
+// A fixed elevation ([mount.el] fixed_deg) has no elevation hardware: the table is refused, the
+// hub reads azimuth only, and the value's range is the schema's.
+TEST(HardwareConfig, AFixedElevationHasNoElevationHardware) {
+  const std::string base =
+      "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"hardware\"\n[hub]\ndevice = "
+      "\"/dev/null\"\n[mount.el]\nfixed_deg = 12.0\n";
+  const DaemonConfig c = daemon_config_from(ConfigFile::parse(base, "c.toml"));
+  ASSERT_TRUE(c.mount.el_fixed.has_value());
+  EXPECT_DOUBLE_EQ(c.mount.el_fixed->el_deg, 12.0);
+  EXPECT_DOUBLE_EQ(c.mount.el_fixed->beam_width_deg, 20.0);
+  EXPECT_EQ(c.station.el_fixed_deg, 12.0);
+  EXPECT_FALSE(c.hardware.el_axis);
+  EXPECT_EQ(c.hardware.axes().size(), 1U);
+  EXPECT_TRUE(c.mount.el_fixed->in_beam(21.9));
+  EXPECT_FALSE(c.mount.el_fixed->in_beam(22.1));
+  try {
+    (void)daemon_config_from(
+        ConfigFile::parse(base + "[hardware.el]\ndrive = \"pwm\"\n", "c.toml"));
+    FAIL() << "[hardware.el] accepted with a fixed elevation";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("[hardware.el]"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)daemon_config_from(ConfigFile::parse(
+                   "[station]\ngrid = \"FN06HE\"\n[mount.el]\nfixed_deg = 95.0\n", "c.toml")),
+               UsageError);
+}
+
 }  // namespace
 }  // namespace azt::app

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 #include "azt/astro/erfa_ephemeris.hpp"
 #include "azt/astro/sky.hpp"
 
@@ -78,6 +81,40 @@ TEST(MoonWindows, LimitsTheMoonNeverClearsGiveNone) {
   s.min_el_deg = 0.0;
   s.dx_mask = orbit::HorizonMask::flat(75.0);
   EXPECT_TRUE(windows(s)->empty());
+}
+
+// A fixed-elevation array (12° ± 2°, a 4° beam: narrower than the 10-minute step's 2.5°
+// of Moon climb could skip): the windows are where both stations see the Moon and it is inside
+// the band, checked against an independent 20 s scan of the same conditions.
+TEST(MoonWindows, AFixedArraysWindowsAreTheMoonInsideItsBeam) {
+  MoonWindowSettings s;
+  s.from_unix_s = kFrom;
+  s.days = 4.0;
+  s = in_fixed_beam(s, 12.0, 4.0);
+  ASSERT_EQ(s.min_el_deg, 10.0);
+  ASSERT_EQ(s.max_el_deg, 14.0);
+  const auto w = windows(s);
+  ASSERT_TRUE(w) << w.error().message;
+  const auto inside = [](double t) {
+    const double el = moon_el(t, kFn06);
+    return el >= 10.0 && el <= 14.0 && moon_el(t, kJo62) >= 0.0;
+  };
+  std::vector<std::pair<double, double>> scanned;  // the scan's own windows, to 20 s
+  constexpr double kScanS = 20.0;
+  for (int i = 0; i * kScanS < s.days * 86400.0; ++i) {
+    const double t = s.from_unix_s + i * kScanS;
+    const bool in = inside(t);
+    if (in && (scanned.empty() || scanned.back().second < t - kScanS)) scanned.emplace_back(t, t);
+    if (in) scanned.back().second = t;
+  }
+  ASSERT_GE(scanned.size(), 2U);  // the band is crossed at moonrise or moonset most days
+  ASSERT_EQ(w->size(), scanned.size());
+  for (std::size_t i = 0; i < w->size(); ++i) {
+    EXPECT_NEAR(w->at(i).start_unix_s, scanned[i].first, kScanS);
+    EXPECT_NEAR(w->at(i).end_unix_s, scanned[i].second, kScanS);
+    EXPECT_GE(w->at(i).el_deg, 10.0);
+    EXPECT_LE(w->at(i).el_deg, 14.0);
+  }
 }
 
 }  // namespace

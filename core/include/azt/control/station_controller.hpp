@@ -35,6 +35,10 @@ struct StationControlConfig {
   /// The polarisation axis, if the station has one: PortedStation drives it beside the two
   /// axes this controller drives (pol_axis.hpp).
   std::optional<PolAxisConfig> pol;
+  /// A station whose elevation does not move (a fixed-elevation EME array; 0 for an
+  /// azimuth-only rotator): the elevation is this angle, never read, driven or supervised, and
+  /// the station needs no elevation drive or sensor.
+  std::optional<double> el_fixed_deg;
 };
 
 /// What to apply until the next tick. PWM axes: the duty. Relay axes: +1, −1 or 0 (forward,
@@ -72,7 +76,8 @@ class StationController {
 
   /// Encoder angles 0..360 as read at `now_s`. The position corrections are applied first (offset,
   /// user correction, tilt: corrections.hpp); then azimuth is placed on the mount (the equivalent
-  /// angle nearest the last one) and elevation above 270 is below the horizon.
+  /// angle nearest the last one) and elevation above 270 is below the horizon. A fixed elevation
+  /// (StationControlConfig::el_fixed_deg) ignores `el_deg`: the fixed angle stands in for it.
   void on_encoder_reading(double now_s, double az_deg, double el_deg);
 
   /// New corrections take effect at once: the present position is re-expressed under them (the
@@ -104,6 +109,8 @@ class StationController {
   [[nodiscard]] std::uint64_t starts_az() const { return az_.starts(); }
   [[nodiscard]] std::uint64_t starts_el() const { return el_.starts(); }
   [[nodiscard]] const StationControlConfig& config() const { return config_; }
+  /// The elevation does not move (StationControlConfig::el_fixed_deg).
+  [[nodiscard]] bool el_fixed() const { return config_.el_fixed_deg.has_value(); }
 
   /// Stops both motors now (E-stop or shutdown) and latches an E-stop fault.
   void emergency_stop(double now_s, std::string_view reason = "emergency stop input active");

@@ -32,6 +32,8 @@ struct StationSetup {
   std::optional<AzEl> park_when_out_of_range;
   /// The polarisation axis ([mount.pol]), if the station has one.
   std::optional<PolAxisConfig> pol;
+  /// The elevation does not move ([mount.el] fixed_deg): the angle it is fixed at.
+  std::optional<double> el_fixed_deg;
 
   /// Where the axes are believed to be before the first reading, when nothing says otherwise: 0°
   /// on each axis, or the nearest end of the travel. It decides only which turn a single-turn

@@ -11,7 +11,8 @@
 namespace azt::ports {
 
 /// Azimuth first, then elevation; the polarisation axis's, if the station has one (nullptr: no
-/// pol axis).
+/// pol axis). A station with a fixed elevation (StationControlConfig::el_fixed_deg) has no
+/// elevation drive or sensor: both are nullptr.
 struct StationPorts {
   std::array<std::unique_ptr<AxisDrive>, 2> drives;
   std::array<std::unique_ptr<AxisSensor>, 2> sensors;

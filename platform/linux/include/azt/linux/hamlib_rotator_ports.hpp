@@ -12,8 +12,11 @@
 namespace azt::linux_os {
 
 /// Azimuth setpoints go to the box as 0…360 (the convention every Hamlib backend accepts; the
-/// box chooses its path), readings come back as reported. Stopping sends rot_stop.
+/// box chooses its path), readings come back as reported. Stopping sends rot_stop. With
+/// `el_fixed_deg` the station has no elevation ports and the box is always sent that elevation
+/// (Hamlib's azimuth-only models ignore it).
 ports::StationPorts make_hamlib_rotator_ports(std::unique_ptr<HamlibRotator> rotator,
-                                              const std::string& describe);
+                                              const std::string& describe,
+                                              std::optional<double> el_fixed_deg = std::nullopt);
 
 }  // namespace azt::linux_os

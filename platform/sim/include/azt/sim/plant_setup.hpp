@@ -36,6 +36,9 @@ struct PlantSetup {
   /// The polarisation axis's plant ([sim.pol]), if the station has one. Its absolute encoder is
   /// read directly each tick, not through the hub (the EncoderHub carries two axes).
   std::optional<AxisParams> pol;
+  /// False: the station's elevation does not move ([mount.el] fixed_deg): it gets no elevation
+  /// drive or sensor, and the elevation plant stays where it starts.
+  bool el_axis = true;
 };
 
 }  // namespace azt::sim
