@@ -14,6 +14,7 @@ import { refreshIo } from './live.js';
 const AXES = {
   az: { name: 'azimuth', way: 'clockwise' },
   el: { name: 'elevation', way: 'up' },
+  pol: { name: 'polarisation', way: 'clockwise, seen from behind the antenna' },
 };
 const COMMANDS = { cw: 'a clockwise command', ccw: 'an anticlockwise command', up: 'an upward command', down: 'a downward command' };
 
@@ -64,6 +65,12 @@ function axisBox(axis) {
   return h('div', { class: 'dirtest-axis' }, btn,
     h('p', { class: 'dirtest-result', id: `dirtest-${axis}-result`, role: 'status', 'aria-live': 'polite' }));
 }
+// The station's own axes: no elevation on a fixed-elevation array, pol with [mount.pol].
+function testedAxes() {
+  const st = S.state || {};
+  const a = st.antenna || {};
+  return ['az', isNum(a.el_fixed_deg) ? null : 'el', st.pol ? 'pol' : null].filter(Boolean);
+}
 const ioRow = (label, what) => h('div', {}, h('span', { class: 'lbl', text: label }), h('span', { 'data-io': what, text: '—' }));
 
 // The card, a <details> like the sections around it.
@@ -75,7 +82,7 @@ export function hardwareCard() {
     h('p', { class: 'hint', text: 'Runs one axis at low speed for one second and says which way its reading moved: a motor or a sensor wired the wrong way round shows at once. Refused while tracking (STOP first) and while the transmitter is keyed.' }),
     tracking ? h('p', { class: 'hint warn-txt', text: 'The antenna is tracking now: STOP it before a test.' }) : null,
     h('div', { class: 'kv' }, ioRow('E-stop', 'estop'), ioRow('Limit switches', 'limits'), ioRow('PTT', 'ptt')),
-    h('div', { class: 'dirtest-axes' }, axisBox('az'), axisBox('el')));
+    h('div', { class: 'dirtest-axes' }, ...testedAxes().map(axisBox)));
   queueMicrotask(refreshIo); // once it is on the page
   return d;
 }

@@ -67,6 +67,11 @@ class AntennaBackend {
     (void)now_s;
     (void)limits;
   }
+  /// The polarisation axis's switches changed; a backend without a pol axis ignores them.
+  virtual void set_pol_limits(double now_s, const control::LimitPair& limits) {
+    (void)now_s;
+    (void)limits;
+  }
 };
 
 /// The EncoderHub on a serial device and two IBT-2 bridges on sysfs PWM ([hub], [pwm]); throws

@@ -40,6 +40,9 @@ class StationBackend final : public AntennaBackend {
     return PolStatus{s.mount_deg, pol->target_mount_deg(), s.moving,
                      s.reason,    pol->travel().min_deg,   pol->travel().max_deg};
   }
+  void set_pol_limits(double now_s, const control::LimitPair& limits) override {
+    station_.set_pol_limits(now_s, limits);
+  }
   void set_limits(double now_s, const control::LimitSwitches& limits) override {
     station_.set_limits(now_s, limits);
   }

@@ -180,6 +180,8 @@ GpioConfig read_gpio(const ConfigSection& s, std::size_t sequencer_outputs) {
   g.az_cw_limit = read_gpio_line(s, "az_cw_limit", g.chip, limits_low);
   g.el_down_limit = read_gpio_line(s, "el_down_limit", g.chip, limits_low);
   g.el_up_limit = read_gpio_line(s, "el_up_limit", g.chip, limits_low);
+  g.pol_ccw_limit = read_gpio_line(s, "pol_ccw_limit", g.chip, limits_low);
+  g.pol_cw_limit = read_gpio_line(s, "pol_cw_limit", g.chip, limits_low);
   g.ptt = read_gpio_line(s, "ptt", g.chip, s.boolean("ptt_active_low").value_or(true));
   const bool outputs_low = s.boolean("sequencer_active_low").value_or(false);
   if (const toml::array* a = s.array("sequencer")) {
@@ -443,7 +445,8 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
 
 std::vector<const linux_os::GpioLineSpec*> GpioConfig::lines() const {
   std::vector<const linux_os::GpioLineSpec*> out;
-  for (const auto* l : {&estop, &az_ccw_limit, &az_cw_limit, &el_down_limit, &el_up_limit, &ptt}) {
+  for (const auto* l : {&estop, &az_ccw_limit, &az_cw_limit, &el_down_limit, &el_up_limit,
+                        &pol_ccw_limit, &pol_cw_limit, &ptt}) {
     if (*l) out.push_back(&**l);
   }
   for (const auto* l : buttons.lines()) out.push_back(l);

@@ -100,6 +100,8 @@ struct GpioConfig {
   std::optional<linux_os::GpioLineSpec> az_cw_limit;
   std::optional<linux_os::GpioLineSpec> el_down_limit;
   std::optional<linux_os::GpioLineSpec> el_up_limit;
+  std::optional<linux_os::GpioLineSpec> pol_ccw_limit;  ///< the pol axis's ([mount.pol])
+  std::optional<linux_os::GpioLineSpec> pol_cw_limit;
   std::optional<linux_os::GpioLineSpec> ptt;
   std::vector<linux_os::GpioLineSpec> sequencer;  ///< one per [sequencer] output, keying order
   std::string estop_latch_file;  ///< empty: "estop.latched" beside the configuration file

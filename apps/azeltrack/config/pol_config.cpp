@@ -28,6 +28,11 @@ void check_pol_backend(const ConfigFile& file, const DaemonConfig& c) {
   if (c.hardware.pol && !c.mount.pol) {
     file.fail("[hardware.pol] drives the axis of [mount.pol], which the file does not have");
   }
+  if ((c.gpio.pol_ccw_limit || c.gpio.pol_cw_limit) && !c.mount.pol) {
+    file.fail(
+        "[gpio] pol_ccw_limit / pol_cw_limit are the switches of [mount.pol]'s axis, "
+        "which the file does not have");
+  }
   if (!c.mount.pol) return;
   switch (c.backend) {
     case BackendKind::Sim:

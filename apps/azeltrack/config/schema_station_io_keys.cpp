@@ -18,7 +18,7 @@ constexpr KeySpec active_low(std::string_view key, std::string_view default_toml
   return {.key = key, .type = KeyType::Boolean, .default_toml = default_toml, .help = help};
 }
 
-constexpr std::array<KeySpec, 23> kGpio{{
+constexpr std::array<KeySpec, 25> kGpio{{
     {.key = "chip",
      .type = KeyType::Text,
      .default_toml = "\"gpiochip0\"",
@@ -35,7 +35,11 @@ constexpr std::array<KeySpec, 23> kGpio{{
     line("az_cw_limit", "the clockwise travel-end switch"),
     line("el_down_limit", "the lower elevation travel-end switch"),
     line("el_up_limit", "the upper elevation travel-end switch"),
-    active_low("limits_active_low", "false", "the four limit lines read tripped when low"),
+    line("pol_ccw_limit",
+         "the polarisation axis's travel-end switch at its counter-clockwise end (`[mount.pol]` "
+         "min_deg); needs `[mount.pol]`"),
+    line("pol_cw_limit", "the polarisation axis's switch at its clockwise end (max_deg)"),
+    active_low("limits_active_low", "false", "the limit lines read tripped when low"),
     line("ptt", "the PTT input keying the `[sequencer]` chain; needs `[gpio] sequencer`"),
     active_low("ptt_active_low", "true", "the radio's PTT output pulls its line low"),
     {.key = "sequencer",

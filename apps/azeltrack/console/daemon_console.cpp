@@ -115,10 +115,10 @@ void DaemonConsole::act_direction_test(const json& body, const std::string& sour
   };
   if (auto refused = p_.direction_test->start(axis, source, std::move(finished))) {
     // An axis the station has is "not now"; anything else is a bad value of `axis`.
-    const bool known = axis == "az" || axis == "el";
+    const bool known = axis == "az" || axis == "el" || axis == "pol";
     throw ApiError(known ? 409 : 400, known ? "" : "axis", *refused);
   }
-  p_.log(source + ": direction test of the " + (axis == "az" ? "azimuth" : "elevation") + " axis");
+  p_.log(source + ": direction test of the " + axis + " axis");
 }
 
 void DaemonConsole::upload_elements(std::string text, const std::string& source, ActDone done) {

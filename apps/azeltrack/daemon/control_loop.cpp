@@ -116,6 +116,7 @@ void StationDaemon::tick() {
     const std::optional<control::AzEl> source = fix ? std::optional(fix->position) : std::nullopt;
     control::Demand demand = modes_.demand(noise_aim(scan_aim(source)));
     if (auto test = direction_test_.demand(now)) demand = std::move(*test);
+    if (auto pol_test = direction_test_.pol_demand(now)) antenna_->set_pol_demand(*pol_test);
     antenna_->tick(now, demand, fix ? fix->rate_deg_s : control::AzEl{});
     direction_test_.tick(now);
     receiver_->tick(now);

@@ -21,6 +21,8 @@ GuardedAntenna::GuardedAntenna(std::unique_ptr<AntennaBackend> inner, const Gpio
     az_cw_ = limit(gpio.az_cw_limit);
     el_down_ = limit(gpio.el_down_limit);
     el_up_ = limit(gpio.el_up_limit);
+    pol_ccw_ = limit(gpio.pol_ccw_limit);
+    pol_cw_ = limit(gpio.pol_cw_limit);
     if (gpio.estop) estop_ = request(*gpio.estop, [this](bool on) { on_estop_input(on); });
   }
   std::error_code ec;
@@ -51,17 +53,19 @@ void GuardedAntenna::on_limit_edge() {
     return in != nullptr && in->active();
   };
   control::LimitSwitches now{tripped(az_ccw_), tripped(az_cw_), tripped(el_down_), tripped(el_up_)};
-  if (now != limits_) {
-    for (const auto& [name, before, after] : {std::tuple{"az CCW", limits_.az_ccw, now.az_ccw},
-                                              {"az CW", limits_.az_cw, now.az_cw},
-                                              {"el DOWN", limits_.el_down, now.el_down},
-                                              {"el UP", limits_.el_up, now.el_up}}) {
-      if (before != after)
-        parts_.log(std::string(name) + " limit " + (after ? "tripped" : "clear"));
-    }
+  const control::LimitPair pol{tripped(pol_ccw_), tripped(pol_cw_)};
+  for (const auto& [name, before, after] : {std::tuple{"az CCW", limits_.az_ccw, now.az_ccw},
+                                            {"az CW", limits_.az_cw, now.az_cw},
+                                            {"el DOWN", limits_.el_down, now.el_down},
+                                            {"el UP", limits_.el_up, now.el_up},
+                                            {"pol CCW", pol_limits_.reverse, pol.reverse},
+                                            {"pol CW", pol_limits_.forward, pol.forward}}) {
+    if (before != after) parts_.log(std::string(name) + " limit " + (after ? "tripped" : "clear"));
   }
   limits_ = now;
+  pol_limits_ = pol;
   inner_->set_limits(parts_.now_s(), limits_);
+  inner_->set_pol_limits(parts_.now_s(), pol_limits_);
 }
 
 void GuardedAntenna::on_estop_input(bool active) {
@@ -178,6 +182,11 @@ nlohmann::json GuardedAntenna::state() const {
               {"az_cw", limits_.az_cw},
               {"el_down", limits_.el_down},
               {"el_up", limits_.el_up}};
+  }
+  if (pol_ccw_ || pol_cw_) {
+    if (limits.is_null()) limits = nlohmann::json::object();
+    limits["pol_ccw"] = pol_limits_.reverse;
+    limits["pol_cw"] = pol_limits_.forward;
   }
   return {{"estop",
            {{"wired", estop_ != nullptr},

@@ -68,7 +68,8 @@ class GuardedAntenna final : public AntennaBackend {
   /// the hold that goes on now; none while not held. What /api/state shows as the hold's start.
   [[nodiscard]] std::optional<double> held_since_s() const { return held_since_s_; }
   [[nodiscard]] const control::LimitSwitches& limits() const { return limits_; }
-  /// {"estop": {"wired","input","latched"}, "limits": {...} | null}
+  /// {"estop": {"wired","input","latched"}, "limits": {...} | null}; the limits hold pol_ccw and
+  /// pol_cw when those switches are wired.
   [[nodiscard]] nlohmann::json state() const;
 
  private:
@@ -85,7 +86,10 @@ class GuardedAntenna final : public AntennaBackend {
   std::unique_ptr<linux_os::GpioInput> az_cw_;
   std::unique_ptr<linux_os::GpioInput> el_down_;
   std::unique_ptr<linux_os::GpioInput> el_up_;
+  std::unique_ptr<linux_os::GpioInput> pol_ccw_;
+  std::unique_ptr<linux_os::GpioInput> pol_cw_;
   control::LimitSwitches limits_;
+  control::LimitPair pol_limits_;
   std::function<bool()> other_hold_;
   control::PolDemand pol_demand_;  ///< the pol axis's wish, handed on at each tick unless latched
   bool latched_ = false;

@@ -16,6 +16,8 @@ void PolAxis::on_reading(double now_s, double sensor_deg) {
 
 double PolAxis::drive(double now_s, const PolDemand& demand) {
   target_mount_deg_.reset();
+  if (demand.test_direction != 0)
+    return axis_.drive_test(now_s, demand.test_direction > 0 ? 1 : -1);
   if (demand.feed_deg && std::isfinite(*demand.feed_deg)) {
     target_mount_deg_ = plan_pol_mount(axis_.mount_deg(), *demand.feed_deg, travel_);
   }

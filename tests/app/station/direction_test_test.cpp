@@ -28,6 +28,7 @@ struct Rig : testing::StationRig {
   void run(double seconds) {
     for (double end = now_s + seconds; now_s < end; now_s += 0.1) {
       const auto demand = test.demand(now_s).value_or(modes.demand(std::nullopt));
+      antenna.set_pol_demand(test.pol_demand(now_s).value_or(control::PolDemand{}));
       antenna.tick(now_s, demand, {});
       test.tick(now_s);
     }
@@ -52,6 +53,31 @@ TEST(DirectionTest, AnAxisThatFollowsTheCommandIsWiredRight) {
   EXPECT_NEAR((*rig.result)["moved_deg"].get<double>(), 0.5, 0.051);
   EXPECT_NEAR(rig.antenna.az_deg, 100.0, 1e-12);
   EXPECT_FALSE(rig.test.running());
+}
+
+TEST(DirectionTest, ThePolarisationAxisIsTestedThroughItsOwnDemand) {
+  Rig rig;
+  EXPECT_NE(rig.start("pol").value_or("").find("no polarisation axis"), std::string::npos);
+  rig.antenna.pol_deg = 10.0;
+  rig.antenna.test_step_deg = 0.05;
+  ASSERT_EQ(rig.start("pol"), std::nullopt);
+  rig.run(3.0);
+  ASSERT_TRUE(rig.result.has_value());
+  EXPECT_EQ((*rig.result)["axis"], "pol");
+  EXPECT_EQ((*rig.result)["commanded"], "cw");
+  EXPECT_EQ((*rig.result)["verdict"], "ok");
+  EXPECT_NEAR((*rig.result)["moved_deg"].get<double>(), 0.5, 0.051);  // driven 1 s, then held
+  EXPECT_NEAR(rig.antenna.az_deg, 100.0, 1e-12);
+  EXPECT_NEAR(rig.antenna.el_deg, 20.0, 1e-12);
+}
+
+TEST(DirectionTest, AFixedElevationHasNoElevationToTest) {
+  Rig rig;
+  DirectionTest fixed{DirectionTestParts{rig.antenna, rig.commands, rig.modes, [] { return false; },
+                                         [&rig] { return rig.now_s; }, true}};
+  const auto refused = fixed.start("el", "console", [](json, std::optional<std::string>) {});
+  EXPECT_NE(refused.value_or("").find("fixed"), std::string::npos);
+  EXPECT_FALSE(fixed.running());
 }
 
 TEST(DirectionTest, AReadingGoingTheOtherWayIsReversedWiring) {

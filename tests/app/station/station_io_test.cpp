@@ -323,6 +323,34 @@ TEST_F(GuardTest, ALimitSwitchStopsTheDriveTowardsItAndReportsIt) {
   EXPECT_LT(antenna->position(now())->az_deg, held_at - 0.5) << "could not leave the switch";
 }
 
+// The polarisation axis's switches ([gpio] pol_ccw_limit / pol_cw_limit): the feed stops on the
+// edge, the state shows it, and the feed can still turn away.
+TEST_F(GuardTest, APolLimitSwitchStopsTheFeedTowardsIt) {
+  config_ = parse(
+      "[target]\nname = \"stop\"\n[mount.pol]\nmax_rate_deg_s = 3.0\n[gpio]\n"
+      "pol_ccw_limit = 20\npol_cw_limit = 21\n");
+  boost::asio::io_context io;
+  FakeGpio gpio(io);
+  auto antenna = guard(gpio, nullptr);
+  antenna->set_pol_demand(control::PolDemand{80.0, 0.0});
+  run(io, *antenna, control::Demand{}, 3.0);
+  const double moving_at = antenna->pol_status()->mount_deg;
+  ASSERT_GT(moving_at, 3.0) << "the simulated feed never started";
+  gpio.set_input("[gpio] pol_cw_limit", true);
+  io.poll();
+  io.restart();
+  EXPECT_TRUE(antenna->state()["limits"]["pol_cw"].get<bool>());
+  EXPECT_FALSE(antenna->state()["limits"]["pol_ccw"].get<bool>());
+  run(io, *antenna, control::Demand{}, 3.0);
+  const double held_at = antenna->pol_status()->mount_deg;
+  EXPECT_LT(held_at - moving_at, 1.5) << "ran on past the switch";
+  EXPECT_TRUE(antenna->faults().empty()) << antenna->faults().front();
+  antenna->set_pol_demand(control::PolDemand{-30.0, 0.0});
+  run(io, *antenna, control::Demand{}, 3.0);
+  EXPECT_LT(antenna->pol_status()->mount_deg, held_at - 1.0) << "could not leave the switch";
+  EXPECT_NE(error_of("[gpio]\npol_cw_limit = 21\n").find("[mount.pol]"), std::string::npos);
+}
+
 TEST_F(GuardTest, AnotherProgramsHoldIsAppliedAtTheNextTickAndSaysSince) {
   boost::asio::io_context io;
   FakeGpio gpio(io);

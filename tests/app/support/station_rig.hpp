@@ -12,15 +12,22 @@
 
 namespace azt::app::testing {
 
-/// An antenna standing at az 100°, el 20°, with faults the test sets. Only a direction test
-/// moves it: the tested axis at `test_rate_deg_s` per tick, the other way when `reversed`.
+/// An antenna standing at az 100°, el 20° (and a pol feed at `pol_deg`, if set), with faults the
+/// test sets. Only a direction test moves it: the tested axis at `test_step_deg` per tick, the
+/// other way when `reversed`.
 class StandingAntenna final : public AntennaBackend {
  public:
   void tick(double /*now_s*/, const control::Demand& demand,
             const control::AzEl& /*rate*/) override {
+    const double sign = reversed ? -1.0 : 1.0;
+    if (pol_deg) *pol_deg += sign * pol_demand.test_direction * test_step_deg;
     if (!demand.test) return;
-    const double step = (reversed ? -1.0 : 1.0) * demand.test->direction * test_step_deg;
-    (demand.test->azimuth ? az_deg : el_deg) += step;
+    (demand.test->azimuth ? az_deg : el_deg) += sign * demand.test->direction * test_step_deg;
+  }
+  void set_pol_demand(const control::PolDemand& demand) override { pol_demand = demand; }
+  [[nodiscard]] std::optional<PolStatus> pol_status() const override {
+    if (!pol_deg) return std::nullopt;
+    return PolStatus{*pol_deg, std::nullopt, false, "", -95.0, 95.0};
   }
   [[nodiscard]] std::optional<proto::PositionReport> position(double /*now_s*/) const override {
     if (lost) return std::nullopt;
@@ -45,7 +52,9 @@ class StandingAntenna final : public AntennaBackend {
   double el_deg = 20.0;
   double test_step_deg = 0.0;  ///< how far a direction test's tick moves the tested axis
   bool reversed = false;
-  bool lost = false;  ///< the position unknown
+  bool lost = false;              ///< the position unknown
+  std::optional<double> pol_deg;  ///< a pol axis ([mount.pol]) standing here; none by default
+  control::PolDemand pol_demand;
 };
 
 /// The front door of a station with the Sun and the Moon as targets, on a 0–450° mount with

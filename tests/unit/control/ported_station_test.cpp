@@ -152,5 +152,20 @@ TEST(PortedStationPol, ATrippedPolSwitchStopsTheDriveIntoIt) {
   EXPECT_LT(s.pol().duty, 0.0);
 }
 
+// The console's direction test of the pol axis: open loop, slowly, the way asked, whatever the
+// feed angle; and a tripped switch still stops it.
+TEST(PortedStationPol, ADirectionTestDrivesThePolAxisSlowlyTheWayAsked) {
+  Station s(true);
+  s.pol().reading_deg = 10.0;
+  for (int i = 0; i < 10; ++i, s.t += kTickS)
+    s.station->tick(s.t, Demand{}, AzEl{}, PolDemand{-40.0, 0.0, +1});
+  EXPECT_GT(s.pol().duty, 0.0);
+  EXPECT_LT(s.pol().duty, 0.5);
+  EXPECT_EQ(s.axes[0]->duty, 0.0);
+  s.station->set_pol_limits(s.t, LimitPair{false, true});
+  s.station->tick(s.t, Demand{}, AzEl{}, PolDemand{std::nullopt, 0.0, +1});
+  EXPECT_EQ(s.pol().duty, 0.0);
+}
+
 }  // namespace
 }  // namespace azt::control

@@ -27,6 +27,9 @@ struct PolAxisConfig {
 struct PolDemand {
   std::optional<double> feed_deg;
   double rate_deg_s = 0.0;
+  /// The console's direction test: +1 or −1 drives the axis slowly that way, open loop
+  /// (DrivenAxis::drive_test), whatever feed_deg says; 0 is the normal demand.
+  int test_direction = 0;
 };
 
 class PolAxis {
