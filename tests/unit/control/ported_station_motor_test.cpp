@@ -179,5 +179,48 @@ TEST(PortedStationBrake, AMotorSensorThatCannotBeReadTripsItsAxisAndABrakeWriteE
   EXPECT_TRUE(w.station->station().faulted());
 }
 
+TEST(PortedStationBrake, ThePolAxisHasItsOwnBrakeLineAndMotorSensor) {
+  auto pol = std::make_shared<FakeMotor>();
+  std::array<std::shared_ptr<FakeMotor>, 2> axes{std::make_shared<FakeMotor>(),
+                                                 std::make_shared<FakeMotor>()};
+  StationControlConfig c;
+  c.tick_s = kTickS;
+  PolAxisConfig p;
+  p.control.lsb_deg = 360.0 / 4096;
+  p.travel = PolTravel{-95.0, 95.0};
+  p.drive.brake = BrakeConfig{0.5, 0.3, 1.0};
+  MotorTripsConfig trips;
+  trips.axis = "pol";
+  trips.temperature_limit_c = 60.0;
+  p.drive.trips = trips;
+  c.pol = p;
+  ports::StationPorts ports;
+  for (std::size_t i = 0; i < 2; ++i) {
+    ports.drives.at(i) = std::make_unique<Drive>(axes.at(i));
+    ports.sensors.at(i) = std::make_unique<Sensor>(axes.at(i));
+  }
+  ports.pol_drive = std::make_unique<Drive>(pol);
+  ports.pol_sensor = std::make_unique<Sensor>(pol);
+  ports.pol_brake = std::make_unique<Line>(pol);
+  ports.pol_motor_sensor = std::make_unique<Readings>(pol);
+  PortedStation station(c, AzEl{}, PositionCorrections{}, std::move(ports));
+  double t = 0.0;
+  double first_duty_s = -1.0;
+  for (int i = 0; i < 40; ++i, t += kTickS) {
+    station.tick(t, Demand{}, AzEl{}, PolDemand{30.0, 0.0});
+    if (pol->duty != 0.0 && first_duty_s < 0.0) first_duty_s = t;
+    ASSERT_TRUE(pol->duty == 0.0 || pol->release) << t;
+  }
+  EXPECT_GE(first_duty_s, 0.5 - 1e-9);
+  pol->sample.temperature_c = 65.0;
+  station.tick(t, Demand{}, AzEl{}, PolDemand{30.0, 0.0});
+  EXPECT_EQ(pol->duty, 0.0);
+  EXPECT_FALSE(pol->release);
+  const auto f = station.faults();
+  EXPECT_TRUE(std::find(f.begin(), f.end(),
+                        "pol: motor_trip: motor temperature 65.0 °C above 60 °C") != f.end())
+      << (f.empty() ? "" : f.front());
+}
+
 }  // namespace
 }  // namespace azt::control
