@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "azt/linux/axis_drives.hpp"
+#include "azt/linux/motor_io.hpp"
 #include "azt/linux/pwm_hbridge.hpp"
 #include "azt/linux/step_dir_drive.hpp"
 #include "common/usage_error.hpp"
@@ -159,6 +160,39 @@ std::unique_ptr<ports::AxisSensor> open_adc_sensor(const HardwareAxisConfig& a,
       break;
   }
   throw std::logic_error("the EncoderHub is not an ADC: " + what);
+}
+
+std::unique_ptr<ports::BrakeLine> open_brake_line(const HardwareAxisConfig& a,
+                                                  HardwarePorts& ports) {
+  if (!a.brake) return nullptr;
+  return linux_os::make_gpio_brake_line(output_line(ports, *a.brake));  // off: braked
+}
+
+std::unique_ptr<ports::MotorSensor> open_motor_sensor(const HardwareAxisConfig& a,
+                                                      HardwarePorts& ports) {
+  if (!a.has_motor_inputs()) return nullptr;
+  std::unique_ptr<linux_os::SpiBus> bus;
+  if (a.current_adc_channel || a.temperature_adc_channel) {
+    auto opened = ports.open_spi(a.motor_adc_device, 1'000'000);
+    if (!opened) throw UsageError(a.key("motor_adc_device") + ": " + opened.error().message);
+    bus = std::move(opened).value();
+  }
+  std::unique_ptr<linux_os::GpioInput> fault;
+  if (a.driver_fault) {
+    if (ports.gpio == nullptr) throw UsageError(a.driver_fault->key + ": no GPIO provider");
+    // Read each tick as the last edge left it: the handler has nothing to do.
+    auto line = ports.gpio->input(*a.driver_fault, linux_os::GpioBias::AsIs, [](bool) {});
+    if (!line) throw UsageError(line.error().message);
+    fault = std::move(line).value();
+  }
+  linux_os::MotorAdcInputs in;
+  in.current_channel = a.current_adc_channel;
+  in.current = a.current;
+  in.temperature_channel = a.temperature_adc_channel;
+  in.temperature_c_per_v = a.temperature_c_per_v;
+  in.temperature_offset_c = a.temperature_offset_c;
+  return linux_os::make_motor_sensor(std::move(bus), in, std::move(fault),
+                                     a.name + " motor (MCP3008 " + a.motor_adc_device + ")");
 }
 
 }  // namespace azt::app

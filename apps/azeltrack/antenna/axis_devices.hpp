@@ -18,6 +18,7 @@
 #include "azt/linux/spi_device.hpp"
 #include "azt/ports/axis_drive.hpp"
 #include "azt/ports/axis_sensor.hpp"
+#include "azt/ports/motor_io.hpp"
 #include "config/daemon_config.hpp"
 
 namespace azt::app {
@@ -45,5 +46,13 @@ std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& axis
 /// axis on an ADS1115 already open shares it (on another channel).
 std::unique_ptr<ports::AxisSensor> open_adc_sensor(const HardwareAxisConfig& axis,
                                                    HardwarePorts& ports);
+
+/// The brake's release line of `axis`; nullptr without `brake`. Throws UsageError naming the key.
+std::unique_ptr<ports::BrakeLine> open_brake_line(const HardwareAxisConfig& axis,
+                                                  HardwarePorts& ports);
+/// The current, temperature and driver-fault inputs of `axis`; nullptr without any. Throws
+/// UsageError naming the key.
+std::unique_ptr<ports::MotorSensor> open_motor_sensor(const HardwareAxisConfig& axis,
+                                                      HardwarePorts& ports);
 
 }  // namespace azt::app

@@ -33,6 +33,8 @@ control::AxisDriveConfig drive_config(const HardwareAxisConfig& a) {
       d.kind = control::DriveKind::Pwm;
       break;
   }
+  if (a.brake) d.brake = a.brake_timing;
+  if (a.has_motor_inputs()) d.trips = a.trips;
   return d;
 }
 
@@ -71,6 +73,13 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
   if (config.station.pol && config.hardware.pol) pol = &*config.hardware.pol;
   if (pol != nullptr) p.pol_sensor = open_adc_sensor(*pol, devices);
   for (std::size_t i = 0; i < driven; ++i)
+    p.motor_sensors.at(i) = open_motor_sensor(*axes.at(i), devices);
+  if (pol != nullptr) p.pol_motor_sensor = open_motor_sensor(*pol, devices);
+  // The brakes before the drives, opened applied: a drive is never live beside a brake line
+  // that cannot be had.
+  for (std::size_t i = 0; i < driven; ++i) p.brakes.at(i) = open_brake_line(*axes.at(i), devices);
+  if (pol != nullptr) p.pol_brake = open_brake_line(*pol, devices);
+  for (std::size_t i = 0; i < driven; ++i)
     p.drives.at(i) = open_axis_drive(*axes.at(i), config.pwm, devices);
   if (pol != nullptr) p.pol_drive = open_axis_drive(*pol, config.pwm, devices);
   return p;
@@ -82,6 +91,13 @@ std::string describe_ports(const ports::StationPorts& p) {
                                  : std::string("fixed"));
   if (p.pol_drive && p.pol_sensor) {
     out += "; pol: " + p.pol_drive->describe() + ", " + p.pol_sensor->describe();
+  }
+  for (const auto* brake : {p.brakes[0].get(), p.brakes[1].get(), p.pol_brake.get()}) {
+    if (brake != nullptr) out += "; " + brake->describe();
+  }
+  for (const auto* motor :
+       {p.motor_sensors[0].get(), p.motor_sensors[1].get(), p.pol_motor_sensor.get()}) {
+    if (motor != nullptr) out += "; " + motor->describe();
   }
   return out;
 }

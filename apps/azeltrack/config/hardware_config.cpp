@@ -135,6 +135,81 @@ void read_step_dir(const ConfigSection& s, HardwareAxisConfig& a, const std::str
   a.steps = *steps;
 }
 
+/// A core settings check's words ("release_s must be …") on the key they name, `prefix` + field.
+[[noreturn]] void fail_field(const ConfigSection& s, const std::string& prefix,
+                             const std::string& message) {
+  const auto space = message.find(' ');
+  s.fail(prefix + message.substr(0, space), message.substr(space + 1));
+}
+
+void read_brake(const ConfigSection& s, HardwareAxisConfig& a, const std::string& chip) {
+  a.brake = read_gpio_line(s, "brake", chip, s.boolean("brake_active_low").value_or(false));
+  control::BrakeConfig b;
+  b.release_s = s.number("brake_release_s").value_or(b.release_s);
+  b.engage_s = s.number("brake_engage_s").value_or(b.engage_s);
+  b.idle_s = s.number("brake_idle_s").value_or(b.idle_s);
+  auto checked = control::BrakeConfig::make(b);
+  if (!checked) fail_field(s, "brake_", checked.error().message);
+  a.brake_timing = *checked;
+}
+
+std::optional<unsigned> mcp3008_channel(const ConfigSection& s, const std::string& key) {
+  if (!s.has(key)) return std::nullopt;
+  return static_cast<unsigned>(s.integer(key).value_or(0));  // 0 to 7 (the schema)
+}
+
+/// The current and temperature inputs, their limits, and the driver's fault line.
+void read_motor_inputs(const ConfigSection& s, HardwareAxisConfig& a, const std::string& chip) {
+  a.current_adc_channel = mcp3008_channel(s, "current_adc_channel");
+  a.temperature_adc_channel = mcp3008_channel(s, "temperature_adc_channel");
+  a.driver_fault =
+      read_gpio_line(s, "driver_fault", chip, s.boolean("driver_fault_active_low").value_or(false));
+  a.trips.axis = a.name;
+  a.current.amps_per_volt = s.number("amps_per_volt").value_or(a.current.amps_per_volt);
+  a.current.offset_v = s.number("current_offset_v").value_or(a.current.offset_v);
+  if (auto c = control::CurrentSense::make(a.current); !c) {
+    fail_field(s, c.error().message.starts_with("offset_v") ? "current_" : "", c.error().message);
+  }
+  a.trips.current_trip_s = s.number("current_trip_s").value_or(a.trips.current_trip_s);
+  a.trips.temperature_hysteresis_c =
+      s.number("temperature_hysteresis_c").value_or(a.trips.temperature_hysteresis_c);
+  a.temperature_c_per_v = s.number("temperature_c_per_v").value_or(a.temperature_c_per_v);
+  a.temperature_offset_c = s.number("temperature_offset_c").value_or(a.temperature_offset_c);
+  // A reading without a limit would watch nothing; a limit without a reading, the same.
+  if (a.current_adc_channel) {
+    a.trips.current_limit_a = s.number("current_limit_a");
+    if (!a.trips.current_limit_a) s.fail("current_limit_a", "is needed with current_adc_channel");
+  } else if (s.has("current_limit_a")) {
+    s.fail("current_limit_a", "needs current_adc_channel (the IS pin's ADC input)");
+  }
+  if (a.temperature_adc_channel) {
+    a.trips.temperature_limit_c = s.number("temperature_limit_c");
+    if (!a.trips.temperature_limit_c)
+      s.fail("temperature_limit_c", "is needed with temperature_adc_channel");
+  } else if (s.has("temperature_limit_c")) {
+    s.fail("temperature_limit_c", "needs temperature_adc_channel (the sensor's ADC input)");
+  }
+  if (auto t = control::MotorTripsConfig::make(a.trips); !t) fail_field(s, "", t.error().message);
+  if (!a.current_adc_channel && !a.temperature_adc_channel) return;
+  const bool pot_on_mcp3008 = a.sensor == AxisSensorKind::Mcp3008;
+  a.motor_adc_device = s.text("motor_adc_device").value_or(pot_on_mcp3008 ? a.adc_device : "");
+  if (a.motor_adc_device.empty()) {
+    s.fail("motor_adc_device",
+           "is needed for current_adc_channel / temperature_adc_channel (an MCP3008's "
+           "/dev/spidevB.C) unless the axis's pot is on an MCP3008");
+  }
+  const bool shares_pot_adc = pot_on_mcp3008 && a.motor_adc_device == a.adc_device;
+  for (const char* key : {"current_adc_channel", "temperature_adc_channel"}) {
+    const auto ch = mcp3008_channel(s, key);
+    if (ch && shares_pot_adc && *ch == a.adc_channel) {
+      s.fail(key, "is the pot's channel (adc_channel)");
+    }
+  }
+  if (a.current_adc_channel && a.current_adc_channel == a.temperature_adc_channel) {
+    s.fail("temperature_adc_channel", "is the current's channel");
+  }
+}
+
 HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
                              const std::string& chip) {
   HardwareAxisConfig a;
@@ -158,6 +233,8 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
       break;
   }
   if (!read_by_hub(a.sensor)) read_adc(s, a);
+  read_brake(s, a, chip);
+  read_motor_inputs(s, a, chip);
   return a;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "azt/control/brake.hpp"
+#include "azt/control/motor_trips.hpp"
 #include "azt/control/pot_calibration.hpp"
 #include "azt/control/relay_drive.hpp"
 #include "azt/control/setpoint_drive.hpp"
@@ -83,11 +85,30 @@ struct HardwareAxisConfig {
   std::uint8_t adc_address = 0x48;  ///< ads1115
   control::PotInputConfig pot;
 
-  /// The GPIO lines this axis uses (relays, bridge enables).
+  // The motor's brake and protection, any drive (docs/hardware.md "Brake, current and
+  // temperature"): the brake's release line and timing; the current (an IBT-2's IS pin) and
+  // the temperature (an LM35) on an MCP3008's channels; the driver's fault line.
+  std::optional<linux_os::GpioLineSpec> brake;
+  control::BrakeConfig brake_timing;
+  std::string motor_adc_device;  ///< the MCP3008 of the current and temperature channels
+  std::optional<unsigned> current_adc_channel;
+  control::CurrentSense current;
+  std::optional<unsigned> temperature_adc_channel;
+  double temperature_c_per_v = 100.0;  ///< an LM35: 10 mV/°C
+  double temperature_offset_c = 0.0;   ///< the temperature at 0 V (a TMP36: −50 °C)
+  std::optional<linux_os::GpioLineSpec> driver_fault;
+  /// The trips' limits (axis = name); used when the axis has a motor input.
+  control::MotorTripsConfig trips;
+
+  [[nodiscard]] bool has_motor_inputs() const {
+    return current_adc_channel || temperature_adc_channel || driver_fault;
+  }
+
+  /// The GPIO lines this axis uses (relays, bridge enables, the brake, the driver's fault).
   [[nodiscard]] std::vector<const linux_os::GpioLineSpec*> gpio_lines() const {
     std::vector<const linux_os::GpioLineSpec*> out;
-    for (const auto* l :
-         {&relay_forward, &relay_reverse, &relay_power, &relay_polarity, &enable, &step_dir}) {
+    for (const auto* l : {&relay_forward, &relay_reverse, &relay_power, &relay_polarity, &enable,
+                          &step_dir, &brake, &driver_fault}) {
       if (*l) out.push_back(&**l);
     }
     return out;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace azt::control {
 namespace {
@@ -56,7 +57,10 @@ DrivenAxis::DrivenAxis(const AxisControlConfig& control, const SupervisorConfig&
       drive_(drive),
       relay_(drive.relay),
       mount_deg_(start_mount_deg),
-      tick_s_(tick_s) {}
+      tick_s_(tick_s) {
+  if (drive.brake) brake_.emplace(*drive.brake);
+  if (drive.trips) trips_.emplace(*drive.trips);
+}
 
 void DrivenAxis::on_reading(double now_s, double mount_deg) {
   if (supervisor_.on_reading(now_s, mount_deg)) mount_deg_ = mount_deg;
@@ -90,7 +94,9 @@ bool DrivenAxis::moving() const {
   return duty() != 0.0;
 }
 
-std::uint64_t DrivenAxis::starts() const {
+std::uint64_t DrivenAxis::starts() const { return drive_starts() - unstarted_; }
+
+std::uint64_t DrivenAxis::drive_starts() const {
   switch (drive_.kind) {
     case DriveKind::Relay:
       return relay_.starts();
@@ -102,7 +108,22 @@ std::uint64_t DrivenAxis::starts() const {
 }
 
 AxisStatus DrivenAxis::status() const {
-  return AxisStatus{mount_deg_, duty(), moving(), supervisor_.fault(), supervisor_.reason()};
+  AxisStatus s;
+  s.mount_deg = mount_deg_;
+  s.duty = duty();
+  s.moving = moving();
+  s.fault = supervisor_.fault();
+  s.reason = supervisor_.reason();
+  if (s.fault == FaultKind::None && tripped()) {
+    s.fault = FaultKind::MotorTrip;
+    s.reason = trips_->reason();
+  }
+  if (brake_) {
+    s.brake = brake_->state();
+    s.brake_release = brake_->release_output();
+  }
+  s.reset_refused = reset_refused_;
+  return s;
 }
 
 std::optional<double> DrivenAxis::setpoint_deg() const {
@@ -111,6 +132,11 @@ std::optional<double> DrivenAxis::setpoint_deg() const {
 }
 
 void DrivenAxis::halt(double now_s) {
+  halt_drive(now_s);
+  if (brake_) brake_->halt(now_s);
+}
+
+void DrivenAxis::halt_drive(double now_s) {
   controller_.halt();
   relay_.halt(now_s);
   if (sends_setpoint(drive_.kind)) {
@@ -123,6 +149,42 @@ void DrivenAxis::set_limits(const LimitPair& limits) {
   limits_ = limits;
   // No time here: a relay's dead times then run from its next update.
   if (into_limit(duty())) halt(std::numeric_limits<double>::quiet_NaN());
+}
+
+void DrivenAxis::on_motor_readings(double now_s, const MotorReadings& readings) {
+  if (!trips_) return;
+  const bool was_tripped = tripped();
+  if (!trips_->update(readings, now_s) && !was_tripped) halt(now_s);
+}
+
+void DrivenAxis::clear_faults() {
+  supervisor_.clear();
+  reset_refused_.clear();
+  if (trips_) {
+    if (auto why = trips_->reset()) reset_refused_ = std::move(*why);
+  }
+}
+
+void DrivenAxis::uncount_starts(std::uint64_t before, double duty) {
+  if (duty == 0.0) unstarted_ += drive_starts() - before;
+}
+
+bool DrivenAxis::gate(double now_s, double wanted_duty) {
+  // Faulted, tripped or stale: the brake is applied now and not released again until the axis
+  // may move (it would otherwise be released and applied every engage_s while faulted).
+  const bool blocked =
+      supervisor_.fault() != FaultKind::None || tripped() || supervisor_.stale(now_s);
+  double duty = blocked ? 0.0 : wanted_duty;
+  if (brake_) {
+    if (blocked) brake_->halt(now_s);
+    duty = brake_->update(duty, now_s);
+  }
+  const auto verdict = supervisor_.check(now_s, duty);
+  if (!verdict.allow_motion) {
+    if (brake_) brake_->halt(now_s);
+    return false;
+  }
+  return !blocked && duty == wanted_duty;
 }
 
 void DrivenAxis::emergency_stop(double now_s, std::string_view reason) {
@@ -143,15 +205,21 @@ double DrivenAxis::drive(double now_s, std::optional<double> target_deg, double 
   } else {
     holding_ = false;
   }
+  const std::uint64_t before = drive_starts();
+  double duty = 0.0;
   switch (drive_.kind) {
     case DriveKind::Relay:
-      return drive_relay(now_s, *target_deg, rate_deg_s);
+      duty = drive_relay(now_s, *target_deg, rate_deg_s);
+      break;
     case DriveKind::Setpoint:
-      return drive_setpoint(now_s, *target_deg);
+      duty = drive_setpoint(now_s, *target_deg);
+      break;
     case DriveKind::Pwm:
+      duty = drive_pwm(now_s, *target_deg, rate_deg_s);
       break;
   }
-  return drive_pwm(now_s, *target_deg, rate_deg_s);
+  uncount_starts(before, duty);
+  return duty;
 }
 
 double DrivenAxis::drive_pwm(double now_s, double target_deg, double rate_deg_s) {
@@ -161,8 +229,9 @@ double DrivenAxis::drive_pwm(double now_s, double target_deg, double rate_deg_s)
     controller_.halt();
     duty = 0.0;
   }
-  const auto verdict = supervisor_.check(now_s, duty);
-  if (!verdict.allow_motion) controller_.halt();
+  // While the brake holds the controller is halted, so its soft start begins from zero once the
+  // brake is off rather than from whatever it ramped up to against the brake.
+  if (!gate(now_s, duty)) controller_.halt();
   return controller_.duty();
 }
 
@@ -172,8 +241,7 @@ double DrivenAxis::drive_relay(double now_s, double target_deg, double rate_deg_
     relay_.halt(now_s);
     duty = 0.0;
   }
-  const auto verdict = supervisor_.check(now_s, duty);
-  if (!verdict.allow_motion) relay_.halt(now_s);
+  if (!gate(now_s, duty)) relay_.halt(now_s);
   return this->duty();
 }
 
@@ -184,8 +252,7 @@ double DrivenAxis::drive_setpoint(double now_s, double target_deg) {
   const double error = setpoint - mount_deg_;
   setpoint_duty_ = std::fabs(error) > drive_.setpoint_band_deg ? std::copysign(1.0, error) : 0.0;
   setpoint_deg_ = setpoint;
-  const auto verdict = supervisor_.check(now_s, setpoint_duty_);
-  if (!verdict.allow_motion) {
+  if (!gate(now_s, setpoint_duty_)) {
     setpoint_deg_ = mount_deg_;
     setpoint_duty_ = 0.0;
   }
@@ -199,6 +266,7 @@ double DrivenAxis::drive_test(double now_s, int direction) {
   constexpr double kTestDuty = 0.35;
   constexpr double kSetpointLeadDeg = 5.0;
   holding_ = false;
+  const std::uint64_t before = drive_starts();
   double duty = 0.0;
   switch (drive_.kind) {
     case DriveKind::Pwm:
@@ -217,8 +285,14 @@ double DrivenAxis::drive_test(double now_s, int direction) {
   // The supervisor still stops it for a stale reading, a latched fault or the E-stop, but is not
   // asked to judge the motion: which way the shaft goes is the test's question, and a reversed
   // motor must come back as its answer rather than as a latched runaway.
-  if (into_limit(duty) || !supervisor_.check(now_s, 0.0).allow_motion) {
+  if (into_limit(duty) || tripped() || !supervisor_.check(now_s, 0.0).allow_motion) {
     halt(now_s);
+    uncount_starts(before, 0.0);
+    return 0.0;
+  }
+  if (brake_ && brake_->update(duty, now_s) != duty) {
+    halt_drive(now_s);  // the brake is being released: the test starts once it is off
+    uncount_starts(before, 0.0);
     return 0.0;
   }
   return duty;

@@ -1,16 +1,35 @@
 #include "azt/control/ported_station.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace azt::control {
 namespace {
 
-constexpr std::array<const char*, 2> kAxisNames{"az", "el"};
-
 void add_axis_fault(std::vector<std::string>& out, const char* name, const AxisStatus& axis) {
   if (axis.fault == FaultKind::None) return;
-  out.push_back(std::string(name) + ": " + std::string(to_string(axis.fault)) + ": " + axis.reason);
+  // A motor trip's words name their axis already ("az: motor temperature …").
+  const std::string prefix = std::string(name) + ": ";
+  std::string_view reason = axis.reason;
+  if (reason.starts_with(prefix)) reason.remove_prefix(prefix.size());
+  out.push_back(prefix + std::string(to_string(axis.fault)) + ": " + std::string(reason));
+  if (!axis.reset_refused.empty()) out.push_back(axis.reset_refused);
+}
+
+const char* axis_name(std::size_t i) {
+  constexpr std::array<const char*, 3> kNames{"az", "el", "pol"};
+  return kNames.at(i);
+}
+
+/// A motor sensor's sample as the axis's protection takes it; a read error is a reading that is
+/// not a number (the axis trips on it rather than running unwatched).
+MotorReadings motor_readings(const Result<ports::MotorSample>& r) {
+  if (!r) {
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    return MotorReadings{kNaN, kNaN, std::nullopt};
+  }
+  return MotorReadings{r.value().current_a, r.value().temperature_c, r.value().driver_fault};
 }
 
 void add_once(std::vector<std::string>& out, const std::optional<std::string>& fault) {
@@ -49,10 +68,9 @@ void PortedStation::tick(double now_s, const Demand& demand, const AzEl& rate,
                                 fresh_[1]->deg);
     fresh_ = {};
   }
-  if (pol_) {
-    read_pol(now_s);
-    pol_->drive(now_s, pol);
-  }
+  if (pol_) read_pol(now_s);
+  read_motors(now_s);
+  if (pol_) pol_->drive(now_s, pol);
   apply(now_s, station_.tick(now_s, demand, rate));
 }
 
@@ -80,6 +98,11 @@ void PortedStation::stop_with(double now_s, std::string_view reason) {
     (void)ports_.pol_drive->apply(now_s, 0.0, pol_->axis().setpoint_deg());
     ports_.pol_drive->off(now_s);
   }
+  // The brakes after the motors: a spring brake holds whatever the controller does next.
+  for (const auto& brake : ports_.brakes) {
+    if (brake) brake->off(now_s);
+  }
+  if (ports_.pol_brake) ports_.pol_brake->off(now_s);
 }
 
 std::vector<std::string> PortedStation::faults() const {
@@ -88,6 +111,7 @@ std::vector<std::string> PortedStation::faults() const {
   add_axis_fault(out, "el", station_.el());
   if (pol_) add_axis_fault(out, "pol", pol_->axis().status());
   if (!drive_fault_.empty()) out.push_back(drive_fault_);
+  for (const auto& fault : motor_sensor_fault_) add_once(out, fault);
   for (std::size_t i = 0; i < 2; ++i) {
     if (ports_.sensors.at(i)) add_once(out, ports_.sensors.at(i)->latched_fault());
     add_once(out, sensor_fault_.at(i));
@@ -155,17 +179,65 @@ void PortedStation::apply(double now_s, const Duties& d) {
   for (std::size_t i = 0; i < 2; ++i) {
     if (!ports_.drives.at(i)) continue;
     if (auto r = ports_.drives.at(i)->apply(now_s, duty.at(i), setpoint.at(i)); !r) {
-      drive_fault_ = std::string(kAxisNames.at(i)) + " drive: " + r.error().message;
+      drive_fault_ = std::string(axis_name(i)) + " drive: " + r.error().message;
       stop_with(now_s, "stopped by the daemon");
       return;
     }
   }
-  if (!pol_) return;
-  const DrivenAxis& axis = pol_->axis();
-  if (auto r = ports_.pol_drive->apply(now_s, axis.duty(), axis.setpoint_deg()); !r) {
-    drive_fault_ = "pol drive: " + r.error().message;
-    stop_with(now_s, "stopped by the daemon");
+  if (pol_) {
+    const DrivenAxis& axis = pol_->axis();
+    if (auto r = ports_.pol_drive->apply(now_s, axis.duty(), axis.setpoint_deg()); !r) {
+      drive_fault_ = "pol drive: " + r.error().message;
+      stop_with(now_s, "stopped by the daemon");
+      return;
+    }
   }
+  (void)apply_brakes(now_s);
+}
+
+bool PortedStation::apply_brakes(double now_s) {
+  // Only an axis with a brake writes its line: the brake's own state says when it is released.
+  const std::array<AxisStatus, 2> axes{station_.az(), station_.el()};
+  std::array<std::pair<ports::BrakeLine*, std::optional<bool>>, 3> lines{
+      std::pair{ports_.brakes[0].get(), std::optional<bool>{}},
+      std::pair{ports_.brakes[1].get(), std::optional<bool>{}},
+      std::pair{ports_.pol_brake.get(), std::optional<bool>{}}};
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (axes.at(i).brake) lines.at(i).second = axes.at(i).brake_release;
+  }
+  if (pol_) {
+    const AxisStatus pol = pol_->axis().status();
+    if (pol.brake) lines[2].second = pol.brake_release;
+  }
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    auto [line, release] = lines.at(i);
+    if (line == nullptr || !release) continue;
+    if (auto r = line->apply(now_s, *release); !r) {
+      drive_fault_ = std::string(axis_name(i)) + " brake: " + r.error().message;
+      stop_with(now_s, "stopped by the daemon");
+      return false;
+    }
+  }
+  return true;
+}
+
+void PortedStation::read_motors(double now_s) {
+  std::array<MotorReadings, 3> readings{};
+  const std::array<ports::MotorSensor*, 3> motors{
+      ports_.motor_sensors[0].get(), ports_.motor_sensors[1].get(), ports_.pol_motor_sensor.get()};
+  for (std::size_t i = 0; i < motors.size(); ++i) {
+    if (motors.at(i) == nullptr) continue;
+    const auto r = motors.at(i)->read(now_s);
+    readings.at(i) = motor_readings(r);
+    if (r) {
+      motor_sensor_fault_.at(i).reset();
+    } else {
+      motor_sensor_fault_.at(i) = std::string(axis_name(i)) + " motor sensor: " + r.error().message;
+    }
+  }
+  // Every tick, readings or not: an over-current is timed on the loop's clock.
+  station_.on_motor_readings(now_s, readings[0], readings[1]);
+  if (pol_) pol_->axis().on_motor_readings(now_s, readings[2]);
 }
 
 }  // namespace azt::control

@@ -147,4 +147,10 @@ void StationController::clear_faults() {
   el_.clear_faults();
 }
 
+void StationController::on_motor_readings(double now_s, const MotorReadings& az,
+                                          const MotorReadings& el) {
+  az_.on_motor_readings(now_s, az);
+  el_.on_motor_readings(now_s, el);
+}
+
 }  // namespace azt::control

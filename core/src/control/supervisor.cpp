@@ -27,6 +27,8 @@ std::string_view to_string(FaultKind kind) {
       return "encoder_jump";
     case FaultKind::EStop:
       return "estop";
+    case FaultKind::MotorTrip:
+      return "motor_trip";
   }
   return "none";
 }

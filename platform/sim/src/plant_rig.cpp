@@ -9,6 +9,16 @@ namespace azt::sim {
 PlantRig::PlantRig(const PlantSetup& plant, std::unique_ptr<SimulatedHub> hub)
     : faults_(plant.faults), plants_(plant.az, plant.el), hub_(std::move(hub)) {
   if (plant.pol) pol_.emplace(*plant.pol);
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (plant.brakes.at(i)) brakes_.at(i).emplace(*plant.brakes.at(i));
+    if (plant.thermal.at(i)) thermal_.at(i).emplace(*plant.thermal.at(i));
+  }
+}
+
+std::optional<double> PlantRig::motor_temperature_c(std::size_t axis, double now_s) {
+  advance(now_s);
+  if (!thermal_.at(axis)) return std::nullopt;
+  return thermal_.at(axis)->temperature_c();
 }
 
 std::optional<HubArrival> PlantRig::frame_for(std::size_t axis, double now_s) {
@@ -33,7 +43,13 @@ void PlantRig::advance(double now_s) {
   const auto steps = static_cast<int>(std::ceil(dt / step_s - 1e-9));
   for (int i = 0; i < steps; ++i) {
     const double step = std::min(step_s, dt - i * step_s);
-    plants_.step(duty_[0], duty_[1], step);
+    // The motor heats with its duty whether or not a brake lets the shaft turn.
+    std::array<double, 2> shaft_duty = duty_;
+    for (std::size_t a = 0; a < 2; ++a) {
+      if (brakes_.at(a)) shaft_duty.at(a) = brakes_.at(a)->step(brake_on_.at(a), duty_.at(a), step);
+      if (thermal_.at(a)) thermal_.at(a)->step(duty_.at(a), step);
+    }
+    plants_.step(shaft_duty[0], shaft_duty[1], step);
     if (pol_) pol_->step(pol_duty_, step);
     faults_.inject_due(from_s + std::min(dt, (i + 1) * step_s), plants_);
     hub_->run(plants_, step);

@@ -77,6 +77,38 @@ class SimPolSensor final : public ports::AxisSensor {
   std::uint8_t bits_;
 };
 
+/// The brake plant's solenoid.
+class SimBrakeLine final : public ports::BrakeLine {
+ public:
+  SimBrakeLine(std::shared_ptr<PlantRig> rig, std::size_t axis)
+      : rig_(std::move(rig)), axis_(axis) {}
+  Result<bool> apply(double /*now_s*/, bool release) override {
+    rig_->set_brake(axis_, release);
+    return true;
+  }
+  void off(double /*now_s*/) override { rig_->set_brake(axis_, false); }
+  [[nodiscard]] std::string describe() const override { return "simulated brake"; }
+
+ private:
+  std::shared_ptr<PlantRig> rig_;
+  std::size_t axis_;
+};
+
+/// A temperature sensor on the simulated motor's winding.
+class SimMotorSensor final : public ports::MotorSensor {
+ public:
+  SimMotorSensor(std::shared_ptr<PlantRig> rig, std::size_t axis)
+      : rig_(std::move(rig)), axis_(axis) {}
+  Result<ports::MotorSample> read(double now_s) override {
+    return ports::MotorSample{std::nullopt, rig_->motor_temperature_c(axis_, now_s), std::nullopt};
+  }
+  [[nodiscard]] std::string describe() const override { return "simulated motor temperature"; }
+
+ private:
+  std::shared_ptr<PlantRig> rig_;
+  std::size_t axis_;
+};
+
 }  // namespace
 
 std::unique_ptr<SimulatedHub> make_model_hub(const PlantSetup& plant) {
@@ -91,6 +123,9 @@ SimulatedStation make_simulated_station(const PlantSetup& plant,
   for (std::size_t i = 0; i < (plant.el_axis ? 2U : 1U); ++i) {
     station.ports.drives.at(i) = std::make_unique<SimDrive>(rig, i);
     station.ports.sensors.at(i) = std::make_unique<SimSensor>(rig, i);
+    if (plant.brakes.at(i)) station.ports.brakes.at(i) = std::make_unique<SimBrakeLine>(rig, i);
+    if (plant.thermal.at(i))
+      station.ports.motor_sensors.at(i) = std::make_unique<SimMotorSensor>(rig, i);
   }
   if (plant.pol) {
     station.ports.pol_drive = std::make_unique<SimPolDrive>(rig);

@@ -48,7 +48,7 @@ struct BrakeConfig {
 /// wanted duty has been zero for idle_s, and a new move after an engage waits for the engage to
 /// finish and then for a full release.
 ///
-/// Plug-in point (a later session's DrivenAxis), each tick: duty = brake.update(wanted, now_s)
+/// Plugged in by DrivenAxis (driven_axis.hpp), each tick: duty = brake.update(wanted, now_s)
 /// with the duty the controller (or homing) wants after the supervisor's verdict; write
 /// release_output() to the brake's line with the drive. While holding() the axis calls its
 /// controller's halt() so the soft start begins from zero once released (the controller would

@@ -11,6 +11,8 @@
 #include <string_view>
 
 #include "azt/control/axis_controller.hpp"
+#include "azt/control/brake.hpp"
+#include "azt/control/motor_trips.hpp"
 #include "azt/control/relay_drive.hpp"
 #include "azt/control/supervisor.hpp"
 
@@ -31,6 +33,12 @@ struct AxisDriveConfig {
   /// Setpoint: the box's own deadband. Further than this from the setpoint the box is driving,
   /// which is what the supervisor watches for stalls and runaways.
   double setpoint_band_deg = 2.0;
+  /// A brake to release before the motor may pull (brake.hpp); empty: no brake, the motor is
+  /// driven at once.
+  std::optional<BrakeConfig> brake;
+  /// The motor's protection (motor_trips.hpp): current, temperature, the driver's fault line;
+  /// empty: nothing watched at the motor.
+  std::optional<MotorTripsConfig> trips;
 };
 
 /// What the station knows of one axis.
@@ -39,7 +47,13 @@ struct AxisStatus {
   double duty = 0.0;
   bool moving = false;
   FaultKind fault = FaultKind::None;
-  std::string reason;  ///< the supervisor's words when faulted
+  std::string reason;               ///< the supervisor's (or the motor trip's) words when faulted
+  std::optional<BrakeState> brake;  ///< empty: the axis has no brake
+  bool brake_release =
+      false;  ///< the brake's line is energised (the brake is or is being released)
+  /// Why the operator's last clear left a motor trip latched (its cause is still there); empty
+  /// otherwise.
+  std::string reset_refused;
 };
 
 /// One axis's travel-end switches (docs/hardware.md), tripped or not: `reverse` at the end of
@@ -66,13 +80,19 @@ class DrivenAxis {
   double drive(double now_s, std::optional<double> target_deg, double rate_deg_s);
   /// The direction test's open-loop drive (Demand::test): slowly, one way.
   double drive_test(double now_s, int direction);
-  /// Stops the drive now, whatever its kind (a setpoint axis is sent where it stands).
+  /// Stops the drive now, whatever its kind (a setpoint axis is sent where it stands), and
+  /// applies the brake at once: every caller is a safety stop.
   void halt(double now_s);
+  /// This tick's motor readings (current, temperature, the driver's fault line), when the axis
+  /// has motor protection: a trip stops the axis at once and latches as a MotorTrip fault.
+  void on_motor_readings(double now_s, const MotorReadings& readings);
   /// The switches changed (an input edge): a drive into a tripped one stops at once.
   void set_limits(const LimitPair& limits);
 
   void emergency_stop(double now_s, std::string_view reason);
-  void clear_faults() { supervisor_.clear(); }
+  /// The operator's reset: the supervisor's faults, and a motor trip unless its cause remains
+  /// (then the trip stays and status().reset_refused says why).
+  void clear_faults();
 
   [[nodiscard]] double mount_deg() const { return mount_deg_; }
   [[nodiscard]] double duty() const;
@@ -82,7 +102,8 @@ class DrivenAxis {
   [[nodiscard]] AxisStatus status() const;
   /// Setpoint axes: the angle to send; nullopt for duty-driven axes.
   [[nodiscard]] std::optional<double> setpoint_deg() const;
-  [[nodiscard]] bool faulted() const { return supervisor_.fault() != FaultKind::None; }
+  [[nodiscard]] bool faulted() const { return supervisor_.fault() != FaultKind::None || tripped(); }
+  [[nodiscard]] bool tripped() const { return trips_ && trips_->tripped() != MotorTrip::None; }
   [[nodiscard]] bool stale(double now_s) const { return supervisor_.stale(now_s); }
   [[nodiscard]] const AxisControlConfig& control_config() const { return controller_.config(); }
 
@@ -92,6 +113,15 @@ class DrivenAxis {
   double drive_setpoint(double now_s, double target_deg);
   /// A duty that runs into a tripped switch.
   [[nodiscard]] bool into_limit(double duty) const;
+  /// Whether the drive may keep the duty it wants this tick: not while faulted, tripped, stale or
+  /// braked. Applies the brake at once on a safety stop, and tells the supervisor the duty the
+  /// motor really gets (zero while the brake holds: no stall is counted against a brake).
+  [[nodiscard]] bool gate(double now_s, double wanted_duty);
+  /// Stops the controller, the relays or the setpoint box, leaving the brake as it is.
+  void halt_drive(double now_s);
+  [[nodiscard]] std::uint64_t drive_starts() const;
+  /// Starts the drive counted in a tick whose duty never reached the motor are not starts.
+  void uncount_starts(std::uint64_t before, double duty);
 
   AxisController controller_;
   AxisSupervisor supervisor_;
@@ -103,6 +133,10 @@ class DrivenAxis {
   std::optional<double> setpoint_deg_;  ///< Setpoint axes: what the box was last given
   double setpoint_duty_ = 0.0;          ///< Setpoint axes: the direction the box drives
   bool holding_ = false;                ///< the last tick had no target (STOP, or holding)
+  std::optional<Brake> brake_;
+  std::optional<MotorTrips> trips_;
+  std::string reset_refused_;
+  std::uint64_t unstarted_ = 0;  ///< drive starts withheld by the brake or a stop in their tick
 };
 
 }  // namespace azt::control

@@ -70,7 +70,7 @@ struct MotorReadings {
 
 /// The motor protection of one axis. Pure: time is a parameter (seconds of a monotonic clock).
 ///
-/// Plug-in point (a later session's DrivenAxis), each tick: update() with the readings that
+/// Plugged in by DrivenAxis (driven_axis.hpp), each tick: update() with the readings that
 /// arrived (ADC channels through the sensors already supported: the IS voltage through
 /// CurrentSense::amps(); a temperature sensor in °C; a GPIO line); when it returns false the
 /// axis stops at once (duty 0, the brake applied, as a supervisor fault) and shows reason().

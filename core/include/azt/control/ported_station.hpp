@@ -58,6 +58,10 @@ class PortedStation {
   void read_sensors(double now_s);
   void read_pol(double now_s);
   void apply(double now_s, const Duties& d);
+  /// Reads each axis's motor sensor, if it has one, and hands the readings to its axis.
+  void read_motors(double now_s);
+  /// Writes each brake line as its axis's brake wants it; false after a write error (stopped).
+  bool apply_brakes(double now_s);
   /// The sensors that hold a fault of their own: both axes', and the pol axis's if any.
   [[nodiscard]] std::vector<const ports::AxisSensor*> sensors() const;
 
@@ -68,6 +72,8 @@ class PortedStation {
   std::array<ports::SensorReading, 2> fresh_;
   std::array<std::optional<std::string>, 2> sensor_fault_;
   std::string drive_fault_;
+  /// A motor sensor's read error per axis (az, el, pol): the axis trips on it, this says why.
+  std::array<std::optional<std::string>, 3> motor_sensor_fault_;
 };
 
 }  // namespace azt::control

@@ -116,6 +116,8 @@ class StationController {
   void emergency_stop(double now_s, std::string_view reason = "emergency stop input active");
   /// Clears latched faults (the operator's explicit reset).
   void clear_faults();
+  /// This tick's motor readings per axis (driven_axis.hpp): a trip stops that axis at once.
+  void on_motor_readings(double now_s, const MotorReadings& az, const MotorReadings& el);
 
  private:
   /// Where a continuous move on one axis is going: its direction, and below full speed the goal

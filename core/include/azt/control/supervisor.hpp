@@ -9,8 +9,9 @@
 namespace azt::control {
 
 /// What stops an axis. Stale readings stop the motors for as long as they last; every other
-/// kind latches until clear().
-enum class FaultKind { None, StalePosition, Stall, Runaway, EncoderJump, EStop };
+/// kind latches until clear(). MotorTrip is never the supervisor's own: DrivenAxis reports its
+/// motor protection's trip (motor_trips.hpp) with it.
+enum class FaultKind { None, StalePosition, Stall, Runaway, EncoderJump, EStop, MotorTrip };
 
 std::string_view to_string(FaultKind kind);
 

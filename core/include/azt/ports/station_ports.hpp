@@ -7,17 +7,23 @@
 
 #include "azt/ports/axis_drive.hpp"
 #include "azt/ports/axis_sensor.hpp"
+#include "azt/ports/motor_io.hpp"
 
 namespace azt::ports {
 
 /// Azimuth first, then elevation; the polarisation axis's, if the station has one (nullptr: no
 /// pol axis). A station with a fixed elevation (StationControlConfig::el_fixed_deg) has no
 /// elevation drive or sensor: both are nullptr.
+/// Brakes and motor sensors are optional per axis (nullptr: none).
 struct StationPorts {
   std::array<std::unique_ptr<AxisDrive>, 2> drives;
   std::array<std::unique_ptr<AxisSensor>, 2> sensors;
   std::unique_ptr<AxisDrive> pol_drive;
   std::unique_ptr<AxisSensor> pol_sensor;
+  std::array<std::unique_ptr<BrakeLine>, 2> brakes;
+  std::array<std::unique_ptr<MotorSensor>, 2> motor_sensors;
+  std::unique_ptr<BrakeLine> pol_brake;
+  std::unique_ptr<MotorSensor> pol_motor_sensor;
 };
 
 }  // namespace azt::ports

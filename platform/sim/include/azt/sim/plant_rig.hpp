@@ -22,6 +22,11 @@ class PlantRig {
   PlantRig(const PlantSetup& plant, std::unique_ptr<SimulatedHub> hub);
 
   void set_duty(std::size_t axis, double duty) { duty_.at(axis) = duty; }
+  /// The brake line of `axis` (no brake plant: ignored).
+  void set_brake(std::size_t axis, bool release) { brake_on_.at(axis) = release; }
+  /// The motor temperature of `axis` at `now_s`, once the plants have run up to it; nullopt
+  /// without a thermal plant.
+  std::optional<double> motor_temperature_c(std::size_t axis, double now_s);
   /// The polarisation plant's duty (no pol plant: ignored).
   void set_pol_duty(double duty) { pol_duty_ = duty; }
   /// The duty the drive last set on `axis`.
@@ -37,6 +42,10 @@ class PlantRig {
   [[nodiscard]] const SimulatedHub& hub() const { return *hub_; }
   /// The polarisation plant's truth; nullptr without one.
   [[nodiscard]] const AxisPlant* pol_plant() const { return pol_ ? &*pol_ : nullptr; }
+  /// The brake of `axis`; nullptr without one.
+  [[nodiscard]] const BrakePlant* brake(std::size_t axis) const {
+    return brakes_.at(axis) ? &*brakes_.at(axis) : nullptr;
+  }
 
  private:
   void advance(double now_s);
@@ -46,6 +55,9 @@ class PlantRig {
   std::unique_ptr<SimulatedHub> hub_;
   std::array<double, 2> duty_{};
   std::optional<AxisPlant> pol_;
+  std::array<std::optional<BrakePlant>, 2> brakes_;
+  std::array<bool, 2> brake_on_{};
+  std::array<std::optional<MotorThermalPlant>, 2> thermal_;
   double pol_duty_ = 0.0;
   std::optional<double> first_s_;  ///< the configured faults are timed from the first read
   std::optional<double> last_s_;

@@ -3,6 +3,7 @@
 // EncoderHub link, and the faults to inject. What the station's controller knows of the mount is
 // not here but in control::StationSetup: a real station runs with that alone.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -10,7 +11,9 @@
 #include "azt/calibration/pointing_model.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "azt/sim/axis_plant.hpp"
+#include "azt/sim/brake_plant.hpp"
 #include "azt/sim/model_hub.hpp"
+#include "azt/sim/motor_thermal_plant.hpp"
 
 namespace azt::sim {
 
@@ -36,6 +39,12 @@ struct PlantSetup {
   /// The polarisation axis's plant ([sim.pol]), if the station has one. Its absolute encoder is
   /// read directly each tick, not through the hub (the EncoderHub carries two axes).
   std::optional<AxisParams> pol;
+  /// A brake on azimuth and elevation (index 0, 1), if any: the shaft does not turn while it
+  /// holds, and the station gets a brake line for it.
+  std::array<std::optional<BrakePlantParams>, 2> brakes;
+  /// The motors' winding temperature (index 0, 1), if modelled: the station reads it as a
+  /// temperature sensor on the motor.
+  std::array<std::optional<MotorThermalParams>, 2> thermal;
   /// False: the station's elevation does not move ([mount.el] fixed_deg): it gets no elevation
   /// drive or sensor, and the elevation plant stays where it starts.
   bool el_axis = true;
