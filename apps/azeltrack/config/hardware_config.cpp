@@ -11,6 +11,18 @@ namespace azt::app {
 
 namespace {
 
+/// Whether the axis's pot is read by an MCP3008, whose spare channels may read its motor.
+bool pot_on_mcp3008(AxisSensorKind sensor) {
+  switch (sensor) {
+    case AxisSensorKind::Mcp3008:
+      return true;
+    case AxisSensorKind::Hub:
+    case AxisSensorKind::Ads1115:
+      return false;
+  }
+  return false;
+}
+
 /// [a, deg_a, b, deg_b]: two measured points (four numbers: the schema).
 std::optional<std::array<double, 4>> two_points(const ConfigSection& s, const std::string& key) {
   const toml::array* a = s.array(key);
@@ -191,14 +203,14 @@ void read_motor_inputs(const ConfigSection& s, HardwareAxisConfig& a, const std:
   }
   if (auto t = control::MotorTripsConfig::make(a.trips); !t) fail_field(s, "", t.error().message);
   if (!a.current_adc_channel && !a.temperature_adc_channel) return;
-  const bool pot_on_mcp3008 = a.sensor == AxisSensorKind::Mcp3008;
-  a.motor_adc_device = s.text("motor_adc_device").value_or(pot_on_mcp3008 ? a.adc_device : "");
+  const bool pot_adc_shareable = pot_on_mcp3008(a.sensor);
+  a.motor_adc_device = s.text("motor_adc_device").value_or(pot_adc_shareable ? a.adc_device : "");
   if (a.motor_adc_device.empty()) {
     s.fail("motor_adc_device",
            "is needed for current_adc_channel / temperature_adc_channel (an MCP3008's "
            "/dev/spidevB.C) unless the axis's pot is on an MCP3008");
   }
-  const bool shares_pot_adc = pot_on_mcp3008 && a.motor_adc_device == a.adc_device;
+  const bool shares_pot_adc = pot_adc_shareable && a.motor_adc_device == a.adc_device;
   for (const char* key : {"current_adc_channel", "temperature_adc_channel"}) {
     const auto ch = mcp3008_channel(s, key);
     if (ch && shares_pot_adc && *ch == a.adc_channel) {
