@@ -212,5 +212,48 @@ TEST(DrivenAxisPulses, HomingWithoutPulsesFailsWithWordsAndHolds) {
   EXPECT_EQ(p.axis.duty(), 0.0);
 }
 
+TEST(PulseAxis, CountsAQuadraturePairInDegreesAndRefusesABadPart) {
+  // A rotator with a quadrature encoder on the motor: 11.7 counts per degree (an SRT-like dish),
+  // the index switch at 90°.
+  PulseAxisConfig c;
+  c.counter.kind = PulseInputKind::Quadrature;
+  c.homing.seek_duty = 0.5;
+  c.homing.reapproach = false;
+  c.homing.stop_s = 0.0;
+  c.homing.backoff_s = 0.0;
+  c.scale = {PulseUnit::Degrees, 11.7, 90.0};
+  PulseAxis axis = PulseAxis::make(c).value();
+  EXPECT_EQ(axis.position_deg(10.0).value(), 10.0);  // not homed: unreferenced, from its origin
+  // Forward (A leads B) for 4 edges, then the index switch closes: the seek's edge is home.
+  axis.start_homing(0.0, false);
+  ASSERT_EQ(axis.homing_duty(0.0), 0.5);
+  const std::vector<ports::PulseEdge> forward{{ports::PulseLine::QuadratureA, true, 0.01},
+                                              {ports::PulseLine::QuadratureB, true, 0.02},
+                                              {ports::PulseLine::QuadratureA, false, 0.03},
+                                              {ports::PulseLine::QuadratureB, false, 0.04},
+                                              {ports::PulseLine::Home, true, 0.05}};
+  axis.on_edges(forward);
+  EXPECT_EQ(axis.counter().count(), 4);
+  EXPECT_NEAR(axis.position_deg(10.0).value(), 10.0 + 4 / 11.7, 1e-12);
+  // Stop, back off (B leads A: reverse) until the switch opens, stop: homed at count 4.
+  EXPECT_EQ(axis.homing_duty(0.06), -c.homing.slow_duty);  // stop_s 0: backing off at once
+  const std::vector<ports::PulseEdge> back{{ports::PulseLine::QuadratureB, true, 0.08},
+                                           {ports::PulseLine::Home, false, 0.09},
+                                           {ports::PulseLine::QuadratureA, true, 0.10}};
+  axis.on_edges(back);
+  EXPECT_EQ(axis.counter().count(), 2);
+  for (int i = 0; i < 10 && axis.homing_duty(0.2).has_value(); ++i) {
+    // the back-off's wait (backoff_s 0), then the stop: homed at the seek's edge
+  }
+  ASSERT_TRUE(axis.homed()) << axis.homing().reason();
+  EXPECT_NEAR(axis.position_deg(10.0).value(), 90.0 - 2 / 11.7, 1e-12);
+
+  PulseAxisConfig bad = c;
+  bad.scale.counts_per_unit = 0.0;
+  const auto refused = PulseAxis::make(bad);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().message.rfind("pulse scale: ", 0), 0U) << refused.error().message;
+}
+
 }  // namespace
 }  // namespace azt::control
