@@ -60,6 +60,10 @@ DrivenAxis::DrivenAxis(const AxisControlConfig& control, const SupervisorConfig&
       tick_s_(tick_s) {
   if (drive.brake) brake_.emplace(*drive.brake);
   if (drive.trips) trips_.emplace(*drive.trips);
+  if (drive.pulses) {
+    pulses_.emplace(PulseAxis::make(*drive.pulses).value());
+    pulse_origin_deg_ = start_mount_deg;
+  }
 }
 
 void DrivenAxis::on_reading(double now_s, double mount_deg) {
@@ -123,6 +127,14 @@ AxisStatus DrivenAxis::status() const {
     s.brake_release = brake_->release_output();
   }
   s.reset_refused = reset_refused_;
+  if (pulses_) {
+    if (s.fault == FaultKind::None && pulse_faulted()) {
+      s.fault = FaultKind::PositionLost;
+      s.reason = pulse_fault_.empty() ? pulses_->homing().reason() : pulse_fault_;
+    }
+    s.homing = pulses_->homing().state();
+    s.held = pulses_->why_not_homed().value_or("");
+  }
   return s;
 }
 
@@ -137,6 +149,7 @@ void DrivenAxis::halt(double now_s) {
 }
 
 void DrivenAxis::halt_drive(double now_s) {
+  note_pulse_drive(0.0, now_s);
   controller_.halt();
   relay_.halt(now_s);
   if (sends_setpoint(drive_.kind)) {
@@ -163,6 +176,11 @@ void DrivenAxis::clear_faults() {
   if (trips_) {
     if (auto why = trips_->reset()) reset_refused_ = std::move(*why);
   }
+  // A lost or failed reference is not trusted again: the axis must home before it tracks.
+  if (pulses_ && (pulse_faulted() || pulses_->homing().state() == HomingState::Failed)) {
+    pulses_->reset();
+  }
+  pulse_fault_.clear();
 }
 
 void DrivenAxis::uncount_starts(std::uint64_t before, double duty) {
@@ -172,8 +190,7 @@ void DrivenAxis::uncount_starts(std::uint64_t before, double duty) {
 bool DrivenAxis::gate(double now_s, double wanted_duty) {
   // Faulted, tripped or stale: the brake is applied now and not released again until the axis
   // may move (it would otherwise be released and applied every engage_s while faulted).
-  const bool blocked =
-      supervisor_.fault() != FaultKind::None || tripped() || supervisor_.stale(now_s);
+  const bool blocked = faulted() || supervisor_.stale(now_s);
   double duty = blocked ? 0.0 : wanted_duty;
   if (brake_) {
     if (blocked) brake_->halt(now_s);
@@ -193,6 +210,10 @@ void DrivenAxis::emergency_stop(double now_s, std::string_view reason) {
 }
 
 double DrivenAxis::drive(double now_s, std::optional<double> target_deg, double rate_deg_s) {
+  if (pulses_) {
+    if (auto duty = drive_homing(now_s)) return *duty;
+    if (!pulses_->homed()) target_deg.reset();  // no angle to drive to until homed: hold
+  }
   if (!target_deg) {
     // Holding: a PWM move finishes its soft stop at the present position. A setpoint axis is
     // sent where it stands when the hold begins (a STOP mid-move stops the box there), then
@@ -219,6 +240,7 @@ double DrivenAxis::drive(double now_s, std::optional<double> target_deg, double 
       break;
   }
   uncount_starts(before, duty);
+  note_pulse_drive(duty, now_s);
   return duty;
 }
 
@@ -295,6 +317,7 @@ double DrivenAxis::drive_test(double now_s, int direction) {
     uncount_starts(before, 0.0);
     return 0.0;
   }
+  note_pulse_drive(duty, now_s);
   return duty;
 }
 

@@ -58,6 +58,7 @@ void PortedStation::tick(double now_s, const Demand& demand, const AzEl& rate,
     return;
   }
   read_sensors(now_s);
+  read_pulses(now_s);
   // Both axes' readings go in together, stamped with the older: if either sensor falls silent
   // the station sees a stale position and stops the drives. A fixed elevation has no sensor.
   if (fresh_[0] && station_.el_fixed()) {
@@ -161,6 +162,28 @@ void PortedStation::read_sensors(double now_s) {
     }
     // Otherwise nothing new yet (an ADC conversion running, a hub between frames).
   }
+}
+
+void PortedStation::read_pulses(double now_s) {
+  for (std::size_t i = 0; i < 2; ++i) {
+    ports::PulseInput* input = ports_.pulse_inputs.at(i).get();
+    const PulseAxis* pulses = station_.pulses(i);
+    if (!input || !pulses) continue;
+    if (!pulses_started_.at(i)) {
+      pulses_started_.at(i) = true;
+      if (pulses->home_at_start()) (void)station_.home(now_s, i, input->home_closed());
+    }
+    station_.on_pulse_edges(now_s, i, input->take_edges());
+    const double mount_deg = i == 0 ? station_.az().mount_deg : station_.el().mount_deg;
+    fresh_.at(i) = ports::AxisSample{mount_deg, now_s};
+  }
+}
+
+std::optional<std::string> PortedStation::home(double now_s, std::size_t axis) {
+  if (axis > 1 || !ports_.pulse_inputs.at(axis) || !station_.pulses(axis)) {
+    return std::string{"this axis has no pulse sensor to home"};
+  }
+  return station_.home(now_s, axis, ports_.pulse_inputs.at(axis)->home_closed());
 }
 
 void PortedStation::read_pol(double now_s) {

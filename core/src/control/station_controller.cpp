@@ -33,8 +33,29 @@ void StationController::on_encoder_reading(double now_s, double az_deg, double e
           ? az_deg + std::remainder(corrected.az_deg - az_deg, 360.0)
           : plan_azimuth(az_.mount_deg(), corrected.az_deg, reading_range(config_.az_range));
   const double el_mount = corrected.el_deg > 270.0 ? corrected.el_deg - 360.0 : corrected.el_deg;
-  az_.on_reading(now_s, az_mount);
-  if (!el_fixed()) el_.on_reading(now_s, el_mount);
+  // A pulse-counted axis reads its own count (on_pulse_edges()).
+  if (!az_.pulses()) az_.on_reading(now_s, az_mount);
+  if (!el_fixed() && !el_.pulses()) el_.on_reading(now_s, el_mount);
+}
+
+void StationController::on_pulse_edges(double now_s, std::size_t axis,
+                                       std::span<const ports::PulseEdge> edges) {
+  if (axis == 0) {
+    az_.on_pulse_edges(now_s, edges);
+  } else if (!el_fixed()) {
+    el_.on_pulse_edges(now_s, edges);
+  }
+}
+
+std::optional<std::string> StationController::home(double now_s, std::size_t axis,
+                                                   bool home_closed) {
+  if (axis != 0 && el_fixed()) return std::string{"the elevation is fixed: nothing to home"};
+  return (axis == 0 ? az_ : el_).home(now_s, home_closed);
+}
+
+const PulseAxis* StationController::pulses(std::size_t axis) const {
+  if (axis != 0 && el_fixed()) return nullptr;
+  return (axis == 0 ? az_ : el_).pulses();
 }
 
 void StationController::set_corrections(const PositionCorrections& corrections) {
@@ -128,6 +149,10 @@ Duties StationController::set_limits(const LimitSwitches& limits) {
 
 std::optional<AzEl> StationController::sky_position(double now_s) const {
   if (faulted() || az_.stale(now_s) || (!el_fixed() && el_.stale(now_s))) return std::nullopt;
+  // A pulse-counted axis not homed knows how far it moved, not where it points.
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (const PulseAxis* p = pulses(i); p && !p->homed()) return std::nullopt;
+  }
   // Past the zenith on a flip mount the beam looks the other way: (az + 180, 180 − el).
   if (el_.mount_deg() > 90.0) {
     return AzEl{wrap_360(az_.mount_deg() + 180.0), 180.0 - el_.mount_deg()};

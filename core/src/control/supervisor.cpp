@@ -29,6 +29,8 @@ std::string_view to_string(FaultKind kind) {
       return "estop";
     case FaultKind::MotorTrip:
       return "motor_trip";
+    case FaultKind::PositionLost:
+      return "position_lost";
   }
   return "none";
 }

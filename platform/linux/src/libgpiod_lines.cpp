@@ -5,8 +5,10 @@
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/posix/stream_descriptor.hpp>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <ctime>
+#include <vector>
 
 namespace azt::linux_os {
 
@@ -144,6 +146,79 @@ class LibgpiodInput final : public GpioInput {
   bool active_ = false;
 };
 
+/// The kernel's event timestamp as a steady_clock time. Kernels before 5.7 stamp line events
+/// with CLOCK_REALTIME rather than CLOCK_MONOTONIC: a stamp more than a minute from now is one of
+/// those, and the time it is read stands in for it (late by the loop's latency, not by decades).
+std::chrono::steady_clock::time_point event_time(const timespec& ts) {
+  const auto now = std::chrono::steady_clock::now();
+  const std::chrono::steady_clock::time_point at{std::chrono::seconds(ts.tv_sec) +
+                                                 std::chrono::nanoseconds(ts.tv_nsec)};
+  return std::chrono::abs(now - at) > std::chrono::minutes(1) ? now : at;
+}
+
+/// An input that hands on every queued edge, for pulse counting.
+class LibgpiodEventInput final : public GpioInput {
+ public:
+  LibgpiodEventInput(asio::io_context& io, GpioLineSpec spec, Request request,
+                     GpioEventHandler on_event)
+      : spec_(std::move(spec)),
+        request_(std::move(request)),
+        on_event_(std::move(on_event)),
+        events_(io, gpiod_line_event_get_fd(request_.line())) {
+    active_ = gpiod_line_get_value(request_.line()) == 1;
+    watch();
+  }
+  ~LibgpiodEventInput() override {
+    boost::system::error_code ignored;
+    events_.cancel(ignored);
+    (void)events_.release();  // the descriptor belongs to the line request
+  }
+  LibgpiodEventInput(const LibgpiodEventInput&) = delete;
+  LibgpiodEventInput& operator=(const LibgpiodEventInput&) = delete;
+  LibgpiodEventInput(LibgpiodEventInput&&) = delete;
+  LibgpiodEventInput& operator=(LibgpiodEventInput&&) = delete;
+
+  [[nodiscard]] bool active() const override { return active_; }
+  [[nodiscard]] const GpioLineSpec& spec() const override { return spec_; }
+
+ private:
+  void watch() {
+    events_.async_wait(asio::posix::stream_descriptor::wait_read,
+                       [this](boost::system::error_code ec) {
+                         if (ec) return;
+                         drain();
+                         watch();
+                       });
+  }
+
+  /// Every queued event in order. The edge type is the physical one on some kernels and the
+  /// logical one on others for an active-low line (LibgpiodInput's note): the level read after the
+  /// burst says which, and the burst's types are turned round when its last edge disagrees.
+  void drain() {
+    const timespec no_wait{0, 0};
+    std::vector<GpioEdgeEvent> burst;
+    gpiod_line_event event{};
+    do {
+      if (gpiod_line_event_read(request_.line(), &event) != 0) break;
+      burst.push_back({event.event_type == GPIOD_LINE_EVENT_RISING_EDGE, event_time(event.ts)});
+    } while (gpiod_line_event_wait(request_.line(), &no_wait) == 1);
+    const int value = gpiod_line_get_value(request_.line());
+    if (value >= 0) {
+      active_ = value == 1;
+      if (!burst.empty() && burst.back().active != active_) {
+        for (auto& e : burst) e.active = !e.active;
+      }
+    }
+    for (const auto& e : burst) on_event_(e);
+  }
+
+  GpioLineSpec spec_;
+  Request request_;
+  GpioEventHandler on_event_;
+  asio::posix::stream_descriptor events_;
+  bool active_ = false;
+};
+
 class LibgpiodProvider final : public GpioProvider {
  public:
   LibgpiodProvider(asio::io_context& io, std::string consumer)
@@ -166,6 +241,17 @@ class LibgpiodProvider final : public GpioProvider {
     if (!request) return request.error();
     return std::unique_ptr<GpioInput>(
         std::make_unique<LibgpiodInput>(io_, spec, std::move(request).value(), std::move(on_edge)));
+  }
+
+  Result<std::unique_ptr<GpioInput>> event_input(const GpioLineSpec& spec, GpioBias bias,
+                                                 GpioEventHandler on_event) override {
+    int flags = active_low_flag(spec);
+    if (bias == GpioBias::PullUp) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
+    if (bias == GpioBias::PullDown) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
+    auto request = Request::make(spec, consumer_, GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES, flags, 0);
+    if (!request) return request.error();
+    return std::unique_ptr<GpioInput>(std::make_unique<LibgpiodEventInput>(
+        io_, spec, std::move(request).value(), std::move(on_event)));
   }
 
  private:

@@ -43,12 +43,35 @@ class FakeGpio final : public linux_os::GpioProvider {
     return std::unique_ptr<linux_os::GpioInput>(std::move(in));
   }
 
+  /// An input reporting every edge (a pulse sensor's line or home switch).
+  Result<std::unique_ptr<linux_os::GpioInput>> event_input(
+      const linux_os::GpioLineSpec& spec, linux_os::GpioBias /*bias*/,
+      linux_os::GpioEventHandler on_event) override {
+    if (busy_.count(spec.offset) != 0) return fail(describe(spec) + ": line busy");
+    auto in = std::make_unique<Input>(*this, spec, nullptr);
+    in->on_event = std::move(on_event);
+    inputs_[spec.key] = in.get();
+    return std::unique_ptr<linux_os::GpioInput>(std::move(in));
+  }
+  /// An event input's line `key` goes to `active` at `at` (the kernel's stamp); delivered by the
+  /// loop like set_input()'s edges.
+  void edge(const std::string& key, bool active, std::chrono::steady_clock::time_point at) {
+    levels_[key] = active;
+    boost::asio::post(io_, [this, key, active, at] {
+      auto it = inputs_.find(key);
+      if (it != inputs_.end() && it->second->on_event) {
+        it->second->level = active;
+        it->second->on_event({active, at});
+      }
+    });
+  }
+
   /// The line of `key` (e.g. "[gpio] estop") goes to `active`; the edge is delivered by the loop.
   void set_input(const std::string& key, bool active) {
     levels_[key] = active;
     boost::asio::post(io_, [this, key, active] {
       auto it = inputs_.find(key);
-      if (it != inputs_.end()) {
+      if (it != inputs_.end() && it->second->on_edge) {
         it->second->level = active;
         it->second->on_edge(active);
       }
@@ -96,6 +119,7 @@ class FakeGpio final : public linux_os::GpioProvider {
     FakeGpio& gpio;
     linux_os::GpioLineSpec line;
     linux_os::GpioEdgeHandler on_edge;
+    linux_os::GpioEventHandler on_event;  ///< event inputs only
     bool level;
   };
 

@@ -67,11 +67,12 @@ inline constexpr double kMinTriangleDeg = 5.0;
 
 /// Length ↔ angle for one actuator. Pure and stateless after construction.
 ///
-/// Plug-in point (a later session's DrivenAxis): a pot on the actuator reads a length (its
-/// two-point calibration in millimetres) and a pulse sensor counts millimetres
-/// (control::PulseScale); either becomes the axis's mount angle through angle_deg(), and the
-/// supervisor's step size is deg_per_mm() × the sensor's millimetres per step at the coarse end
-/// (max_deg_per_mm()). Targets outside angle range are refused with the words of length_mm().
+/// A pulse sensor's millimetres become the axis's mount angle through angle_deg() in
+/// control::PulseScale (plugged in by PulseAxis, pulse_axis.hpp). Plug-in point still open (a
+/// later session's): a pot on the actuator reading a length (its two-point calibration in
+/// millimetres), through angle_deg() the same way; the supervisor's step size is deg_per_mm() ×
+/// the sensor's millimetres per step at the coarse end (max_deg_per_mm()). Targets outside angle
+/// range are refused with the words of length_mm().
 class ActuatorGeometry {
  public:
   /// Precondition: ActuatorGeometryConfig::make(config).ok().

@@ -7,12 +7,14 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
 #include "azt/control/axis_controller.hpp"
 #include "azt/control/brake.hpp"
 #include "azt/control/motor_trips.hpp"
+#include "azt/control/pulse_axis.hpp"
 #include "azt/control/relay_drive.hpp"
 #include "azt/control/supervisor.hpp"
 
@@ -39,6 +41,10 @@ struct AxisDriveConfig {
   /// The motor's protection (motor_trips.hpp): current, temperature, the driver's fault line;
   /// empty: nothing watched at the motor.
   std::optional<MotorTripsConfig> trips;
+  /// A pulse-counted position (pulse_axis.hpp): the axis homes before it tracks, and its
+  /// readings come from on_pulse_edges(). Precondition: PulseAxis::make(*pulses).ok(), and a
+  /// duty-driven axis (a setpoint box closes its own loop on its own sensor).
+  std::optional<PulseAxisConfig> pulses;
 };
 
 /// What the station knows of one axis.
@@ -54,6 +60,11 @@ struct AxisStatus {
   /// Why the operator's last clear left a motor trip latched (its cause is still there); empty
   /// otherwise.
   std::string reset_refused;
+  /// A pulse-counted axis: its homing's state; empty for any other sensor.
+  std::optional<HomingState> homing;
+  /// Why the axis holds rather than tracks its target: a pulse-counted axis not (yet) homed, in
+  /// Homing's words ("not homed: homing in progress (…)"); empty otherwise.
+  std::string held;
 };
 
 /// One axis's travel-end switches (docs/hardware.md), tripped or not: `reverse` at the end of
@@ -89,6 +100,16 @@ class DrivenAxis {
   /// The switches changed (an input edge): a drive into a tripped one stops at once.
   void set_limits(const LimitPair& limits);
 
+  /// Pulse-counted axes, each tick before drive(): the edges since the last tick, oldest first
+  /// (ports::PulseInput). The count and the home switch give this tick's reading.
+  void on_pulse_edges(double now_s, std::span<const ports::PulseEdge> edges);
+  /// Starts homing (at start-up when configured, or on the operator's command); `home_closed`
+  /// is the switch's level now. Returns why not (no pulse sensor, a fault that must be cleared
+  /// first); a lost position is no reason: homing is its cure.
+  std::optional<std::string> home(double now_s, bool home_closed);
+  /// The pulse sensor, for its counts and words; null for any other sensor.
+  [[nodiscard]] const PulseAxis* pulses() const { return pulses_ ? &*pulses_ : nullptr; }
+
   void emergency_stop(double now_s, std::string_view reason);
   /// The operator's reset: the supervisor's faults, and a motor trip unless its cause remains
   /// (then the trip stays and status().reset_refused says why).
@@ -102,8 +123,15 @@ class DrivenAxis {
   [[nodiscard]] AxisStatus status() const;
   /// Setpoint axes: the angle to send; nullopt for duty-driven axes.
   [[nodiscard]] std::optional<double> setpoint_deg() const;
-  [[nodiscard]] bool faulted() const { return supervisor_.fault() != FaultKind::None || tripped(); }
+  [[nodiscard]] bool faulted() const {
+    return supervisor_.fault() != FaultKind::None || tripped() || pulse_faulted();
+  }
   [[nodiscard]] bool tripped() const { return trips_ && trips_->tripped() != MotorTrip::None; }
+  /// A pulse-counted axis lost its position (a pass of the home switch disagreed) or counted
+  /// outside its stroke: latched until the operator clears it or homes again.
+  [[nodiscard]] bool pulse_faulted() const {
+    return !pulse_fault_.empty() || (pulses_ && pulses_->position_lost());
+  }
   [[nodiscard]] bool stale(double now_s) const { return supervisor_.stale(now_s); }
   [[nodiscard]] const AxisControlConfig& control_config() const { return controller_.config(); }
 
@@ -122,6 +150,15 @@ class DrivenAxis {
   [[nodiscard]] std::uint64_t drive_starts() const;
   /// Starts the drive counted in a tick whose duty never reached the motor are not starts.
   void uncount_starts(std::uint64_t before, double duty);
+  /// Homing's tick while it is active: its duty, open loop like the direction test (the
+  /// supervisor stops it for a stale count, a fault or the E-stop; homing itself judges the
+  /// motion: no pulses, the wrong way, too far); nullopt once homing is not active.
+  std::optional<double> drive_homing(double now_s);
+  /// The pulse count's position as this tick's reading; the reference moving at homing is a
+  /// rebase, not a jump.
+  void pulse_reading(double now_s);
+  /// Tells the pulse counter the duty the motor gets (its direction for a single channel).
+  void note_pulse_drive(double duty, double now_s);
 
   AxisController controller_;
   AxisSupervisor supervisor_;
@@ -137,6 +174,12 @@ class DrivenAxis {
   std::optional<MotorTrips> trips_;
   std::string reset_refused_;
   std::uint64_t unstarted_ = 0;  ///< drive starts withheld by the brake or a stop in their tick
+  std::optional<PulseAxis> pulses_;
+  /// Not homed: the position of count zero (where the axis was believed to be at start, carried
+  /// on when a position is lost).
+  double pulse_origin_deg_ = 0.0;
+  bool pulses_homed_ = false;  ///< homed as of the last reading (a change moves the reference)
+  std::string pulse_fault_;    ///< a count outside the stroke: latched
 };
 
 }  // namespace azt::control

@@ -66,7 +66,7 @@ struct HomingConfig {
 /// The homing state machine of one pulse-counted axis. Pure: time is a parameter, in seconds of
 /// the monotonic clock the edges are stamped with.
 ///
-/// Plug-in point (a later session's DrivenAxis):
+/// Plugged in by PulseAxis (pulse_axis.hpp), which DrivenAxis runs:
 ///  - start() at start-up (when configured) or on the operator's command; reset() on the
 ///    operator's clear of a latched fault (back to NotHomed: home again).
 ///  - every tick: the home switch's edges, in timestamp order with the pulse edges (see

@@ -9,6 +9,7 @@
 // firmware, the Linux devices, a Hamlib box).
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,6 +40,8 @@ class PortedStation {
   void set_pol_limits(double now_s, const LimitPair& limits);
   /// Both drives off now, the station latched with `reason` until the faults are cleared.
   void stop_with(double now_s, std::string_view reason);
+  /// The operator's command to home a pulse-counted axis (0 az, 1 el); why not.
+  std::optional<std::string> home(double now_s, std::size_t axis);
 
   /// One line per fault: latched axis faults, a drive's write error, each sensor's error (a
   /// link two axes share is named once).
@@ -56,6 +59,9 @@ class PortedStation {
  private:
   [[nodiscard]] std::optional<std::string> latched_sensor() const;
   void read_sensors(double now_s);
+  /// Pulse-counted axes: homing at start when configured, this tick's edges, and the axis marked
+  /// fresh (its count is read every tick) so the other axis's reading goes in.
+  void read_pulses(double now_s);
   void read_pol(double now_s);
   void apply(double now_s, const Duties& d);
   /// Reads each axis's motor sensor, if it has one, and hands the readings to its axis.
@@ -74,6 +80,7 @@ class PortedStation {
   std::string drive_fault_;
   /// A motor sensor's read error per axis (az, el, pol): the axis trips on it, this says why.
   std::array<std::optional<std::string>, 3> motor_sensor_fault_;
+  std::array<bool, 2> pulses_started_{};  ///< the first tick has begun each pulse axis's homing
 };
 
 }  // namespace azt::control

@@ -61,7 +61,7 @@ enum class QuadratureChannel : std::uint8_t { A, B };
 /// Counts one axis's pulses. Pure: every edge carries its own timestamp in seconds of the same
 /// monotonic clock as the ticks (libgpiod's event timestamps).
 ///
-/// Plug-in point (a later session's DrivenAxis), each tick in this order:
+/// Plugged in by PulseAxis (pulse_axis.hpp), which DrivenAxis runs; each tick in this order:
 ///  1. every edge event that arrived, in timestamp order: on_pulse() (single channel) or
 ///     on_quadrature_edge(), interleaved with the home switch's edges to Homing::on_switch() so
 ///     the count at a switch edge is the count at its time;

@@ -37,7 +37,7 @@ struct PulseScaleConfig {
 /// (increasing angle), so on an actuator whose extension lowers the angle the length falls as the
 /// count rises.
 ///
-/// Plug-in point (a later session's DrivenAxis): position_deg = angle_deg(homing.counts_from_home
+/// Plugged in by PulseAxis (pulse_axis.hpp): position_deg = angle_deg(homing.counts_from_home
 /// (counter.count())) each tick once homed; its refusal (a count outside the stroke) is a sensor
 /// fault that stops the axis, as a pot outside its guards is. The supervisor's step size is
 /// max_deg_per_count().

@@ -5,8 +5,11 @@
 // station does. It owns an AxisController and an AxisSupervisor per axis and turns a Demand (a sky
 // position, a continuous move, or nothing) into mount targets through the travel planner.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 
 #include "azt/control/axis_controller.hpp"
@@ -118,6 +121,15 @@ class StationController {
   void clear_faults();
   /// This tick's motor readings per axis (driven_axis.hpp): a trip stops that axis at once.
   void on_motor_readings(double now_s, const MotorReadings& az, const MotorReadings& el);
+
+  /// Pulse-counted axes (AxisDriveConfig::pulses), `axis` 0 azimuth, 1 elevation: this tick's
+  /// edges, before tick(). Such an axis reads its count, not on_encoder_reading()'s angle (the
+  /// count is a mount angle once homed: the corrections do not apply to it).
+  void on_pulse_edges(double now_s, std::size_t axis, std::span<const ports::PulseEdge> edges);
+  /// Starts homing `axis` (0 az, 1 el); why not (no pulse sensor, a fault to clear first).
+  std::optional<std::string> home(double now_s, std::size_t axis, bool home_closed);
+  /// The pulse sensor of `axis` (0 az, 1 el); null when it has none or the elevation is fixed.
+  [[nodiscard]] const PulseAxis* pulses(std::size_t axis) const;
 
  private:
   /// Where a continuous move on one axis is going: its direction, and below full speed the goal

@@ -10,8 +10,18 @@ namespace azt::control {
 
 /// What stops an axis. Stale readings stop the motors for as long as they last; every other
 /// kind latches until clear(). MotorTrip is never the supervisor's own: DrivenAxis reports its
-/// motor protection's trip (motor_trips.hpp) with it.
-enum class FaultKind { None, StalePosition, Stall, Runaway, EncoderJump, EStop, MotorTrip };
+/// motor protection's trip (motor_trips.hpp) with it, and PositionLost a pulse-counted axis's
+/// missed pulses found at the home switch (pulse_axis.hpp).
+enum class FaultKind {
+  None,
+  StalePosition,
+  Stall,
+  Runaway,
+  EncoderJump,
+  EStop,
+  MotorTrip,
+  PositionLost
+};
 
 std::string_view to_string(FaultKind kind);
 

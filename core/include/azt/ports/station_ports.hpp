@@ -8,6 +8,7 @@
 #include "azt/ports/axis_drive.hpp"
 #include "azt/ports/axis_sensor.hpp"
 #include "azt/ports/motor_io.hpp"
+#include "azt/ports/pulse_input.hpp"
 
 namespace azt::ports {
 
@@ -24,6 +25,9 @@ struct StationPorts {
   std::array<std::unique_ptr<MotorSensor>, 2> motor_sensors;
   std::unique_ptr<BrakeLine> pol_brake;
   std::unique_ptr<MotorSensor> pol_motor_sensor;
+  /// A pulse-counted axis's lines (its AxisDriveConfig::pulses), azimuth then elevation; such an
+  /// axis has no sensor. nullptr: none.
+  std::array<std::unique_ptr<PulseInput>, 2> pulse_inputs;
 };
 
 }  // namespace azt::ports

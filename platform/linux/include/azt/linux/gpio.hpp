@@ -4,6 +4,7 @@
 // through libgpiod (libgpiod_lines.hpp). Levels are logical: `active_low` lines are inverted by
 // the provider, so `true` always means asserted (relay energized, switch tripped, PTT pressed).
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -47,6 +48,14 @@ class GpioInput {
 /// Called from the event loop after an edge with the line's new logical level.
 using GpioEdgeHandler = std::function<void(bool active)>;
 
+/// One edge as the kernel queued it, for pulse counting: none merged with the next, each with
+/// the kernel's timestamp (CLOCK_MONOTONIC, the clock std::chrono::steady_clock reads on Linux).
+struct GpioEdgeEvent {
+  bool active = true;  ///< the logical level the line went to
+  std::chrono::steady_clock::time_point at;
+};
+using GpioEventHandler = std::function<void(const GpioEdgeEvent& event)>;
+
 class GpioProvider {
  public:
   GpioProvider() = default;
@@ -60,6 +69,10 @@ class GpioProvider {
   /// Requests `spec` as an input with both edges reported to `on_edge` from the event loop.
   virtual Result<std::unique_ptr<GpioInput>> input(const GpioLineSpec& spec, GpioBias bias,
                                                    GpioEdgeHandler on_edge) = 0;
+  /// Requests `spec` as an input reporting every edge separately with its timestamp (a pulse
+  /// sensor: input()'s one report per burst would lose pulses). Providers that cannot refuse.
+  virtual Result<std::unique_ptr<GpioInput>> event_input(const GpioLineSpec& spec, GpioBias bias,
+                                                         GpioEventHandler on_event);
 };
 
 /// "[gpio] estop (gpiochip0 line 26)": how errors and logs name a line.

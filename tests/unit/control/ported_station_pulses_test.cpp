@@ -1,0 +1,118 @@
+// A station whose elevation is a pulse-counted actuator dish (pulse_dish_fixture.hpp) and whose
+// azimuth has an ordinary sensor: PortedStation takes the elevation's edges from its
+// ports::PulseInput, homes it at start, gives no sky position until it is homed while the azimuth
+// keeps its readings, then drives the elevation to its target; a dropped pulse shows in faults().
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "azt/control/ported_station.hpp"
+#include "azt/sim/actuator_dish_plant.hpp"
+#include "fake_station_ports.hpp"
+#include "pulse_dish_fixture.hpp"
+
+namespace azt::control {
+namespace {
+
+using pulse_dish::dish;
+using pulse_dish::kTickS;
+using pulse_dish::PlantPulses;
+using pulse_dish::pulse_config;
+
+/// The plant's drive: the duty the station applies, held for the next step.
+class PlantDrive final : public ports::AxisDrive {
+ public:
+  explicit PlantDrive(double& duty) : duty_(duty) {}
+  Result<bool> apply(double /*now_s*/, double duty, std::optional<double> /*setpoint*/) override {
+    duty_ = duty;
+    return true;
+  }
+  void off(double /*now_s*/) override { duty_ = 0.0; }
+  [[nodiscard]] std::string describe() const override { return "plant drive"; }
+
+ private:
+  double& duty_;
+};
+
+struct PulsedStation {
+  sim::ActuatorDishPlant plant = sim::ActuatorDishPlant::make(dish()).value();
+  PlantPulses* input = nullptr;
+  std::shared_ptr<FakeAxis> az = std::make_shared<FakeAxis>();
+  double el_duty = 0.0;
+  std::unique_ptr<PortedStation> station;
+
+  PulsedStation() {
+    StationControlConfig c;
+    c.tick_s = kTickS;
+    c.el_control.window_deg = 0.2;
+    c.el_control.lsb_deg = PulseAxis::make(pulse_config()).value().scale().max_deg_per_count();
+    c.el_control.max_rate_deg_s = 2.5;
+    c.el_control.min_duty = 0.1;
+    c.el_control.time_constant_s = 0.15;
+    c.el_supervisor.max_rate_deg_s = 3.0;
+    c.el_supervisor.stale_s = 0.5;
+    c.az_supervisor.stale_s = 0.5;
+    c.el_drive.pulses = pulse_config();
+    ports::StationPorts p;
+    p.drives[0] = std::make_unique<FakeDrive>(az);
+    p.sensors[0] = std::make_unique<FakeSensor>(az);
+    p.drives[1] = std::make_unique<PlantDrive>(el_duty);
+    auto pulses = std::make_unique<PlantPulses>(plant);
+    input = pulses.get();
+    p.pulse_inputs[1] = std::move(pulses);
+    station =
+        std::make_unique<PortedStation>(c, AzEl{0.0, 20.0}, PositionCorrections{}, std::move(p));
+  }
+
+  void run(double el_deg, double seconds) {
+    Demand d;
+    d.position = AzEl{0.0, el_deg};
+    const double end_s = plant.now_s() + seconds;
+    while (plant.now_s() < end_s) {
+      station->tick(plant.now_s(), d, AzEl{});
+      input->queue(plant.step(el_duty, kTickS));
+    }
+  }
+  [[nodiscard]] bool faults_contain(std::string_view text) const {
+    const auto f = station->faults();
+    return std::any_of(f.begin(), f.end(),
+                       [&](const std::string& s) { return s.find(text) != std::string::npos; });
+  }
+};
+
+TEST(PortedStationPulses, HomesAtStartThenDrivesTheCountedElevation) {
+  PulsedStation s;
+  s.run(40.0, 1.0);
+  EXPECT_EQ(s.station->station().el().homing, HomingState::Seeking);
+  EXPECT_LT(s.el_duty, 0.0);  // homing's seek, not the 40° target
+  EXPECT_FALSE(s.station->station().sky_position(s.plant.now_s()).has_value());
+  EXPECT_TRUE(s.station->faults().empty());
+  s.run(40.0, 60.0);
+  ASSERT_EQ(s.station->station().el().homing, HomingState::Homed) << s.station->station().el().held;
+  s.run(40.0, 30.0);
+  const auto sky = s.station->station().sky_position(s.plant.now_s());
+  ASSERT_TRUE(sky.has_value());
+  EXPECT_NEAR(s.plant.angle_deg(), 40.0, 0.2 + s.station->station().config().el_control.lsb_deg);
+  EXPECT_NEAR(sky->el_deg, s.plant.angle_deg(), 0.31);  // within one count at 40°
+  EXPECT_EQ(s.station->home(s.plant.now_s(), 0), "this axis has no pulse sensor to home");
+}
+
+TEST(PortedStationPulses, ADroppedPulseIsAFaultAndTheOperatorsHomeClearsIt) {
+  PulsedStation s;
+  s.run(40.0, 60.0);
+  ASSERT_EQ(s.station->station().el().homing, HomingState::Homed);
+  s.plant.drop_pulse_after(s.plant.now_s() + 2.0);
+  s.run(40.0, 30.0);
+  s.run(s.plant.geometry().angle_deg(521.0).value(), 80.0);  // down past the home switch
+  EXPECT_TRUE(s.faults_contain("el: position_lost: position lost: 1 count lost"));
+  EXPECT_EQ(s.station->home(s.plant.now_s(), 1), std::nullopt);
+  s.run(40.0, 60.0);
+  EXPECT_TRUE(s.station->faults().empty());
+  EXPECT_EQ(s.station->station().el().homing, HomingState::Homed);
+}
+
+}  // namespace
+}  // namespace azt::control
