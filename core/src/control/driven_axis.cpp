@@ -5,24 +5,14 @@
 #include <limits>
 #include <utility>
 
+#include "relay_duty.hpp"
+
 namespace azt::control {
 namespace {
 
 SupervisorConfig with_lsb(SupervisorConfig s, const AxisControlConfig& c) {
   s.lsb_deg = c.lsb_deg;
   return s;
-}
-
-double relay_duty(RelayCommand command) {
-  switch (command) {
-    case RelayCommand::Forward:
-      return 1.0;
-    case RelayCommand::Reverse:
-      return -1.0;
-    case RelayCommand::Off:
-      break;
-  }
-  return 0.0;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "azt/control/driven_axis.hpp"
+#include "relay_duty.hpp"
 
 namespace azt::control {
 namespace {
@@ -11,18 +12,6 @@ namespace {
 /// How far ahead of the axis a relay drive is aimed while homing: beyond its window, so it keeps
 /// driving one way until homing's duty changes.
 constexpr double kRelayLeadDeg = 5.0;
-
-double relay_duty_of(RelayCommand command) {
-  switch (command) {
-    case RelayCommand::Forward:
-      return 1.0;
-    case RelayCommand::Reverse:
-      return -1.0;
-    case RelayCommand::Off:
-      break;
-  }
-  return 0.0;
-}
 
 }  // namespace
 
@@ -86,7 +75,7 @@ std::optional<double> DrivenAxis::drive_homing(double now_s) {
       // One speed: the slow back-off and re-approach run at the relay's speed too.
       const double goal_deg =
           *wanted == 0.0 ? mount_deg_ : mount_deg_ + std::copysign(kRelayLeadDeg, *wanted);
-      duty = relay_duty_of(relay_.update(goal_deg, mount_deg_, now_s));
+      duty = relay_duty(relay_.update(goal_deg, mount_deg_, now_s));
       break;
     }
     case DriveKind::Setpoint:
