@@ -71,29 +71,13 @@ class SimI2c final : public linux_os::I2cBus {
 };
 
 /// Azimuth alone, as kHardwareStation's; the elevation fixed at 0 ([mount.el] fixed_deg).
-constexpr const char* kAzimuthOnly = R"([station]
-grid = "FN06HE"
-[target]
-name = "stop"
-[antenna]
-backend = "hardware"
-[mount.az]
+const std::string kAzimuthOnly = testing::kHardwareTop + R"([mount.az]
 max_rate_deg_s = 3.0
 [mount.el]
 fixed_deg = 0.0
 [sim.az]
 start_deg = 100.0
-[hardware.az]
-drive = "relay"
-relay_forward = 5
-relay_reverse = 6
-window_deg = 1.0
-lsb_deg = 0.44
-coast_deg = 0.2
-sensor = "mcp3008"
-adc_device = "/dev/spidev0.1"
-pot_calibration = [0, 0.0, 1023, 450.0]
-)";
+)" + testing::kHardwareAz;
 
 struct Rig {
   explicit Rig(const std::string& extra = "", const std::string& station = kHardwareStation)

@@ -3,23 +3,21 @@
 // ads1115_sensor_test.cpp): azimuth on relays read by a pot on an MCP3008 (spidev), elevation by a
 // rotator box whose control pot is an MCP41010 (spidev) read by a pot on an ADS1115 (i2c-dev).
 
+#include <string>
+
 namespace azt::app::testing {
 
-inline constexpr const char* kHardwareStation = R"([station]
+/// The file's top: the station, no target, the `hardware` backend.
+inline const std::string kHardwareTop = R"([station]
 grid = "FN06HE"
 [target]
 name = "stop"
 [antenna]
 backend = "hardware"
-[mount.az]
-max_rate_deg_s = 3.0
-[mount.el]
-max_rate_deg_s = 2.0
-[sim.az]
-start_deg = 100.0
-[sim.el]
-start_deg = 10.0
-[hardware.az]
+)";
+
+/// Azimuth on relays read by a pot on an MCP3008 (spidev).
+inline const std::string kHardwareAz = R"([hardware.az]
 drive = "relay"
 relay_forward = 5
 relay_reverse = 6
@@ -30,7 +28,17 @@ sensor = "mcp3008"
 adc_device = "/dev/spidev0.1"
 pot_calibration = [0, 0.0, 1023, 450.0]
 open_below_counts = 3
-[hardware.el]
+)";
+
+inline const std::string kHardwareStation = kHardwareTop + R"([mount.az]
+max_rate_deg_s = 3.0
+[mount.el]
+max_rate_deg_s = 2.0
+[sim.az]
+start_deg = 100.0
+[sim.el]
+start_deg = 10.0
+)" + kHardwareAz + R"([hardware.el]
 drive = "pot"
 spi_device = "/dev/spidev0.0"
 wiper_calibration = [0, 0.0, 255, 180.0]
