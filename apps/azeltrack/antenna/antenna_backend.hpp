@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "azt/control/corrections.hpp"
@@ -30,6 +31,13 @@ struct PolStatus {
   std::string fault;     ///< the supervisor's words when faulted, else empty
   double min_deg = 0.0;  ///< the travel ([mount.pol])
   double max_deg = 0.0;
+};
+
+/// One motor axis as the station's own controller knows it: its brake, its motor's readings and a
+/// pulse-counted axis's homing (docs/hardware.md). `axis` is "az", "el" or "pol".
+struct NamedAxisStatus {
+  std::string axis;
+  control::AxisStatus status;
 };
 
 class AntennaBackend {
@@ -66,6 +74,21 @@ class AntennaBackend {
   virtual void set_limits(double now_s, const control::LimitSwitches& limits) {
     (void)now_s;
     (void)limits;
+  }
+  /// The axes this station drives itself (the fixed elevation is none); empty for a Hamlib box,
+  /// which keeps its brakes and motors to itself.
+  [[nodiscard]] virtual std::vector<NamedAxisStatus> axes() const { return {}; }
+  /// The operator's command to home the pulse-counted axis `axis` ("az" or "el"): nullopt when
+  /// homing began, else why not.
+  virtual std::optional<std::string> home(double now_s, const std::string& axis) {
+    (void)now_s;
+    (void)axis;
+    return std::string{"this antenna has no pulse-counted axis to home"};
+  }
+  /// A STOP from any source: every homing in progress ends, the axes unreferenced.
+  virtual void stop_homing(double now_s, std::string_view reason) {
+    (void)now_s;
+    (void)reason;
   }
   /// The polarisation axis's switches changed; a backend without a pol axis ignores them.
   virtual void set_pol_limits(double now_s, const control::LimitPair& limits) {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "azt/linux/axis_drives.hpp"
+#include "azt/linux/gpio_pulse_input.hpp"
 #include "azt/linux/motor_io.hpp"
 #include "azt/linux/pwm_hbridge.hpp"
 #include "azt/linux/step_dir_drive.hpp"
@@ -38,9 +39,11 @@ std::shared_ptr<linux_os::Ads1115Chip> ads1115_chip(const HardwareAxisConfig& a,
 
 }  // namespace
 
-HardwarePorts HardwarePorts::linux_devices(linux_os::GpioProvider* gpio) {
+HardwarePorts HardwarePorts::linux_devices(linux_os::GpioProvider* gpio,
+                                           std::chrono::steady_clock::time_point epoch) {
   HardwarePorts p;
   p.gpio = gpio;
+  p.epoch = epoch;
   p.open_spi = [](const std::string& path,
                   std::uint32_t hz) -> Result<std::unique_ptr<linux_os::SpiBus>> {
     auto bus = linux_os::SpidevBus::open(path, hz);
@@ -157,9 +160,19 @@ std::unique_ptr<ports::AxisSensor> open_adc_sensor(const HardwareAxisConfig& a,
     case AxisSensorKind::Ads1115:
       return linux_os::make_ads1115_pot_sensor(ads1115_chip(a, ports), a.adc_channel, a.pot, what);
     case AxisSensorKind::Hub:
+    case AxisSensorKind::Pulses:
       break;
   }
-  throw std::logic_error("the EncoderHub is not an ADC: " + what);
+  throw std::logic_error("the EncoderHub and a pulse sensor are not ADCs: " + what);
+}
+
+std::unique_ptr<ports::PulseInput> open_pulse_input(const HardwareAxisConfig& a,
+                                                    HardwarePorts& ports) {
+  if (ports.gpio == nullptr) throw UsageError(a.key("home_switch") + ": no GPIO provider");
+  linux_os::GpioPulseLines lines{a.pulse_lines, *a.home_switch, linux_os::GpioBias::PullUp};
+  auto input = linux_os::GpioPulseInput::open(*ports.gpio, lines, ports.epoch);
+  if (!input) throw UsageError(input.error().message);
+  return std::move(input).value();
 }
 
 std::unique_ptr<ports::BrakeLine> open_brake_line(const HardwareAxisConfig& a,

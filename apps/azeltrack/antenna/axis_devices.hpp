@@ -5,6 +5,7 @@
 // The devices themselves are platform/linux's, behind the core's ports; they are opened through
 // HardwarePorts, so tests put simulated buses behind them.
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -19,12 +20,15 @@
 #include "azt/ports/axis_drive.hpp"
 #include "azt/ports/axis_sensor.hpp"
 #include "azt/ports/motor_io.hpp"
+#include "azt/ports/pulse_input.hpp"
 #include "config/daemon_config.hpp"
 
 namespace azt::app {
 
 struct HardwarePorts {
   linux_os::GpioProvider* gpio = nullptr;  ///< needed by relay drives
+  /// The control loop's time zero: a pulse edge's kernel timestamp is placed on its clock.
+  std::chrono::steady_clock::time_point epoch{};
   std::function<Result<std::unique_ptr<linux_os::SpiBus>>(const std::string& path,
                                                           std::uint32_t speed_hz)>
       open_spi;
@@ -35,7 +39,8 @@ struct HardwarePorts {
       ads1115_chips;
 
   /// spidev and i2c-dev.
-  static HardwarePorts linux_devices(linux_os::GpioProvider* gpio);
+  static HardwarePorts linux_devices(linux_os::GpioProvider* gpio,
+                                     std::chrono::steady_clock::time_point epoch);
 };
 
 /// Opens the drive of `axis`; throws UsageError naming the key of what cannot be had (nothing is
@@ -46,6 +51,11 @@ std::unique_ptr<ports::AxisDrive> open_axis_drive(const HardwareAxisConfig& axis
 /// axis on an ADS1115 already open shares it (on another channel).
 std::unique_ptr<ports::AxisSensor> open_adc_sensor(const HardwareAxisConfig& axis,
                                                    HardwarePorts& ports);
+
+/// The pulse sensor's lines and home switch of a `pulses` sensor, on GPIO edge events; throws
+/// UsageError naming the key.
+std::unique_ptr<ports::PulseInput> open_pulse_input(const HardwareAxisConfig& axis,
+                                                    HardwarePorts& ports);
 
 /// The brake's release line of `axis`; nullptr without `brake`. Throws UsageError naming the key.
 std::unique_ptr<ports::BrakeLine> open_brake_line(const HardwareAxisConfig& axis,

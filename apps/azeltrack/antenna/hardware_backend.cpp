@@ -35,6 +35,7 @@ control::AxisDriveConfig drive_config(const HardwareAxisConfig& a) {
   }
   if (a.brake) d.brake = a.brake_timing;
   if (a.has_motor_inputs()) d.trips = a.trips;
+  if (a.pulses) d.pulses = *a.pulses;
   return d;
 }
 
@@ -45,6 +46,22 @@ control::StationControlConfig control_config(const DaemonConfig& config) {
   c.az_absolute = !read_by_hub(config.hardware.az.sensor);
   if (c.pol && config.hardware.pol) c.pol->drive = drive_config(*config.hardware.pol);
   return c;
+}
+
+/// Axis `i`'s own sensor: a pot on an ADC, or a pulse count (the hub's are opened together).
+void open_sensor(const HardwareAxisConfig& a, HardwarePorts& devices, ports::StationPorts& p,
+                 std::size_t i) {
+  switch (a.sensor) {
+    case AxisSensorKind::Hub:
+      return;
+    case AxisSensorKind::Mcp3008:
+    case AxisSensorKind::Ads1115:
+      p.sensors.at(i) = open_adc_sensor(a, devices);
+      return;
+    case AxisSensorKind::Pulses:
+      p.pulse_inputs.at(i) = open_pulse_input(a, devices);
+      return;
+  }
 }
 
 /// Sensors first, then drives: a drive is only ever opened once everything it needs exists
@@ -64,9 +81,7 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
     if (!sensors) throw UsageError("[hub] device: " + sensors.error().message);
     p.sensors = std::move(sensors).value();
   }
-  for (std::size_t i = 0; i < driven; ++i) {
-    if (!read_by_hub(axes.at(i)->sensor)) p.sensors.at(i) = open_adc_sensor(*axes.at(i), devices);
-  }
+  for (std::size_t i = 0; i < driven; ++i) open_sensor(*axes.at(i), devices, p, i);
   // The pol axis only with both its settings and its devices (the configuration refuses one
   // without the other: config/pol_config.hpp).
   const HardwareAxisConfig* pol = nullptr;
@@ -85,10 +100,16 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
   return p;
 }
 
+/// Axis `i`'s drive and what reads it (a sensor, or a pulse count); "fixed" without a drive.
+std::string describe_axis(const ports::StationPorts& p, std::size_t i) {
+  if (!p.drives.at(i)) return "fixed";
+  const std::string reader =
+      p.sensors.at(i) ? p.sensors.at(i)->describe() : p.pulse_inputs.at(i)->describe();
+  return p.drives.at(i)->describe() + ", " + reader;
+}
+
 std::string describe_ports(const ports::StationPorts& p) {
-  std::string out = "az: " + p.drives[0]->describe() + ", " + p.sensors[0]->describe() + "; el: " +
-                    (p.drives[1] ? p.drives[1]->describe() + ", " + p.sensors[1]->describe()
-                                 : std::string("fixed"));
+  std::string out = "az: " + describe_axis(p, 0) + "; el: " + describe_axis(p, 1);
   if (p.pol_drive && p.pol_sensor) {
     out += "; pol: " + p.pol_drive->describe() + ", " + p.pol_sensor->describe();
   }

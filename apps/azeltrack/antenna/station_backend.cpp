@@ -59,6 +59,21 @@ class StationBackend final : public AntennaBackend {
     return station_.station().encoder_reading();
   }
   [[nodiscard]] std::string describe() const override { return describe_; }
+  [[nodiscard]] std::vector<NamedAxisStatus> axes() const override {
+    const control::StationController& s = station_.station();
+    std::vector<NamedAxisStatus> out{{"az", s.az()}};
+    if (!s.el_fixed()) out.push_back({"el", s.el()});
+    if (const control::PolAxis* pol = station_.pol()) out.push_back({"pol", pol->axis().status()});
+    return out;
+  }
+  std::optional<std::string> home(double now_s, const std::string& axis) override {
+    if (axis == "az") return station_.home(now_s, 0);
+    if (axis == "el") return station_.home(now_s, 1);
+    return "no pulse-counted axis \"" + axis + "\": only az and el can be homed";
+  }
+  void stop_homing(double now_s, std::string_view reason) override {
+    station_.stop_homing(now_s, reason);
+  }
 
  private:
   control::PortedStation station_;

@@ -31,8 +31,8 @@ std::vector<SectionSpec> all_sections() {
   std::vector<SectionSpec> out{kFileSection};
   for (const auto group :
        {sky_sections(), control_sections(), target_sections(), schedule_sections(),
-        hooks_sections(), antenna_sections(), station_io_sections(), server_sections(),
-        service_sections(), radio_sections(), sim_sections()}) {
+        hooks_sections(), antenna_sections(), hardware_sections(), station_io_sections(),
+        server_sections(), service_sections(), radio_sections(), sim_sections()}) {
     out.insert(out.end(), group.begin(), group.end());
   }
   return out;

@@ -6,6 +6,7 @@
 
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
+#include "config/pulse_sensor_config.hpp"
 
 namespace azt::app {
 
@@ -18,6 +19,7 @@ bool pot_on_mcp3008(AxisSensorKind sensor) {
       return true;
     case AxisSensorKind::Hub:
     case AxisSensorKind::Ads1115:
+    case AxisSensorKind::Pulses:
       return false;
   }
   return false;
@@ -89,9 +91,10 @@ AdcKind adc_kind(AxisSensorKind sensor) {
     case AxisSensorKind::Ads1115:
       return {"is needed for sensor = \"ads1115\" (/dev/i2c-N)", 4, {15, 4.096}};
     case AxisSensorKind::Hub:
+    case AxisSensorKind::Pulses:
       break;
   }
-  throw std::logic_error("the EncoderHub is not an ADC");
+  throw std::logic_error("the EncoderHub and a pulse sensor are not ADCs");
 }
 
 void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
@@ -145,13 +148,6 @@ void read_step_dir(const ConfigSection& s, HardwareAxisConfig& a, const std::str
                                             s.number("step_accel_hz_s").value_or(d.accel_hz_s));
   if (!steps) s.fail("start_step_hz", steps.error().message);
   a.steps = *steps;
-}
-
-/// A core settings check's words ("release_s must be …") on the key they name, `prefix` + field.
-[[noreturn]] void fail_field(const ConfigSection& s, const std::string& prefix,
-                             const std::string& message) {
-  const auto space = message.find(' ');
-  s.fail(prefix + message.substr(0, space), message.substr(space + 1));
 }
 
 void read_brake(const ConfigSection& s, HardwareAxisConfig& a, const std::string& chip) {
@@ -244,13 +240,19 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
       read_step_dir(s, a, chip);
       break;
   }
-  if (!read_by_hub(a.sensor)) read_adc(s, a);
+  if (read_by_adc(a.sensor)) read_adc(s, a);
+  read_pulse_sensor(s, a, chip);
   read_brake(s, a, chip);
   read_motor_inputs(s, a, chip);
   return a;
 }
 
 }  // namespace
+
+void fail_field(const ConfigSection& s, const std::string& prefix, const std::string& message) {
+  const auto space = message.find(' ');
+  s.fail(prefix + message.substr(0, space), message.substr(space + 1));
+}
 
 /// A line is a number on [gpio] chip, or "CHIP:N" for a line on another chip.
 std::optional<linux_os::GpioLineSpec> read_gpio_line(const ConfigSection& s, const std::string& key,

@@ -10,6 +10,7 @@
 #include "azt/control/brake.hpp"
 #include "azt/control/motor_trips.hpp"
 #include "azt/control/pot_calibration.hpp"
+#include "azt/control/pulse_axis.hpp"
 #include "azt/control/relay_drive.hpp"
 #include "azt/control/setpoint_drive.hpp"
 #include "azt/control/step_dir.hpp"
@@ -24,8 +25,9 @@ class ConfigSection;
 /// How an axis is turned: an IBT-2 H-bridge on [pwm], relays on GPIO, an MCP41010 digital pot
 /// in place of the rotator box's control pot, or a stepper's step/dir driver.
 enum class AxisDriveKind { Pwm, Relay, Pot, StepDir };
-/// How an axis is read: the EncoderHub on [hub], or a potentiometer on an MCP3008 or ADS1115.
-enum class AxisSensorKind { Hub, Mcp3008, Ads1115 };
+/// How an axis is read: the EncoderHub on [hub], a potentiometer on an MCP3008 or ADS1115, or
+/// pulses counted on GPIO lines from a home switch.
+enum class AxisSensorKind { Hub, Mcp3008, Ads1115, Pulses };
 
 /// Whether the axis is read through the EncoderHub rather than by the Pi itself. A switch, so that
 /// a new kind of sensor is a compile error here rather than a pot assumed.
@@ -35,6 +37,20 @@ constexpr bool read_by_hub(AxisSensorKind sensor) {
       return true;
     case AxisSensorKind::Mcp3008:
     case AxisSensorKind::Ads1115:
+    case AxisSensorKind::Pulses:
+      return false;
+  }
+  return false;
+}
+
+/// Whether the axis is a potentiometer on one of the Pi's ADCs.
+constexpr bool read_by_adc(AxisSensorKind sensor) {
+  switch (sensor) {
+    case AxisSensorKind::Mcp3008:
+    case AxisSensorKind::Ads1115:
+      return true;
+    case AxisSensorKind::Hub:
+    case AxisSensorKind::Pulses:
       return false;
   }
   return false;
@@ -45,10 +61,15 @@ inline constexpr ConfigChoices<AxisDriveKind, 4> kAxisDriveKinds{
      {"relay", AxisDriveKind::Relay},
      {"pot", AxisDriveKind::Pot},
      {"stepdir", AxisDriveKind::StepDir}}};
-inline constexpr ConfigChoices<AxisSensorKind, 3> kAxisSensorKinds{
+inline constexpr ConfigChoices<AxisSensorKind, 4> kAxisSensorKinds{
     {{"hub", AxisSensorKind::Hub},
      {"mcp3008", AxisSensorKind::Mcp3008},
-     {"ads1115", AxisSensorKind::Ads1115}}};
+     {"ads1115", AxisSensorKind::Ads1115},
+     {"pulses", AxisSensorKind::Pulses}}};
+/// actuator_extend: which way the axis turns as the actuator extends.
+inline constexpr ConfigChoices<control::ActuatorSense, 2> kActuatorSenses{
+    {{"raises", control::ActuatorSense::ExtendRaises},
+     {"lowers", control::ActuatorSense::ExtendLowers}}};
 
 struct HardwareAxisConfig {
   std::string name;  ///< "az", "el" or "pol"
@@ -85,6 +106,12 @@ struct HardwareAxisConfig {
   std::uint8_t adc_address = 0x48;  ///< ads1115
   control::PotInputConfig pot;
 
+  // sensor = "pulses": a reed or Hall sensor's line, or a quadrature pair (A, then B), and the
+  // home switch; what the core's PulseAxis counts and homes (pulse_sensor_config.hpp).
+  std::vector<linux_os::GpioLineSpec> pulse_lines;
+  std::optional<linux_os::GpioLineSpec> home_switch;
+  std::optional<control::PulseAxisConfig> pulses;
+
   // The motor's brake and protection, any drive (docs/hardware.md "Brake, current and
   // temperature"): the brake's release line and timing; the current (an IBT-2's IS pin) and
   // the temperature (an LM35) on an MCP3008's channels; the driver's fault line.
@@ -104,13 +131,15 @@ struct HardwareAxisConfig {
     return current_adc_channel || temperature_adc_channel || driver_fault;
   }
 
-  /// The GPIO lines this axis uses (relays, bridge enables, the brake, the driver's fault).
+  /// The GPIO lines this axis uses (relays, bridge enables, the brake, the driver's fault, a
+  /// pulse sensor's lines and its home switch).
   [[nodiscard]] std::vector<const linux_os::GpioLineSpec*> gpio_lines() const {
     std::vector<const linux_os::GpioLineSpec*> out;
     for (const auto* l : {&relay_forward, &relay_reverse, &relay_power, &relay_polarity, &enable,
-                          &step_dir, &brake, &driver_fault}) {
+                          &step_dir, &brake, &driver_fault, &home_switch}) {
       if (*l) out.push_back(&**l);
     }
+    for (const auto& l : pulse_lines) out.push_back(&l);
     return out;
   }
 
@@ -155,6 +184,11 @@ struct HardwareConfig {
     return power && !power->simulated();
   }
 };
+
+/// A core settings check's words ("release_s must be …") on the key they name: `prefix` + their
+/// first word. Throws UsageError.
+[[noreturn]] void fail_field(const ConfigSection& s, const std::string& prefix,
+                             const std::string& message);
 
 /// A GPIO line key of `s`: a number on `chip`, or "CHIP:N"; nullopt when absent. Errors name it.
 std::optional<linux_os::GpioLineSpec> read_gpio_line(const ConfigSection& s, const std::string& key,

@@ -13,7 +13,8 @@ std::span<const SectionSpec> control_sections();     ///< [control], [geometry],
 std::span<const SectionSpec> target_sections();      ///< [target], [satellites], [[spacecraft]]
 std::span<const SectionSpec> schedule_sections();    ///< [[schedule]]
 std::span<const SectionSpec> hooks_sections();       ///< [hooks]
-std::span<const SectionSpec> antenna_sections();     ///< [antenna], [hamlib], [hub], [pwm], …
+std::span<const SectionSpec> antenna_sections();     ///< [antenna], [hamlib], [hub], [pwm]
+std::span<const SectionSpec> hardware_sections();    ///< [hardware.power], [hardware.az|el|pol]
 std::span<const SectionSpec> station_io_sections();  ///< [gpio], [sequencer]
 std::span<const SectionSpec> server_sections();      ///< [rotctld], [[serial]], [web], …
 std::span<const SectionSpec> service_sections();     ///< [gps], [time], [receiver], [export]

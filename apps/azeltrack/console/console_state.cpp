@@ -159,6 +159,7 @@ json DaemonConsole::state() {
     antenna["encoder_az_deg"] = raw->az_deg;
     antenna["encoder_el_deg"] = raw->el_deg;
   }
+  if (json axes = axes_json(); !axes.empty()) antenna["axes"] = std::move(axes);
   json target = target_json();
   if (const auto& fixed = p_.config.mount.el_fixed) {
     // A fixed-elevation array: its elevation is known, not read, and a target counts when it

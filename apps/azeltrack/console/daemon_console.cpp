@@ -54,6 +54,10 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     act_direction_test(body, source, std::move(done));
     return;
   }
+  if (action == "hardware/home") {
+    act_home(body, source, done);
+    return;
+  }
   if (action == "satellites/refresh") {
     act_satellites_refresh(source, done);
     return;

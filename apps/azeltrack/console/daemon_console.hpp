@@ -202,6 +202,10 @@ class DaemonConsole final : public ConsoleModel {
   void act_pol(const nlohmann::json& body, const std::string& source, ActDone done);
   /// /api/state `pol`: null without a pol axis (pol_actions.cpp).
   [[nodiscard]] nlohmann::json pol_json() const;
+  /// /api/state `antenna.axes`: each axis's brake, motor readings and homing (axis_actions.cpp).
+  [[nodiscard]] nlohmann::json axes_json() const;
+  /// POST hardware/home {"axis"}: homes a pulse-counted axis (axis_actions.cpp).
+  void act_home(const nlohmann::json& body, const std::string& source, const ActDone& done);
   /// POST time/servers {"servers": [...]}: chrony's upstream servers ([time] manage_chrony).
   void act_time_servers(const nlohmann::json& body, ActDone done);
 

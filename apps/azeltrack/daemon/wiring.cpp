@@ -273,7 +273,7 @@ std::unique_ptr<AntennaBackend> StationDaemon::make_backend() {
   if (config_.backend == BackendKind::Hamlib) return make_hamlib_backend(config_);
   if (config_.backend == BackendKind::Pwm) return make_pwm_backend(io_, config_);
   if (config_.backend == BackendKind::Hardware) {
-    return make_hardware_backend(io_, config_, HardwarePorts::linux_devices(gpio_.get()));
+    return make_hardware_backend(io_, config_, HardwarePorts::linux_devices(gpio_.get(), start_));
   }
   return make_sim_backend(config_, &sim_truth_);
 }

@@ -226,6 +226,7 @@ void StationCommands::stop(const CommandSource& source) {
       p_.modes.stop(false);
       break;
   }
+  p_.antenna.stop_homing(p_.monotonic_s(), "stopped by " + source.name);
   (void)accept(source, {"STOP", ""});
 }
 

@@ -124,6 +124,11 @@ AxisStatus DrivenAxis::status() const {
     }
     s.homing = pulses_->homing().state();
     s.held = pulses_->why_not_homed().value_or("");
+    s.pulse_count = pulses_->counter().count();
+  }
+  if (trips_) {
+    s.current_a = trips_->last_current_a();
+    s.temperature_c = trips_->last_temperature_c();
   }
   return s;
 }

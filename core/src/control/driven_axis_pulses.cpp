@@ -60,6 +60,12 @@ std::optional<std::string> DrivenAxis::home(double now_s, bool home_closed) {
   return std::nullopt;
 }
 
+void DrivenAxis::stop_homing(double now_s, std::string_view reason) {
+  if (!pulses_ || !pulses_->homing_active()) return;
+  pulses_->abort(reason);
+  halt(now_s);
+}
+
 std::optional<double> DrivenAxis::drive_homing(double now_s) {
   const auto wanted = pulses_->homing_duty(now_s);
   pulse_reading(now_s);  // a homing that ended this tick references the count now

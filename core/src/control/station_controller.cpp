@@ -53,6 +53,11 @@ std::optional<std::string> StationController::home(double now_s, std::size_t axi
   return (axis == 0 ? az_ : el_).home(now_s, home_closed);
 }
 
+void StationController::stop_homing(double now_s, std::string_view reason) {
+  az_.stop_homing(now_s, reason);
+  if (!el_fixed()) el_.stop_homing(now_s, reason);
+}
+
 const PulseAxis* StationController::pulses(std::size_t axis) const {
   if (axis != 0 && el_fixed()) return nullptr;
   return (axis == 0 ? az_ : el_).pulses();

@@ -98,6 +98,7 @@ std::string choice_extra_keys(const SectionSpec& s, std::string_view choice) {
     return "adc_device = \"/dev/spidev0.0\"\npot_calibration = [100.0, 0.0, 900.0, 360.0]\n";
   }
   if (choice == "relay") return "relay_forward = 5\nrelay_reverse = 6\n";
+  if (choice == "pulses") return "pulse_line = 12\nhome_switch = 13\ncounts_per_deg = 2.0\n";
   if (choice == "stepdir") return "step_channel = 2\ndir = 17\n";
   if (choice == "pot") {
     return "spi_device = \"/dev/spidev0.1\"\nwiper_calibration = [10.0, 0.0, 250.0, 360.0]\n";

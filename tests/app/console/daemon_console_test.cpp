@@ -174,6 +174,52 @@ TEST(DaemonConsole, TheDirectionTestIsRefusedWhileTracking) {
   }
 }
 
+TEST(DaemonConsole, TheStateShowsEachAxisBrakeMotorAndHoming) {
+  ConsoleRig rig;
+  EXPECT_FALSE(rig.console.state()["antenna"].contains("axes")) << "nothing to show: no key";
+  control::AxisStatus az;
+  az.brake = control::BrakeState::Released;
+  az.brake_release = true;
+  az.current_a = 2.5;
+  az.temperature_c = 41.0;
+  az.homing = control::HomingState::Seeking;
+  az.held = "not homed: homing in progress (seeking the home switch)";
+  az.pulse_count = -17;
+  rig.antenna.axes_ = {{"az", az}, {"el", control::AxisStatus{}}};
+  const json axes = rig.console.state()["antenna"]["axes"];
+  EXPECT_EQ(axes["az"]["brake"], "released");
+  EXPECT_EQ(axes["az"]["brake_released"], true);
+  EXPECT_EQ(axes["az"]["current_a"], 2.5);
+  EXPECT_EQ(axes["az"]["temperature_c"], 41.0);
+  EXPECT_EQ(axes["az"]["homing"], "seeking");
+  EXPECT_EQ(axes["az"]["held"], az.held);
+  EXPECT_EQ(axes["az"]["pulse_count"], -17);
+  EXPECT_FALSE(axes.contains("el")) << "a plain axis has nothing more to show";
+}
+
+TEST(DaemonConsole, HomingIsAskedOfThePulseAxisAndEndedByAStop) {
+  ConsoleRig rig;
+  const ActResult r = rig.act("hardware/home", json{{"axis", "el"}});
+  ASSERT_FALSE(r.error.has_value());
+  EXPECT_EQ(rig.antenna.homed, std::vector<std::string>{"el"});
+  const auto status_of = [&rig](const json& body) {
+    try {
+      rig.act("hardware/home", body);
+    } catch (const ApiError& e) {
+      return e.status();
+    }
+    return 200U;
+  };
+  EXPECT_EQ(status_of(json{{"axis", "pol"}}), 400U);
+  EXPECT_EQ(status_of(json::object()), 400U);
+  rig.antenna.home_refusal = "the axis is stopped (emergency stop): clear the fault first";
+  EXPECT_EQ(status_of(json{{"axis", "az"}}), 409U);
+  // Any STOP ends a homing in progress, naming who stopped it.
+  ASSERT_FALSE(rig.act("stop", json::object()).error.has_value());
+  ASSERT_EQ(rig.antenna.homing_stopped.size(), 1U);
+  EXPECT_NE(rig.antenna.homing_stopped[0].find("console"), std::string::npos);
+}
+
 TEST(DaemonConsole, AnUnknownActionIs404) {
   ConsoleRig rig;
   try {

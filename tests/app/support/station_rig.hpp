@@ -46,6 +46,15 @@ class StandingAntenna final : public AntennaBackend {
     return std::nullopt;
   }
   [[nodiscard]] std::string describe() const override { return "standing antenna"; }
+  [[nodiscard]] std::vector<NamedAxisStatus> axes() const override { return axes_; }
+  std::optional<std::string> home(double /*now_s*/, const std::string& axis) override {
+    if (home_refusal) return home_refusal;
+    homed.push_back(axis);
+    return std::nullopt;
+  }
+  void stop_homing(double /*now_s*/, std::string_view reason) override {
+    homing_stopped.emplace_back(reason);
+  }
 
   std::vector<std::string> faults_;
   double az_deg = 100.0;
@@ -55,6 +64,10 @@ class StandingAntenna final : public AntennaBackend {
   bool lost = false;              ///< the position unknown
   std::optional<double> pol_deg;  ///< a pol axis ([mount.pol]) standing here; none by default
   control::PolDemand pol_demand;
+  std::vector<NamedAxisStatus> axes_;       ///< what axes() reports
+  std::optional<std::string> home_refusal;  ///< home()'s answer; none: homing starts
+  std::vector<std::string> homed;           ///< each axis home() started
+  std::vector<std::string> homing_stopped;  ///< each stop_homing()'s reason
 };
 
 /// The front door of a station with the Sun and the Moon as targets, on a 0–450° mount with

@@ -65,6 +65,11 @@ struct AxisStatus {
   /// Why the axis holds rather than tracks its target: a pulse-counted axis not (yet) homed, in
   /// Homing's words ("not homed: homing in progress (…)"); empty otherwise.
   std::string held;
+  /// A pulse-counted axis: the counter's count (from where it started, not from home).
+  std::optional<std::int64_t> pulse_count;
+  /// The motor's last current and temperature readings, when the axis has such inputs.
+  std::optional<double> current_a;
+  std::optional<double> temperature_c;
 };
 
 /// One axis's travel-end switches (docs/hardware.md), tripped or not: `reverse` at the end of
@@ -107,6 +112,9 @@ class DrivenAxis {
   /// is the switch's level now. Returns why not (no pulse sensor, a fault that must be cleared
   /// first); a lost position is no reason: homing is its cure.
   std::optional<std::string> home(double now_s, bool home_closed);
+  /// Ends a homing in progress (the operator's STOP from any source): the axis stops and stays
+  /// unreferenced with `reason` until homed again. Nothing to do when homing is not active.
+  void stop_homing(double now_s, std::string_view reason);
   /// The pulse sensor, for its counts and words; null for any other sensor.
   [[nodiscard]] const PulseAxis* pulses() const { return pulses_ ? &*pulses_ : nullptr; }
 

@@ -42,6 +42,8 @@ class PortedStation {
   void stop_with(double now_s, std::string_view reason);
   /// The operator's command to home a pulse-counted axis (0 az, 1 el); why not.
   std::optional<std::string> home(double now_s, std::size_t axis);
+  /// Ends every homing in progress (the operator's STOP); the axes stay unreferenced.
+  void stop_homing(double now_s, std::string_view reason) { station_.stop_homing(now_s, reason); }
 
   /// One line per fault: latched axis faults, a drive's write error, each sensor's error (a
   /// link two axes share is named once).

@@ -128,6 +128,8 @@ class StationController {
   void on_pulse_edges(double now_s, std::size_t axis, std::span<const ports::PulseEdge> edges);
   /// Starts homing `axis` (0 az, 1 el); why not (no pulse sensor, a fault to clear first).
   std::optional<std::string> home(double now_s, std::size_t axis, bool home_closed);
+  /// Ends every homing in progress (a STOP): see DrivenAxis::stop_homing.
+  void stop_homing(double now_s, std::string_view reason);
   /// The pulse sensor of `axis` (0 az, 1 el); null when it has none or the elevation is fixed.
   [[nodiscard]] const PulseAxis* pulses(std::size_t axis) const;
 
