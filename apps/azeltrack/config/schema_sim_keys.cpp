@@ -162,6 +162,35 @@ constexpr std::array<KeySpec, 10> kSimReceiver{{
 constexpr std::array<KeySpec, 6> kPolPlant{
     {kPlant[0], kPlant[1], kPlant[2], kPlant[3], kPlant[4], kPlant[5]}};
 
+/// [sim.el] alone: the dish of a pulse-counted elevation ([hardware.el] sensor = "pulses", the
+/// actuator's triangle), flown as a linear actuator (sim_actuator_config.cpp).
+constexpr std::array<KeySpec, 2> kActuatorPlant{{
+    {.key = "actuator_speed_mm_s",
+     .type = KeyType::Number,
+     .unit = "mm/s",
+     .range = above_up_to(0.0, 200.0),
+     .default_toml = "8.0",
+     .help = "a pulse-counted elevation's actuator speed at full duty (a 36 V superjack: about 8)"},
+    {.key = "drop_pulse_at_s",
+     .type = KeyType::Number,
+     .unit = "s",
+     .range = closed(0.0, 1.0e6),
+     .default_note = "none",
+     .help = "the first reed pulse from this simulated time on is lost: the next pass of the home "
+             "switch must find the count off by one"},
+}};
+
+/// `a`'s keys, then `b`'s.
+template <std::size_t A, std::size_t B>
+constexpr std::array<KeySpec, A + B> joined(const std::array<KeySpec, A>& a,
+                                            const std::array<KeySpec, B>& b) {
+  std::array<KeySpec, A + B> out{};
+  for (std::size_t i = 0; i < A; ++i) out.at(i) = a.at(i);
+  for (std::size_t i = 0; i < B; ++i) out.at(A + i) = b.at(i);
+  return out;
+}
+constexpr auto kElPlant = joined(kPlant, kActuatorPlant);
+
 constexpr std::array<SectionSpec, 6> kSections{{
     {.name = "sim",
      .chapter = Chapter::Simulation,
@@ -176,9 +205,12 @@ constexpr std::array<SectionSpec, 6> kSections{{
              "(`[mount.az]`); these are its own."},
     {.name = "sim.el",
      .chapter = Chapter::Simulation,
-     .keys = kPlant,
+     .keys = kElPlant,
      .title = "The simulated elevation axis",
-     .help = "As `[sim.az]`, for the elevation axis."},
+     .help =
+         "As `[sim.az]`, for the elevation axis; with `[hardware.el] sensor = \"pulses\"` "
+         "and `counts_per_mm`, a dish on a linear actuator counted by a reed from a home switch "
+         "([hardware.md](hardware.md) \"Linear actuators\")."},
     {.name = "sim.pol",
      .chapter = Chapter::Simulation,
      .keys = kPolPlant,

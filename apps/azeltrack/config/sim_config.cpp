@@ -7,6 +7,7 @@
 #include "config/config_file.hpp"
 #include "config/pointing_config.hpp"
 #include "config/pol_config.hpp"
+#include "config/sim_actuator_config.hpp"
 #include "config/station_setup_config.hpp"
 
 namespace azt::app {
@@ -96,6 +97,8 @@ sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& moun
     // The array stands at its fixed angle, whatever [sim.el] says: nothing would move it there.
     plant.el_axis = false;
     plant.el.start_deg = *station.el_fixed_deg;
+  } else {
+    plant.el_actuator = sim_actuator_from(file, plant.el);
   }
   return plant;
 }

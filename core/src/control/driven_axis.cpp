@@ -15,6 +15,14 @@ SupervisorConfig with_lsb(SupervisorConfig s, const AxisControlConfig& c) {
   return s;
 }
 
+/// A pulse-counted axis's step is one count at the coarse end of its scale (pulse_scale.hpp),
+/// whatever the mount's encoder resolution says: the controller's window and the supervisor's
+/// checks are in the steps the sensor really has.
+AxisControlConfig with_count_lsb(AxisControlConfig c, const AxisDriveConfig& drive) {
+  if (drive.pulses) c.lsb_deg = PulseAxis::make(*drive.pulses).value().scale().max_deg_per_count();
+  return c;
+}
+
 }  // namespace
 
 std::string_view to_string(DriveKind kind) {
@@ -42,8 +50,8 @@ bool sends_setpoint(DriveKind kind) {
 
 DrivenAxis::DrivenAxis(const AxisControlConfig& control, const SupervisorConfig& supervisor,
                        const AxisDriveConfig& drive, double start_mount_deg, double tick_s)
-    : controller_(control),
-      supervisor_(with_lsb(supervisor, control)),
+    : controller_(with_count_lsb(control, drive)),
+      supervisor_(with_lsb(supervisor, with_count_lsb(control, drive))),
       drive_(drive),
       relay_(drive.relay),
       mount_deg_(start_mount_deg),

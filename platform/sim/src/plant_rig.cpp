@@ -13,6 +13,34 @@ PlantRig::PlantRig(const PlantSetup& plant, std::unique_ptr<SimulatedHub> hub)
     if (plant.brakes.at(i)) brakes_.at(i).emplace(*plant.brakes.at(i));
     if (plant.thermal.at(i)) thermal_.at(i).emplace(*plant.thermal.at(i));
   }
+  if (plant.el_actuator) {
+    el_dish_.emplace(plant.el_actuator->dish);
+    if (plant.el_actuator->drop_pulse_at_s) {
+      el_dish_->drop_pulse_after(*plant.el_actuator->drop_pulse_at_s);
+    }
+    plants_.el_follows(el_dish_->angle_deg(), 0.0);
+  }
+}
+
+void PlantRig::step_el_dish(double duty, double step_s, double end_s) {
+  for (const ActuatorEvent& e : el_dish_->step(duty, step_s)) {
+    // On the loop's clock: the dish's own clock skips the time a late tick's cap leaves out.
+    const double at_s = end_s - (el_dish_->now_s() - e.at_s);
+    switch (e.kind) {
+      case ActuatorEventKind::Pulse:
+        el_edges_.push_back({ports::PulseLine::Pulse, true, at_s});
+        break;
+      case ActuatorEventKind::HomeClosed:
+        el_edges_.push_back({ports::PulseLine::Home, true, at_s});
+        break;
+      case ActuatorEventKind::HomeOpened:
+        el_edges_.push_back({ports::PulseLine::Home, false, at_s});
+        break;
+    }
+  }
+  const double rate_deg_s =
+      el_dish_->rate_mm_s() * el_dish_->geometry().deg_per_mm(el_dish_->length_mm());
+  plants_.el_follows(el_dish_->angle_deg(), rate_deg_s);
 }
 
 std::optional<double> PlantRig::motor_temperature_c(std::size_t axis, double now_s) {
@@ -49,7 +77,8 @@ void PlantRig::advance(double now_s) {
       if (brakes_.at(a)) shaft_duty.at(a) = brakes_.at(a)->step(brake_on_.at(a), duty_.at(a), step);
       if (thermal_.at(a)) thermal_.at(a)->step(duty_.at(a), step);
     }
-    plants_.step(shaft_duty[0], shaft_duty[1], step);
+    plants_.step(shaft_duty[0], el_dish_ ? 0.0 : shaft_duty[1], step);
+    if (el_dish_) step_el_dish(shaft_duty[1], step, now_s - dt + std::min(dt, (i + 1) * step_s));
     if (pol_) pol_->step(pol_duty_, step);
     faults_.inject_due(from_s + std::min(dt, (i + 1) * step_s), plants_);
     hub_->run(plants_, step);

@@ -109,6 +109,21 @@ class SimMotorSensor final : public ports::MotorSensor {
   std::size_t axis_;
 };
 
+/// The elevation actuator's reed and home switch (PlantSetup::el_actuator).
+class SimActuatorPulses final : public ports::PulseInput {
+ public:
+  explicit SimActuatorPulses(std::shared_ptr<PlantRig> rig) : rig_(std::move(rig)) {}
+  /// The azimuth's sensor, read first each tick, has run the plants up to the tick.
+  std::vector<ports::PulseEdge> take_edges() override { return rig_->take_el_edges(); }
+  [[nodiscard]] bool home_closed() const override { return rig_->el_home_closed(); }
+  [[nodiscard]] std::string describe() const override {
+    return "simulated actuator reed and home switch";
+  }
+
+ private:
+  std::shared_ptr<PlantRig> rig_;
+};
+
 }  // namespace
 
 std::unique_ptr<SimulatedHub> make_model_hub(const PlantSetup& plant) {
@@ -122,7 +137,11 @@ SimulatedStation make_simulated_station(const PlantSetup& plant,
   SimulatedStation station;
   for (std::size_t i = 0; i < (plant.el_axis ? 2U : 1U); ++i) {
     station.ports.drives.at(i) = std::make_unique<SimDrive>(rig, i);
-    station.ports.sensors.at(i) = std::make_unique<SimSensor>(rig, i);
+    if (i == 1 && plant.el_actuator) {
+      station.ports.pulse_inputs.at(i) = std::make_unique<SimActuatorPulses>(rig);
+    } else {
+      station.ports.sensors.at(i) = std::make_unique<SimSensor>(rig, i);
+    }
     if (plant.brakes.at(i)) station.ports.brakes.at(i) = std::make_unique<SimBrakeLine>(rig, i);
     if (plant.thermal.at(i))
       station.ports.motor_sensors.at(i) = std::make_unique<SimMotorSensor>(rig, i);

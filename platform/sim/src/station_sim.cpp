@@ -114,6 +114,8 @@ control::StationControlConfig station_control_config(const StationSimSetup& setu
   // comes from a configuration file; tests may give the plants other resolutions).
   c.az_control.lsb_deg = proto::hub_resolution_deg(setup.plant.az.encoder_bits);
   c.el_control.lsb_deg = proto::hub_resolution_deg(setup.plant.el.encoder_bits);
+  // A pulse-counted elevation: its step is a count (DrivenAxis takes it from the scale).
+  if (setup.plant.el_actuator) c.el_drive.pulses = setup.plant.el_actuator->pulses;
   if (c.pol && setup.plant.pol) {
     c.pol->control.lsb_deg = proto::hub_resolution_deg(setup.plant.pol->encoder_bits);
   }

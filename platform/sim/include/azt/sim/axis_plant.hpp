@@ -72,6 +72,15 @@ class AxisPlant {
   /// leaves the state as it is. Ends any EncoderGlitch.
   void step(double duty, double dt_s);
 
+  /// The axis is moved by another model (a linear actuator, actuator_dish_plant.hpp): its shaft
+  /// and motor are at `shaft_deg`, turning at `rate_deg_s`, so its encoder and every reader of the
+  /// plant's truth see that model's angle.
+  void follow(double shaft_deg, double rate_deg_s) {
+    shaft_deg_ = shaft_deg;
+    motor_deg_ = shaft_deg;
+    motor_rate_deg_s_ = rate_deg_s;
+  }
+
   [[nodiscard]] double shaft_deg() const { return shaft_deg_; }
   [[nodiscard]] double motor_deg() const { return motor_deg_; }
   [[nodiscard]] double motor_rate_deg_s() const { return motor_rate_deg_s_; }

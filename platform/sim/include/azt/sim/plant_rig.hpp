@@ -9,6 +9,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include "azt/ports/pulse_input.hpp"
 
 #include "azt/sim/fault_schedule.hpp"
 #include "azt/sim/plant_setup.hpp"
@@ -42,6 +46,13 @@ class PlantRig {
   [[nodiscard]] const SimulatedHub& hub() const { return *hub_; }
   /// The polarisation plant's truth; nullptr without one.
   [[nodiscard]] const AxisPlant* pol_plant() const { return pol_ ? &*pol_ : nullptr; }
+  /// The elevation actuator's reed and home switch edges since the last call (the plants run up
+  /// to the last read), on the loop's clock; none without an actuator.
+  std::vector<ports::PulseEdge> take_el_edges() { return std::exchange(el_edges_, {}); }
+  /// The elevation actuator's home switch now (false without one).
+  [[nodiscard]] bool el_home_closed() const { return el_dish_ && el_dish_->home_closed(); }
+  /// The elevation actuator; nullptr without one.
+  [[nodiscard]] const ActuatorDishPlant* el_dish() const { return el_dish_ ? &*el_dish_ : nullptr; }
   /// The brake of `axis`; nullptr without one.
   [[nodiscard]] const BrakePlant* brake(std::size_t axis) const {
     return brakes_.at(axis) ? &*brakes_.at(axis) : nullptr;
@@ -49,6 +60,9 @@ class PlantRig {
 
  private:
   void advance(double now_s);
+  /// The elevation actuator for one step of the hub ending at `end_s` on the loop's clock: its
+  /// edges queued, the el plant following it.
+  void step_el_dish(double duty, double step_s, double end_s);
 
   FaultSchedule faults_;
   SimAntenna plants_;
@@ -59,6 +73,8 @@ class PlantRig {
   std::array<bool, 2> brake_on_{};
   std::array<std::optional<MotorThermalPlant>, 2> thermal_;
   double pol_duty_ = 0.0;
+  std::optional<ActuatorDishPlant> el_dish_;
+  std::vector<ports::PulseEdge> el_edges_;
   std::optional<double> first_s_;  ///< the configured faults are timed from the first read
   std::optional<double> last_s_;
   std::optional<HubArrival> frame_;

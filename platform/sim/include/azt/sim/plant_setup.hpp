@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "azt/calibration/pointing_model.hpp"
+#include "azt/control/pulse_axis.hpp"
 #include "azt/proto/hub_frame.hpp"
+#include "azt/sim/actuator_dish_plant.hpp"
 #include "azt/sim/axis_plant.hpp"
 #include "azt/sim/brake_plant.hpp"
 #include "azt/sim/model_hub.hpp"
@@ -22,6 +24,17 @@ struct ScheduledFault {
   double at_s = 0.0;
   bool azimuth = true;  ///< false: the elevation axis
   AxisFault fault;
+};
+
+/// A dish whose elevation is a linear actuator counted by a reed from a home switch (docs/
+/// hardware.md, "Linear actuators"): the dish plant moves the elevation, and the station reads it
+/// by its count (`pulses`, its PulseAxis settings), not through the hub.
+struct SimActuatorElevation {
+  ActuatorDishParams dish;
+  control::PulseAxisConfig pulses;
+  /// The first reed pulse at or after this simulated time is lost (a pulse lost to motor noise):
+  /// the next pass of the home switch must reveal it.
+  std::optional<double> drop_pulse_at_s;
 };
 
 struct PlantSetup {
@@ -48,6 +61,8 @@ struct PlantSetup {
   /// False: the station's elevation does not move ([mount.el] fixed_deg): it gets no elevation
   /// drive or sensor, and the elevation plant stays where it starts.
   bool el_axis = true;
+  /// The elevation on a pulse-counted linear actuator, if simulated.
+  std::optional<SimActuatorElevation> el_actuator;
 };
 
 }  // namespace azt::sim

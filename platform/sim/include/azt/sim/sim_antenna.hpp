@@ -17,6 +17,8 @@ class SimAntenna {
     el_.step(el_duty, dt_s);
   }
   void inject(bool azimuth, const AxisFault& fault) { (azimuth ? az_ : el_).inject(fault); }
+  /// The elevation moved by a linear actuator's model instead of its motor (AxisPlant::follow).
+  void el_follows(double shaft_deg, double rate_deg_s) { el_.follow(shaft_deg, rate_deg_s); }
 
   [[nodiscard]] const AxisPlant& az() const { return az_; }
   [[nodiscard]] const AxisPlant& el() const { return el_; }
