@@ -13,6 +13,7 @@
 #include "common/horizon_mask_option.hpp"
 #include "common/moon_window_report.hpp"
 #include "common/sky_setup.hpp"
+#include "config/config_schema.hpp"
 
 namespace azt::app {
 namespace {
@@ -28,6 +29,17 @@ orbit::HorizonMask station_mask(const std::string& option, const std::string& ma
                                 const std::string& min_el_option, const std::string& min_el) {
   return mask.empty() ? parse_horizon_mask(min_el_option, min_el)
                       : parse_horizon_mask(option, mask);
+}
+
+/// `--fixed-el` / `--beam-width`: a number within the range of its [mount.el] key (the
+/// configuration's own check and words).
+double fixed_array_option(const std::string& flag, const std::string& text, std::string_view key) {
+  const double value = parse_number_option(flag, text);
+  const KeySpec* spec = find_key(*find_section("mount.el"), key);
+  if (auto why = key_violation(*spec, toml::value<double>(value))) {
+    throw UsageError(flag + " " + *why + " (as [mount.el] " + std::string(key) + ")");
+  }
+  return value;
 }
 
 eme::MoonWindowSettings settings_from(const MoonWindowOptions& o) {
@@ -47,10 +59,8 @@ eme::MoonWindowSettings settings_from(const MoonWindowOptions& o) {
   if (band == nullptr) throw UsageError("--band: '" + o.band + "' is not a known band");
   s.freq_mhz = band->freq_mhz;
   if (o.fixed_el.empty()) return s;
-  const double fixed_el = parse_number_option("--fixed-el", o.fixed_el);
-  const double beam = parse_number_option("--beam-width", o.beam_width);
-  if (!(fixed_el >= -5.0 && fixed_el <= 90.0)) throw UsageError("--fixed-el must be in [-5, 90]");
-  if (!(beam >= 1.0 && beam <= 90.0)) throw UsageError("--beam-width must be in [1, 90]");
+  const double fixed_el = fixed_array_option("--fixed-el", o.fixed_el, "fixed_deg");
+  const double beam = fixed_array_option("--beam-width", o.beam_width, "beam_width_deg");
   return eme::in_fixed_beam(s, fixed_el, beam);
 }
 

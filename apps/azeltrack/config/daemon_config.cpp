@@ -336,7 +336,7 @@ void read_antenna(const ConfigFile& file, DaemonConfig& c) {
   if (c.backend == BackendKind::Hamlib && !hamlib.present()) {
     antenna.fail("backend", "is \"hamlib\" but there is no [hamlib] table");
   }
-  c.hardware = read_hardware(file, c.gpio.chip);
+  c.hardware = read_hardware(file, c.gpio.chip, !c.mount.el_fixed);
   if (c.backend == BackendKind::Hardware) {
     if (c.hardware.uses_hub() && c.hub.device.empty()) {
       antenna.fail("backend", "is \"hardware\" with a hub sensor but [hub] device is not set");

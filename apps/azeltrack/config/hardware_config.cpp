@@ -277,13 +277,13 @@ HardwareAxisConfig default_axis(const std::string& name) {
   return a;
 }
 
-HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chip) {
+HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chip, bool el_axis) {
   const ConfigSection hw = file.section("hardware");
   HardwareConfig h;
   h.az = read_axis(hw.child("az"), "az", gpio_chip);
   h.el = read_axis(hw.child("el"), "el", gpio_chip);
   // A fixed elevation ([mount.el] fixed_deg) has nothing to drive or read.
-  h.el_axis = !file.section("mount").child("el").has("fixed_deg");
+  h.el_axis = el_axis;
   if (!h.el_axis && hw.child("el").present()) {
     file.fail(
         "[hardware.el] drives an elevation that [mount.el] fixed_deg says does not move: "

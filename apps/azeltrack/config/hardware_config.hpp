@@ -194,8 +194,9 @@ struct HardwareConfig {
 std::optional<linux_os::GpioLineSpec> read_gpio_line(const ConfigSection& s, const std::string& key,
                                                      const std::string& chip, bool active_low);
 
-/// Reads [hardware]; `gpio_chip` is [gpio] chip (relay lines given as bare numbers). Throws
-/// UsageError naming the key.
-HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chip);
+/// Reads [hardware]; `gpio_chip` is [gpio] chip (relay lines given as bare numbers); `el_axis`
+/// false: [mount.el] fixed_deg, and a [hardware.el] table is refused. Throws UsageError naming
+/// the key.
+HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chip, bool el_axis);
 
 }  // namespace azt::app

@@ -50,12 +50,8 @@ void DaemonConsole::act(const std::string& action, const json& body, const std::
     done(ActResult{{{"restarting", true}}, std::nullopt});
     return;
   }
-  if (action == "hardware/direction-test") {
-    act_direction_test(body, source, std::move(done));
-    return;
-  }
-  if (action == "hardware/home") {
-    act_home(body, source, done);
+  if (action == "hardware/direction-test" || action == "hardware/home") {
+    act_hardware(action, body, source, std::move(done));
     return;
   }
   if (action == "satellites/refresh") {
@@ -105,6 +101,15 @@ void DaemonConsole::act_satellites_refresh(const std::string& source, const ActD
   }
   p_.log(source + ": element sources fetched now");
   done(ActResult{});
+}
+
+void DaemonConsole::act_hardware(const std::string& action, const json& body,
+                                 const std::string& source, ActDone done) {
+  if (action == "hardware/home") {
+    act_home(body, source, done);
+  } else {
+    act_direction_test(body, source, std::move(done));
+  }
 }
 
 void DaemonConsole::act_direction_test(const json& body, const std::string& source, ActDone done) {

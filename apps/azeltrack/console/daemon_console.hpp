@@ -177,6 +177,9 @@ class DaemonConsole final : public ConsoleModel {
                                const std::string& source);
   /// POST /api/satellites/refresh: every element source fetched now.
   void act_satellites_refresh(const std::string& source, const ActDone& done);
+  /// POST /api/hardware/…: the direction test or homing.
+  void act_hardware(const std::string& action, const nlohmann::json& body,
+                    const std::string& source, ActDone done);
   /// POST /api/hardware/direction-test {"axis"}: answered when the test ends (about 1.6 s).
   void act_direction_test(const nlohmann::json& body, const std::string& source, ActDone done);
   /// POST /api/schedule (the list replaced whole) and /api/schedule/resume (schedule_api.cpp).

@@ -98,18 +98,36 @@ void GuardedAntenna::latch(const std::string& why) {
       });
 }
 
+std::optional<std::string> GuardedAntenna::hold_reason() const {
+  if (latched_) return "the E-stop is latched (" + latch_reason_ + ")";
+  if ((parts_.sequencer != nullptr && parts_.sequencer->motion_hold()) ||
+      (other_hold_ && other_hold_())) {
+    return std::string{"motion is held while the transmitter is keyed"};
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> GuardedAntenna::home(double now_s, const std::string& axis) {
+  if (auto held = hold_reason()) return "no homing now: " + *held;
+  return inner_->home(now_s, axis);
+}
+
 void GuardedAntenna::tick(double now_s, const control::Demand& demand, const control::AzEl& rate) {
-  const bool hold = latched_ || (parts_.sequencer != nullptr && parts_.sequencer->motion_hold()) ||
-                    (other_hold_ && other_hold_());
+  const auto held = hold_reason();
+  const bool hold = held.has_value();
   if (!hold) {
     held_since_s_.reset();
   } else if (!held_since_s_) {
     held_since_s_ = now_s;
   }
+  // Homing drives open loop whatever the demand: a hold ends it, before this tick drives and
+  // after it (a homing the station's first tick began), and the operator homes once free.
+  if (held) inner_->stop_homing(now_s, *held);
   // Held: no position and no jog, so the backend lets any move finish its soft stop (a latched
   // E-stop has already stopped the drives hard).
   inner_->set_pol_demand(latched_ ? control::PolDemand{} : pol_demand_);
   inner_->tick(now_s, hold ? control::Demand{} : demand, hold ? control::AzEl{} : rate);
+  if (held) inner_->stop_homing(now_s, *held);
 }
 
 void GuardedAntenna::set_pol_demand(const control::PolDemand& demand) { pol_demand_ = demand; }

@@ -59,6 +59,12 @@ class GuardedAntenna final : public AntennaBackend {
   [[nodiscard]] std::optional<PolStatus> pol_status() const override {
     return inner_->pol_status();
   }
+  [[nodiscard]] std::vector<NamedAxisStatus> axes() const override { return inner_->axes(); }
+  /// Homing moves the axis: refused while the E-stop is latched or the transmitter holds motion.
+  std::optional<std::string> home(double now_s, const std::string& axis) override;
+  void stop_homing(double now_s, std::string_view reason) override {
+    inner_->stop_homing(now_s, reason);
+  }
 
   /// Another program's transmit hold (WSJT-X transmitting, docs/radio.md): held as the
   /// sequencer's motion hold is.
@@ -73,6 +79,8 @@ class GuardedAntenna final : public AntennaBackend {
   [[nodiscard]] nlohmann::json state() const;
 
  private:
+  /// Why the antenna is held now (the E-stop latched, the transmitter keyed); nullopt: free.
+  [[nodiscard]] std::optional<std::string> hold_reason() const;
   void on_limit_edge();
   void on_estop_input(bool active);
   void latch(const std::string& why);

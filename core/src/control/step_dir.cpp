@@ -35,9 +35,8 @@ double StepDir::next_rate(double wanted_hz, double dt_s) const {
 
 StepDirOutputs StepDir::drive(double now_s, double duty) {
   if (!std::isfinite(duty)) return disable(now_s);  // a bad number stops, never steps
-  const double dt_s = started_ ? std::clamp(now_s - last_s_, 0.0, 1.0) : 0.0;
+  const double dt_s = last_s_ ? std::clamp(now_s - *last_s_, 0.0, 1.0) : 0.0;
   last_s_ = now_s;
-  started_ = true;
   duty = std::clamp(duty, -1.0, 1.0);
   const int wanted_direction = duty > 0.0 ? 1 : (duty < 0.0 ? -1 : 0);
   // The other way: slow to a standstill first (the rate wanted this way is none).
@@ -54,7 +53,6 @@ StepDirOutputs StepDir::drive(double now_s, double duty) {
 
 StepDirOutputs StepDir::disable(double now_s) {
   last_s_ = now_s;
-  started_ = true;
   rate_hz_ = 0.0;
   return StepDirOutputs{0.0, direction_, false};
 }

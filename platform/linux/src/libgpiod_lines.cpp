@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstring>
 #include <ctime>
+#include <optional>
 #include <vector>
 
 namespace azt::linux_os {
@@ -91,28 +92,41 @@ class LibgpiodOutput final : public GpioOutput {
   bool active_;
 };
 
-class LibgpiodInput final : public GpioInput {
+/// A requested input line watched on the loop: each time the kernel has events queued, drain()
+/// reads them. Its descriptor belongs to the line request; the level is read once at the start.
+class WatchedLine : public GpioInput {
  public:
-  LibgpiodInput(asio::io_context& io, GpioLineSpec spec, Request request, GpioEdgeHandler on_edge)
+  WatchedLine(asio::io_context& io, GpioLineSpec spec, Request request)
       : spec_(std::move(spec)),
         request_(std::move(request)),
-        on_edge_(std::move(on_edge)),
         events_(io, gpiod_line_event_get_fd(request_.line())) {
     active_ = gpiod_line_get_value(request_.line()) == 1;
     watch();
   }
-  ~LibgpiodInput() override {
+  ~WatchedLine() override {
     boost::system::error_code ignored;
     events_.cancel(ignored);
     (void)events_.release();  // the descriptor belongs to the line request
   }
-  LibgpiodInput(const LibgpiodInput&) = delete;
-  LibgpiodInput& operator=(const LibgpiodInput&) = delete;
-  LibgpiodInput(LibgpiodInput&&) = delete;
-  LibgpiodInput& operator=(LibgpiodInput&&) = delete;
+  WatchedLine(const WatchedLine&) = delete;
+  WatchedLine& operator=(const WatchedLine&) = delete;
+  WatchedLine(WatchedLine&&) = delete;
+  WatchedLine& operator=(WatchedLine&&) = delete;
 
   [[nodiscard]] bool active() const override { return active_; }
   [[nodiscard]] const GpioLineSpec& spec() const override { return spec_; }
+
+ protected:
+  /// Reads the queued events (at least one is waiting).
+  virtual void drain() = 0;
+  [[nodiscard]] gpiod_line* line() const { return request_.line(); }
+  /// The level now, read after a burst; nullopt when the read fails (the last level stands).
+  std::optional<bool> read_level() {
+    const int value = gpiod_line_get_value(request_.line());
+    if (value < 0) return std::nullopt;
+    active_ = value == 1;
+    return active_;
+  }
 
  private:
   void watch() {
@@ -124,26 +138,32 @@ class LibgpiodInput final : public GpioInput {
                        });
   }
 
+  GpioLineSpec spec_;
+  Request request_;
+  asio::posix::stream_descriptor events_;
+  bool active_ = false;
+};
+
+/// An input that reports its level after each burst of edges (a switch, a button).
+class LibgpiodInput final : public WatchedLine {
+ public:
+  LibgpiodInput(asio::io_context& io, GpioLineSpec spec, Request request, GpioEdgeHandler on_edge)
+      : WatchedLine(io, std::move(spec), std::move(request)), on_edge_(std::move(on_edge)) {}
+
+ private:
   /// Reads every queued event, then the level: a bounce burst is one notification with the level
   /// it settled at, and the edge type (which active-low inverts differently across kernels) is
   /// never needed.
-  void drain() {
+  void drain() override {
     const timespec no_wait{0, 0};
     gpiod_line_event event{};
     do {
-      if (gpiod_line_event_read(request_.line(), &event) != 0) break;
-    } while (gpiod_line_event_wait(request_.line(), &no_wait) == 1);
-    const int value = gpiod_line_get_value(request_.line());
-    if (value < 0) return;
-    active_ = value == 1;
-    on_edge_(active_);
+      if (gpiod_line_event_read(line(), &event) != 0) break;
+    } while (gpiod_line_event_wait(line(), &no_wait) == 1);
+    if (const auto level = read_level()) on_edge_(*level);
   }
 
-  GpioLineSpec spec_;
-  Request request_;
   GpioEdgeHandler on_edge_;
-  asio::posix::stream_descriptor events_;
-  bool active_ = false;
 };
 
 /// The kernel's event timestamp as a steady_clock time. Kernels before 5.7 stamp line events
@@ -157,66 +177,31 @@ std::chrono::steady_clock::time_point event_time(const timespec& ts) {
 }
 
 /// An input that hands on every queued edge, for pulse counting.
-class LibgpiodEventInput final : public GpioInput {
+class LibgpiodEventInput final : public WatchedLine {
  public:
   LibgpiodEventInput(asio::io_context& io, GpioLineSpec spec, Request request,
                      GpioEventHandler on_event)
-      : spec_(std::move(spec)),
-        request_(std::move(request)),
-        on_event_(std::move(on_event)),
-        events_(io, gpiod_line_event_get_fd(request_.line())) {
-    active_ = gpiod_line_get_value(request_.line()) == 1;
-    watch();
-  }
-  ~LibgpiodEventInput() override {
-    boost::system::error_code ignored;
-    events_.cancel(ignored);
-    (void)events_.release();  // the descriptor belongs to the line request
-  }
-  LibgpiodEventInput(const LibgpiodEventInput&) = delete;
-  LibgpiodEventInput& operator=(const LibgpiodEventInput&) = delete;
-  LibgpiodEventInput(LibgpiodEventInput&&) = delete;
-  LibgpiodEventInput& operator=(LibgpiodEventInput&&) = delete;
-
-  [[nodiscard]] bool active() const override { return active_; }
-  [[nodiscard]] const GpioLineSpec& spec() const override { return spec_; }
+      : WatchedLine(io, std::move(spec), std::move(request)), on_event_(std::move(on_event)) {}
 
  private:
-  void watch() {
-    events_.async_wait(asio::posix::stream_descriptor::wait_read,
-                       [this](boost::system::error_code ec) {
-                         if (ec) return;
-                         drain();
-                         watch();
-                       });
-  }
-
   /// Every queued event in order. The edge type is the physical one on some kernels and the
   /// logical one on others for an active-low line (LibgpiodInput's note): the level read after the
   /// burst says which, and the burst's types are turned round when its last edge disagrees.
-  void drain() {
+  void drain() override {
     const timespec no_wait{0, 0};
     std::vector<GpioEdgeEvent> burst;
     gpiod_line_event event{};
     do {
-      if (gpiod_line_event_read(request_.line(), &event) != 0) break;
+      if (gpiod_line_event_read(line(), &event) != 0) break;
       burst.push_back({event.event_type == GPIOD_LINE_EVENT_RISING_EDGE, event_time(event.ts)});
-    } while (gpiod_line_event_wait(request_.line(), &no_wait) == 1);
-    const int value = gpiod_line_get_value(request_.line());
-    if (value >= 0) {
-      active_ = value == 1;
-      if (!burst.empty() && burst.back().active != active_) {
-        for (auto& e : burst) e.active = !e.active;
-      }
+    } while (gpiod_line_event_wait(line(), &no_wait) == 1);
+    if (const auto level = read_level(); level && !burst.empty() && burst.back().active != *level) {
+      for (auto& e : burst) e.active = !e.active;
     }
     for (const auto& e : burst) on_event_(e);
   }
 
-  GpioLineSpec spec_;
-  Request request_;
   GpioEventHandler on_event_;
-  asio::posix::stream_descriptor events_;
-  bool active_ = false;
 };
 
 class LibgpiodProvider final : public GpioProvider {

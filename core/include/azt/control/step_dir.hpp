@@ -17,6 +17,8 @@
 // reading that lags, which the controller makes up and the supervisor's stall check catches.
 // Pure; time is a parameter.
 
+#include <optional>
+
 #include "azt/util/result.hpp"
 
 namespace azt::control {
@@ -54,8 +56,7 @@ class StepDir {
   [[nodiscard]] double next_rate(double wanted_hz, double dt_s) const;
 
   StepDirConfig config_;
-  double last_s_ = 0.0;
-  bool started_ = false;  ///< last_s_ is set
+  std::optional<double> last_s_;  ///< the last call's time; none before the first
   double rate_hz_ = 0.0;  ///< unsigned: the way is direction_
   int direction_ = 0;
 };
