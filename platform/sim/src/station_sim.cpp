@@ -119,6 +119,10 @@ control::StationControlConfig station_control_config(const StationSimSetup& setu
   if (c.pol && setup.plant.pol) {
     c.pol->control.lsb_deg = proto::hub_resolution_deg(setup.plant.pol->encoder_bits);
   }
+  c.az_drive.brake = setup.motors[0].brake;
+  c.az_drive.trips = setup.motors[0].trips;
+  c.el_drive.brake = setup.motors[1].brake;
+  c.el_drive.trips = setup.motors[1].trips;
   return c;
 }
 
