@@ -88,6 +88,8 @@ TEST(SimMotor, ASlowBrakeGetsNoDutyBeforeItsReleaseTimeAndIsNeverPulledAgainst) 
   const sim::BrakePlant* brake = rig.truth->brake(0);
   ASSERT_NE(brake, nullptr);
   EXPECT_EQ(rig.truth->brake(1), nullptr) << "[sim.el] has no brake";
+  EXPECT_NE(rig.backend->describe().find("; az: simulated brake"), std::string::npos)
+      << rig.backend->describe();
   std::optional<double> line_on_s;  // the first tick whose step found the line energised
   std::optional<double> first_duty_s;
   rig.run(200.0, 90.0, [&](double t) {
@@ -152,6 +154,12 @@ TEST(SimMotor, SimulateFliesTheSameBrakeAndWinding) {
   ASSERT_TRUE(a.slew_time_s && b.slew_time_s);
   EXPECT_NEAR(*b.slew_time_s - *a.slew_time_s, 1.5, 0.2);
   EXPECT_TRUE(b.faults.empty()) << b.faults.front();
+  EXPECT_EQ(b.brake_pulled_against_s[0], 0.0);
+  // Released 0.5 s after its line went on, the 1.2 s brake is pulled against for about 0.7 s.
+  const sim::SimResult soon = sim::simulate_slew(
+      config_of("brake = true\nbrake_lift_s = 1.2\nbrake_release_s = 0.5\n").simulated(), to,
+      600.0);
+  EXPECT_NEAR(soon.brake_pulled_against_s[0], 0.7, 0.06);
   const sim::SimResult hot = sim::simulate_slew(config_of(kWarmMotor).simulated(), to, 600.0);
   ASSERT_FALSE(hot.faults.empty());
   EXPECT_NE(hot.faults.front().find("motor temperature"), std::string::npos) << hot.faults.front();

@@ -86,6 +86,9 @@ struct SimResult {
   /// The largest |duty| applied to an axis after its supervisor latched a fault (must be 0: the
   /// motors stop in the tick that detects it).
   double max_duty_after_fault = 0.0;
+  /// The time the motor was driven while its axis's brake still held (azimuth, elevation; 0
+  /// without a brake plant): a controller's brake_release_s shorter than the brake's own lift.
+  std::array<double, 2> brake_pulled_against_s{};
   proto::HubCounters hub{};  ///< the decoder's counters after the run
   /// The polarisation axis (with a pol plant and a PolTracking track): the true shaft against the
   /// feed angle, folded as a linear polarisation, from its acquisition (within window + 2 LSB)
