@@ -1,13 +1,9 @@
 #include "config/motor_keys.hpp"
 
 #include "config/config_file.hpp"
+#include "config/hardware_config.hpp"
 
 namespace azt::app {
-
-void fail_field(const ConfigSection& s, const std::string& prefix, const std::string& message) {
-  const auto space = message.find(' ');
-  s.fail(prefix + message.substr(0, space), message.substr(space + 1));
-}
 
 control::BrakeConfig read_brake_timing(const ConfigSection& s) {
   control::BrakeConfig b;

@@ -13,12 +13,6 @@ namespace azt::app {
 
 class ConfigSection;
 
-/// A core settings check's words ("release_s must be …") on the key they name, `prefix` + the
-/// field: fail_field(s, "brake_", "release_s must be …") fails brake_release_s. Throws
-/// UsageError.
-[[noreturn]] void fail_field(const ConfigSection& s, const std::string& prefix,
-                             const std::string& message);
-
 /// brake_release_s, brake_engage_s and brake_idle_s: the controller's brake timing, checked by
 /// control::BrakeConfig::make. Throws UsageError naming the key.
 control::BrakeConfig read_brake_timing(const ConfigSection& s);

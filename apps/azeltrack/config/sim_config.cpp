@@ -6,6 +6,7 @@
 
 #include "azt/proto/hub_frame.hpp"
 #include "config/config_file.hpp"
+#include "config/hardware_config.hpp"
 #include "config/motor_keys.hpp"
 #include "config/pointing_config.hpp"
 #include "config/pol_config.hpp"
