@@ -156,6 +156,19 @@ void read_brake(const ConfigSection& s, HardwareAxisConfig& a, const std::string
   a.brake_timing = read_brake_timing(s);
 }
 
+/// Whether the axis's pot is read by an ADS1115, whose spare channels may read its motor.
+bool pot_on_ads1115(AxisSensorKind sensor) {
+  switch (sensor) {
+    case AxisSensorKind::Ads1115:
+      return true;
+    case AxisSensorKind::Hub:
+    case AxisSensorKind::Mcp3008:
+    case AxisSensorKind::Pulses:
+      return false;
+  }
+  return false;
+}
+
 /// Whether the axis's pot is read by the kind of converter its motor channels are on (motor_adc),
 /// whose spare channels may then read them.
 bool pot_on_motor_adc(const HardwareAxisConfig& a) {
@@ -163,7 +176,7 @@ bool pot_on_motor_adc(const HardwareAxisConfig& a) {
     case MotorAdcKind::Mcp3008:
       return pot_on_mcp3008(a.sensor);
     case MotorAdcKind::Ads1115:
-      return a.sensor == AxisSensorKind::Ads1115;
+      return pot_on_ads1115(a.sensor);
   }
   return false;
 }
