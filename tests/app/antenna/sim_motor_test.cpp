@@ -107,6 +107,11 @@ TEST(SimMotor, ASlowBrakeGetsNoDutyBeforeItsReleaseTimeAndIsNeverPulledAgainst) 
   EXPECT_NEAR(rig.az_deg(), 200.0, 0.3);
   EXPECT_EQ(brake->progress(), 0.0) << "applied again once the axis was at rest";
   EXPECT_TRUE(rig.backend->faults().empty()) << rig.faults();
+  // What /api/state antenna.axes shows: the azimuth's brake, held again.
+  const auto axes = rig.backend->axes();
+  ASSERT_FALSE(axes.empty());
+  EXPECT_EQ(axes[0].axis, "az");
+  EXPECT_TRUE(axes[0].status.brake == control::BrakeState::Engaged);
 }
 
 TEST(SimMotor, ABrakeTheControllerReleasesTooSoonIsPulledAgainst) {
