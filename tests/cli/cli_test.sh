@@ -92,6 +92,12 @@ json_check "simulate slew" \
 json_check "simulate moon" \
   "all(k in j for k in ['rms_error_deg','max_error_deg','slew_time_s','slew_min_time_s','overshoot_deg','faults']) and set(j['motor_starts_per_hour']) == {'az','el'} and j['max_error_deg'] < 0.3" \
   "${sim[@]}" --scenario moon --from 2025-03-14T02:00:00Z --hours 0.5 --json
+# [sim.az] brake (docs/control.md): released before the brake lifts, the motor pulls against it.
+sed 's/^start_deg = 180.0$/start_deg = 180.0\nbrake = true\nbrake_lift_s = 1.2\nbrake_release_s = 0.5/' \
+  "$root/examples/sim.toml" >"$tmp/brake.toml"
+json_check "simulate slew with a brake released too soon" \
+  "0.6 < j['brake_pulled_against_s']['az'] < 0.8 and j['brake_pulled_against_s']['el'] == 0 and j['faults'] == []" \
+  simulate --config "$tmp/brake.toml" --scenario slew --to-az 300 --to-el 30 --json
 json_check "simulate moon: no pol figures without [mount.pol]" \
   "'pol_max_error_deg' not in j and 'pol' not in j" \
   "${sim[@]}" --scenario moon --from 2025-03-14T02:00:00Z --hours 0.1 --json

@@ -21,20 +21,36 @@ std::unique_ptr<linux_os::GpioOutput> output_line(HardwarePorts& ports,
   return std::move(line).value();
 }
 
-/// The ADS1115 of `a`, opened now or shared with the other axis, with `a`'s channel added.
+/// The ADS1115 at `device` and `address`, opened now or shared with a pot or motor input already
+/// on it; `channel` is added to its turns (a slow one: a motor's). `a`'s keys name what fails.
+std::shared_ptr<linux_os::Ads1115Chip> ads1115_chip(const HardwareAxisConfig& a,
+                                                    const std::string& device, std::uint8_t address,
+                                                    unsigned channel, bool slow,
+                                                    const std::string& device_key,
+                                                    const std::string& channel_key,
+                                                    HardwarePorts& ports) {
+  std::shared_ptr<linux_os::Ads1115Chip>& chip = ports.ads1115_chips[{device, address}];
+  if (!chip) {
+    auto bus = ports.open_i2c(device);
+    if (!bus) throw UsageError(a.key(device_key) + ": " + bus.error().message);
+    chip = std::make_shared<linux_os::Ads1115Chip>(std::move(bus).value(), address);
+  } else if (chip->has_channel(channel)) {
+    throw UsageError(a.key(channel_key) + ": channel " + std::to_string(channel) +
+                     " of this ADS1115 is read already (by another axis's pot or motor)");
+  }
+  if (slow) {
+    chip->add_slow_channel(channel);
+  } else {
+    chip->add_channel(channel);
+  }
+  return chip;
+}
+
+/// The ADS1115 of `a`'s pot.
 std::shared_ptr<linux_os::Ads1115Chip> ads1115_chip(const HardwareAxisConfig& a,
                                                     HardwarePorts& ports) {
-  std::shared_ptr<linux_os::Ads1115Chip>& chip = ports.ads1115_chips[{a.adc_device, a.adc_address}];
-  if (!chip) {
-    auto bus = ports.open_i2c(a.adc_device);
-    if (!bus) throw UsageError(a.key("adc_device") + ": " + bus.error().message);
-    chip = std::make_shared<linux_os::Ads1115Chip>(std::move(bus).value(), a.adc_address);
-  } else if (chip->has_channel(a.adc_channel)) {
-    throw UsageError(a.key("adc_channel") + ": another axis reads channel " +
-                     std::to_string(a.adc_channel) + " of this ADS1115 already");
-  }
-  chip->add_channel(a.adc_channel);
-  return chip;
+  return ads1115_chip(a, a.adc_device, a.adc_address, a.adc_channel, false, "adc_device",
+                      "adc_channel", ports);
 }
 
 }  // namespace
@@ -181,14 +197,50 @@ std::unique_ptr<ports::BrakeLine> open_brake_line(const HardwareAxisConfig& a,
   return linux_os::make_gpio_brake_line(output_line(ports, *a.brake));  // off: braked
 }
 
+namespace {
+
+/// "0x48".
+std::string hex_address(std::uint8_t address) {
+  const char* digits = "0123456789abcdef";
+  return std::string("0x") + digits[address >> 4U] + digits[address & 0xFU];
+}
+
+/// The ADS1115 of `a`'s current and temperature channels, each a slow channel of the chip.
+std::shared_ptr<linux_os::Ads1115Chip> motor_ads1115(const HardwareAxisConfig& a,
+                                                     HardwarePorts& ports) {
+  std::shared_ptr<linux_os::Ads1115Chip> chip;
+  const std::pair<const std::optional<unsigned>*, const char*> inputs[] = {
+      {&a.current_adc_channel, "current_adc_channel"},
+      {&a.temperature_adc_channel, "temperature_adc_channel"}};
+  for (const auto& [channel, key] : inputs) {
+    if (*channel) {
+      chip = ads1115_chip(a, a.motor_adc_device, a.motor_adc_address, **channel, true,
+                          "motor_adc_device", key, ports);
+    }
+  }
+  return chip;
+}
+
+}  // namespace
+
 std::unique_ptr<ports::MotorSensor> open_motor_sensor(const HardwareAxisConfig& a,
                                                       HardwarePorts& ports) {
   if (!a.has_motor_inputs()) return nullptr;
+  const bool adc_inputs = a.current_adc_channel || a.temperature_adc_channel;
   std::unique_ptr<linux_os::SpiBus> bus;
-  if (a.current_adc_channel || a.temperature_adc_channel) {
-    auto opened = ports.open_spi(a.motor_adc_device, 1'000'000);
-    if (!opened) throw UsageError(a.key("motor_adc_device") + ": " + opened.error().message);
-    bus = std::move(opened).value();
+  std::shared_ptr<linux_os::Ads1115Chip> chip;
+  if (adc_inputs) {
+    switch (a.motor_adc) {
+      case MotorAdcKind::Mcp3008: {
+        auto opened = ports.open_spi(a.motor_adc_device, 1'000'000);
+        if (!opened) throw UsageError(a.key("motor_adc_device") + ": " + opened.error().message);
+        bus = std::move(opened).value();
+        break;
+      }
+      case MotorAdcKind::Ads1115:
+        chip = motor_ads1115(a, ports);
+        break;
+    }
   }
   std::unique_ptr<linux_os::GpioInput> fault;
   if (a.driver_fault) {
@@ -204,6 +256,11 @@ std::unique_ptr<ports::MotorSensor> open_motor_sensor(const HardwareAxisConfig& 
   in.temperature_channel = a.temperature_adc_channel;
   in.temperature_c_per_v = a.temperature_c_per_v;
   in.temperature_offset_c = a.temperature_offset_c;
+  if (chip) {
+    return linux_os::make_ads1115_motor_sensor(std::move(chip), in, std::move(fault),
+                                               a.name + " motor (ADS1115 " + a.motor_adc_device +
+                                                   " at " + hex_address(a.motor_adc_address) + ")");
+  }
   return linux_os::make_motor_sensor(std::move(bus), in, std::move(fault),
                                      a.name + " motor (MCP3008 " + a.motor_adc_device + ")");
 }

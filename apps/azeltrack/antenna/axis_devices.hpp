@@ -33,8 +33,8 @@ struct HardwarePorts {
                                                           std::uint32_t speed_hz)>
       open_spi;
   std::function<Result<std::unique_ptr<linux_os::I2cBus>>(const std::string& path)> open_i2c;
-  /// The ADS1115s opened so far, by I2C device and address: two axes wired to one chip share it
-  /// and take turns with its conversions.
+  /// The ADS1115s opened so far, by I2C device and address: two axes' pots, and motor current
+  /// and temperature inputs, wired to one chip share it and take turns with its conversions.
   std::map<std::pair<std::string, std::uint8_t>, std::shared_ptr<linux_os::Ads1115Chip>>
       ads1115_chips;
 

@@ -233,6 +233,12 @@ int run_simulate(const SimulateOptions& o) {
   nlohmann::json j =
       result_json(result, o.scenario, cpu_s, config.hub.firmware ? "firmware" : "model");
   add_pol_json(j, result, config, pol_settle_s(config, ptt_period_s));
+  // [sim.az|el] brake: whether the controller's brake_release_s left the motor pulling against it.
+  const auto& brakes = config.setup.plant.brakes;
+  if (brakes[0] || brakes[1]) {
+    j["brake_pulled_against_s"] = {{"az", result.brake_pulled_against_s[0]},
+                                   {"el", result.brake_pulled_against_s[1]}};
+  }
   // A fixed elevation is not tracked: no error of its own, only the angle it stands at.
   if (config.setup.station.el_fixed_deg)
     j["el"] = {{"fixed_deg", *config.setup.station.el_fixed_deg}};

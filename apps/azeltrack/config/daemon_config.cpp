@@ -411,6 +411,7 @@ DaemonConfig daemon_config_from(const ConfigFile& file) {
   c.mount = sim.mount;
   c.station = sim.setup.station;
   c.sim = sim.setup.plant;
+  c.sim_motors = sim.setup.motors;
   c.sim_hub = sim.hub;
   c.sim_receiver = sim.receiver;
   c.pol = sim.pol;

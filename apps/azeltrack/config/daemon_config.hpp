@@ -155,14 +155,17 @@ struct WebConfig {
 
 /// Everything `serve` reads (docs/configuration.md).
 struct DaemonConfig {
-  SkyConfig sky;                      ///< where the station is and what it can point at
-  MountConfig mount;                  ///< [mount.az] / [mount.el] / [mount.pol]
-  control::PolSettings pol;           ///< [pol]: what the polarisation axis follows
-  control::StationSetup station;      ///< what the controller knows, for every backend
-  sim::PlantSetup sim;                ///< [sim.*]: the simulated plants (the `sim` backend only)
-  SimHubConfig sim_hub;               ///< [sim] hub: the plain model or the hub firmware
-  SimReceiverConfig sim_receiver;     ///< [sim.receiver]: for [receiver] source = "sim"
-  std::string start_target = "moon";  ///< [target] name: what to track at start, or "stop"
+  SkyConfig sky;                  ///< where the station is and what it can point at
+  MountConfig mount;              ///< [mount.az] / [mount.el] / [mount.pol]
+  control::PolSettings pol;       ///< [pol]: what the polarisation axis follows
+  control::StationSetup station;  ///< what the controller knows, for every backend
+  sim::PlantSetup sim;            ///< [sim.*]: the simulated plants (the `sim` backend only)
+  /// [sim.az] / [sim.el]: the controller's brake timing and motor trips for the plants' brake and
+  /// winding (the `sim` backend only).
+  std::array<sim::AxisMotorControl, 2> sim_motors{};
+  SimHubConfig sim_hub;                    ///< [sim] hub: the plain model or the hub firmware
+  SimReceiverConfig sim_receiver;          ///< [sim.receiver]: for [receiver] source = "sim"
+  std::string start_target = "moon";       ///< [target] name: what to track at start, or "stop"
   BackendKind backend = BackendKind::Sim;  ///< [antenna] backend
   linux_os::HamlibConfig hamlib;
   linux_os::HubSerialConfig hub;  ///< [hub]: the EncoderHub's serial device (`pwm` backend)
@@ -197,7 +200,7 @@ struct DaemonConfig {
   /// on the `sim` backend, otherwise the station's own belief (StationSetup::believed_start).
   [[nodiscard]] control::AzEl start_mount() const;
   /// The simulated station: this station on the [sim.*] plants.
-  [[nodiscard]] sim::StationSimSetup simulated() const { return {station, sim}; }
+  [[nodiscard]] sim::StationSimSetup simulated() const { return {station, sim, sim_motors}; }
   /// The targets PC programs may send: the travel in sky terms, azimuth in any convention
   /// clients use (−180..450).
   [[nodiscard]] proto::TargetLimits target_limits() const;

@@ -6,6 +6,7 @@
 
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
+#include "config/motor_keys.hpp"
 #include "config/pulse_sensor_config.hpp"
 
 namespace azt::app {
@@ -152,24 +153,79 @@ void read_step_dir(const ConfigSection& s, HardwareAxisConfig& a, const std::str
 
 void read_brake(const ConfigSection& s, HardwareAxisConfig& a, const std::string& chip) {
   a.brake = read_gpio_line(s, "brake", chip, s.boolean("brake_active_low").value_or(false));
-  control::BrakeConfig b;
-  b.release_s = s.number("brake_release_s").value_or(b.release_s);
-  b.engage_s = s.number("brake_engage_s").value_or(b.engage_s);
-  b.idle_s = s.number("brake_idle_s").value_or(b.idle_s);
-  auto checked = control::BrakeConfig::make(b);
-  if (!checked) fail_field(s, "brake_", checked.error().message);
-  a.brake_timing = *checked;
+  a.brake_timing = read_brake_timing(s);
 }
 
-std::optional<unsigned> mcp3008_channel(const ConfigSection& s, const std::string& key) {
+/// Whether the axis's pot is read by an ADS1115, whose spare channels may read its motor.
+bool pot_on_ads1115(AxisSensorKind sensor) {
+  switch (sensor) {
+    case AxisSensorKind::Ads1115:
+      return true;
+    case AxisSensorKind::Hub:
+    case AxisSensorKind::Mcp3008:
+    case AxisSensorKind::Pulses:
+      return false;
+  }
+  return false;
+}
+
+/// Whether the axis's pot is read by the kind of converter its motor channels are on (motor_adc),
+/// whose spare channels may then read them.
+bool pot_on_motor_adc(const HardwareAxisConfig& a) {
+  switch (a.motor_adc) {
+    case MotorAdcKind::Mcp3008:
+      return pot_on_mcp3008(a.sensor);
+    case MotorAdcKind::Ads1115:
+      return pot_on_ads1115(a.sensor);
+  }
+  return false;
+}
+
+/// A current or temperature channel: 0 to 7 on an MCP3008 (the schema), 0 to 3 on an ADS1115.
+std::optional<unsigned> motor_channel(const ConfigSection& s, const std::string& key,
+                                      MotorAdcKind adc) {
   if (!s.has(key)) return std::nullopt;
-  return static_cast<unsigned>(s.integer(key).value_or(0));  // 0 to 7 (the schema)
+  const auto ch = static_cast<unsigned>(s.integer(key).value_or(0));
+  if (adc == MotorAdcKind::Ads1115 && ch > 3) s.fail(key, "must be 0 to 3 on an ADS1115");
+  return ch;
+}
+
+/// The converter of the current and temperature channels: by default the pot's own when it is
+/// of motor_adc's kind (its device, and an ADS1115's address), on other channels than the pot's.
+void read_motor_adc(const ConfigSection& s, HardwareAxisConfig& a) {
+  const bool ads1115 = a.motor_adc == MotorAdcKind::Ads1115;
+  if (!ads1115 && s.has("motor_adc_address")) {
+    s.fail("motor_adc_address", "is for motor_adc = \"ads1115\"");
+  }
+  a.motor_adc_address =
+      static_cast<std::uint8_t>(s.integer("motor_adc_address").value_or(a.adc_address));
+  const bool pot_adc_shareable = pot_on_motor_adc(a);
+  a.motor_adc_device = s.text("motor_adc_device").value_or(pot_adc_shareable ? a.adc_device : "");
+  if (a.motor_adc_device.empty()) {
+    s.fail("motor_adc_device",
+           ads1115 ? "is needed for current_adc_channel / temperature_adc_channel (an ADS1115's "
+                     "/dev/i2c-N) unless the axis's pot is on an ADS1115"
+                   : "is needed for current_adc_channel / temperature_adc_channel (an MCP3008's "
+                     "/dev/spidevB.C) unless the axis's pot is on an MCP3008");
+  }
+  const bool shares_pot_adc = pot_adc_shareable && a.motor_adc_device == a.adc_device &&
+                              (!ads1115 || a.motor_adc_address == a.adc_address);
+  for (const char* key : {"current_adc_channel", "temperature_adc_channel"}) {
+    const auto ch = motor_channel(s, key, a.motor_adc);
+    if (ch && shares_pot_adc && *ch == a.adc_channel) {
+      s.fail(key, "is the pot's channel (adc_channel)");
+    }
+  }
+  if (a.current_adc_channel && a.current_adc_channel == a.temperature_adc_channel) {
+    s.fail("temperature_adc_channel", "is the current's channel");
+  }
 }
 
 /// The current and temperature inputs, their limits, and the driver's fault line.
 void read_motor_inputs(const ConfigSection& s, HardwareAxisConfig& a, const std::string& chip) {
-  a.current_adc_channel = mcp3008_channel(s, "current_adc_channel");
-  a.temperature_adc_channel = mcp3008_channel(s, "temperature_adc_channel");
+  a.motor_adc = s.choice("motor_adc", kMotorAdcKinds, MotorAdcKind::Mcp3008);
+  a.current_adc_channel = motor_channel(s, "current_adc_channel", a.motor_adc);
+  a.temperature_adc_channel = motor_channel(s, "temperature_adc_channel", a.motor_adc);
   a.driver_fault =
       read_gpio_line(s, "driver_fault", chip, s.boolean("driver_fault_active_low").value_or(false));
   a.trips.axis = a.name;
@@ -179,43 +235,16 @@ void read_motor_inputs(const ConfigSection& s, HardwareAxisConfig& a, const std:
     fail_field(s, c.error().message.starts_with("offset_v") ? "current_" : "", c.error().message);
   }
   a.trips.current_trip_s = s.number("current_trip_s").value_or(a.trips.current_trip_s);
-  a.trips.temperature_hysteresis_c =
-      s.number("temperature_hysteresis_c").value_or(a.trips.temperature_hysteresis_c);
+  read_temperature_hysteresis(s, a.trips);
   a.temperature_c_per_v = s.number("temperature_c_per_v").value_or(a.temperature_c_per_v);
   a.temperature_offset_c = s.number("temperature_offset_c").value_or(a.temperature_offset_c);
-  // A reading without a limit would watch nothing; a limit without a reading, the same.
-  if (a.current_adc_channel) {
-    a.trips.current_limit_a = s.number("current_limit_a");
-    if (!a.trips.current_limit_a) s.fail("current_limit_a", "is needed with current_adc_channel");
-  } else if (s.has("current_limit_a")) {
-    s.fail("current_limit_a", "needs current_adc_channel (the IS pin's ADC input)");
-  }
-  if (a.temperature_adc_channel) {
-    a.trips.temperature_limit_c = s.number("temperature_limit_c");
-    if (!a.trips.temperature_limit_c)
-      s.fail("temperature_limit_c", "is needed with temperature_adc_channel");
-  } else if (s.has("temperature_limit_c")) {
-    s.fail("temperature_limit_c", "needs temperature_adc_channel (the sensor's ADC input)");
-  }
+  a.trips.current_limit_a = read_trip_limit(s, "current_limit_a", a.current_adc_channel.has_value(),
+                                            "current_adc_channel", "the IS pin's ADC input");
+  a.trips.temperature_limit_c =
+      read_trip_limit(s, "temperature_limit_c", a.temperature_adc_channel.has_value(),
+                      "temperature_adc_channel", "the sensor's ADC input");
   if (auto t = control::MotorTripsConfig::make(a.trips); !t) fail_field(s, "", t.error().message);
-  if (!a.current_adc_channel && !a.temperature_adc_channel) return;
-  const bool pot_adc_shareable = pot_on_mcp3008(a.sensor);
-  a.motor_adc_device = s.text("motor_adc_device").value_or(pot_adc_shareable ? a.adc_device : "");
-  if (a.motor_adc_device.empty()) {
-    s.fail("motor_adc_device",
-           "is needed for current_adc_channel / temperature_adc_channel (an MCP3008's "
-           "/dev/spidevB.C) unless the axis's pot is on an MCP3008");
-  }
-  const bool shares_pot_adc = pot_adc_shareable && a.motor_adc_device == a.adc_device;
-  for (const char* key : {"current_adc_channel", "temperature_adc_channel"}) {
-    const auto ch = mcp3008_channel(s, key);
-    if (ch && shares_pot_adc && *ch == a.adc_channel) {
-      s.fail(key, "is the pot's channel (adc_channel)");
-    }
-  }
-  if (a.current_adc_channel && a.current_adc_channel == a.temperature_adc_channel) {
-    s.fail("temperature_adc_channel", "is the current's channel");
-  }
+  if (a.current_adc_channel || a.temperature_adc_channel) read_motor_adc(s, a);
 }
 
 HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,

@@ -56,6 +56,11 @@ constexpr bool read_by_adc(AxisSensorKind sensor) {
   return false;
 }
 
+/// The converter of an axis's motor current and temperature channels.
+enum class MotorAdcKind { Mcp3008, Ads1115 };
+inline constexpr ConfigChoices<MotorAdcKind, 2> kMotorAdcKinds{
+    {{"mcp3008", MotorAdcKind::Mcp3008}, {"ads1115", MotorAdcKind::Ads1115}}};
+
 inline constexpr ConfigChoices<AxisDriveKind, 4> kAxisDriveKinds{
     {{"pwm", AxisDriveKind::Pwm},
      {"relay", AxisDriveKind::Relay},
@@ -114,10 +119,12 @@ struct HardwareAxisConfig {
 
   // The motor's brake and protection, any drive (docs/hardware.md "Brake, current and
   // temperature"): the brake's release line and timing; the current (an IBT-2's IS pin) and
-  // the temperature (an LM35) on an MCP3008's channels; the driver's fault line.
+  // the temperature (an LM35) on an MCP3008's or an ADS1115's channels; the driver's fault line.
   std::optional<linux_os::GpioLineSpec> brake;
   control::BrakeConfig brake_timing;
-  std::string motor_adc_device;  ///< the MCP3008 of the current and temperature channels
+  MotorAdcKind motor_adc = MotorAdcKind::Mcp3008;
+  std::string motor_adc_device;           ///< the ADC of the current and temperature channels
+  std::uint8_t motor_adc_address = 0x48;  ///< motor_adc = "ads1115"
   std::optional<unsigned> current_adc_channel;
   control::CurrentSense current;
   std::optional<unsigned> temperature_adc_channel;

@@ -5,12 +5,14 @@
 
 #include "config/hardware_config.hpp"
 #include "config/schema_keys.hpp"
+#include "config/schema_motor_keys.hpp"
 
 namespace azt::app {
 namespace {
 
 constexpr auto kDriveNames = choice_names(kAxisDriveKinds);
 constexpr auto kSensorNames = choice_names(kAxisSensorKinds);
+constexpr auto kMotorAdcNames = choice_names(kMotorAdcKinds);
 
 /// A relay-drive line: a GPIO line on [gpio] chip, or "CHIP:N".
 constexpr KeySpec relay_line(std::string_view key, std::string_view help) {
@@ -61,7 +63,7 @@ constexpr KeySpec relay_number(std::string_view key, std::string_view unit, Rang
           .help = help};
 }
 
-constexpr std::array<KeySpec, 77> kHardwareAxis{{
+constexpr std::array<KeySpec, 79> kHardwareAxis{{
     {.key = "drive",
      .type = KeyType::Choice,
      .choices = kDriveNames,
@@ -178,23 +180,32 @@ constexpr std::array<KeySpec, 77> kHardwareAxis{{
      .type = KeyType::Boolean,
      .default_toml = "false",
      .help = "the brake's relay is energised by a low level"},
-    relay_number("brake_release_s", "s", above_up_to(0.0, 10.0), "1.0",
-                 "from the brake line on to the brake off (a T-2X: 0.5 to 1 s)"),
-    relay_number("brake_engage_s", "s", closed(0.0, 10.0), "0.5",
-                 "from the brake line off to the brake holding: no new move until then"),
-    relay_number("brake_idle_s", "s", closed(0.0, 600.0), "2.0",
-                 "the motor has been still this long before the brake is applied (a stop or "
-                 "fault applies it at once)"),
+    kBrakeReleaseKey,
+    kBrakeEngageKey,
+    kBrakeIdleKey,
+    {.key = "motor_adc",
+     .type = KeyType::Choice,
+     .choices = kMotorAdcNames,
+     .default_toml = "\"mcp3008\"",
+     .help = "the ADC of current_adc_channel and temperature_adc_channel: `mcp3008` (spidev, one "
+             "transfer a tick each) or `ads1115` (i2c-dev; its conversions take turns with a pot "
+             "on the same chip, which keeps every other one)"},
     {.key = "motor_adc_device",
      .type = KeyType::Text,
-     .default_note = "adc_device when sensor = \"mcp3008\"",
-     .help = "the MCP3008 (`/dev/spidevB.C`) of current_adc_channel and temperature_adc_channel"},
+     .default_note = "adc_device when the pot is on an ADC of motor_adc's kind",
+     .help = "the ADC of current_adc_channel and temperature_adc_channel: an MCP3008's "
+             "`/dev/spidevB.C` or an ADS1115's `/dev/i2c-N`"},
+    {.key = "motor_adc_address",
+     .type = KeyType::Integer,
+     .range = closed(72.0, 75.0),
+     .default_note = "adc_address",
+     .help = "`motor_adc = \"ads1115\"`: the ADS1115's I²C address (0x48 to 0x4B)"},
     {.key = "current_adc_channel",
      .type = KeyType::Integer,
      .range = closed(0.0, 7.0),
      .default_note = "none: current not watched",
-     .help = "the MCP3008 input wired to the IBT-2's IS pins (R_IS and L_IS joined, through a "
-             "resistor to ground)"},
+     .help = "the motor ADC's input (0 to 7 on an MCP3008, 0 to 3 on an ADS1115) wired to the "
+             "IBT-2's IS pins (R_IS and L_IS joined, through a resistor to ground)"},
     relay_number("amps_per_volt", "A/V", above_up_to(0.0, 1000.0), "8.5",
                  "motor current per volt at IS: k_ILIS / R_IS (8500 / 1 kΩ typical; measure it)"),
     relay_number("current_offset_v", "V", closed(0.0, 5.0), "0.0",
@@ -211,7 +222,8 @@ constexpr std::array<KeySpec, 77> kHardwareAxis{{
      .type = KeyType::Integer,
      .range = closed(0.0, 7.0),
      .default_note = "none: temperature not watched",
-     .help = "the MCP3008 input of a temperature sensor on the motor (an LM35)"},
+     .help = "the motor ADC's input (as current_adc_channel) of a temperature sensor on the motor "
+             "(an LM35)"},
     relay_number("temperature_c_per_v", "°C/V", above_up_to(0.0, 1000.0), "100.0",
                  "the sensor's scale: 100 for an LM35 or TMP36 (10 mV/°C)"),
     relay_number("temperature_offset_c", "°C", closed(-100.0, 100.0), "0.0",
@@ -222,8 +234,7 @@ constexpr std::array<KeySpec, 77> kHardwareAxis{{
      .range = closed(0.0, 200.0),
      .default_note = "none: required with temperature_adc_channel",
      .help = "the axis trips above this motor temperature"},
-    relay_number("temperature_hysteresis_c", "°C", closed(0.0, 50.0), "5.0",
-                 "a temperature trip may be reset only below the limit less this"),
+    kTemperatureHysteresisKey,
     {.key = "driver_fault",
      .type = KeyType::GpioLine,
      .default_note = "none",

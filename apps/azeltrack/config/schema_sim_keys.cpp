@@ -3,6 +3,7 @@
 #include <array>
 
 #include "config/schema_keys.hpp"
+#include "config/schema_motor_keys.hpp"
 
 namespace azt::app {
 namespace {
@@ -48,7 +49,7 @@ constexpr std::array<KeySpec, 6> kSim{{
 constexpr std::array<std::string_view, 3> kFaults{"frozen_shaft", "reversed_motor",
                                                   "encoder_offset"};
 
-constexpr std::array<KeySpec, 9> kPlant{{
+constexpr std::array<KeySpec, 22> kPlant{{
     {.key = "time_constant_s",
      .type = KeyType::Number,
      .unit = "s",
@@ -99,6 +100,44 @@ constexpr std::array<KeySpec, 9> kPlant{{
      .range = closed(-65535.0, 65535.0),
      .default_toml = "100",
      .help = "the encoder offset's counts"},
+    {.key = "brake",
+     .type = KeyType::Boolean,
+     .default_toml = "false",
+     .help = "a spring-applied brake that holds the simulated shaft until its line has been on "
+             "for `brake_lift_s`; the station drives its line with the `brake_release_s`, "
+             "`brake_engage_s` and `brake_idle_s` of a real axis ([hardware.md](hardware.md))"},
+    motor_number("brake_lift_s", "s", above_up_to(0.0, 60.0), "1.2",
+                 "the simulated brake's own lift time, from its line on to the shaft free (above "
+                 "`brake_release_s`, the motor pulls against it)"),
+    motor_number("brake_hold_s", "s", above_up_to(0.0, 60.0), "0.3",
+                 "the simulated brake's time from its line off to holding fully"),
+    kBrakeReleaseKey,
+    kBrakeEngageKey,
+    kBrakeIdleKey,
+    {.key = "motor_heating",
+     .type = KeyType::Boolean,
+     .default_toml = "false",
+     .help = "the simulated motor's winding heats with the square of its duty and cools towards "
+             "`ambient_c`; the station reads it as a temperature sensor on the motor and trips "
+             "the axis above `temperature_limit_c`"},
+    motor_number("motor_rise_c", "°C", closed(0.0, 500.0), "80.0",
+                 "the winding's steady rise above ambient_c at full duty"),
+    motor_number("motor_time_constant_s", "s", above_up_to(0.0, 36000.0), "300.0",
+                 "how fast the winding heats and cools"),
+    motor_number("ambient_c", "°C", closed(-50.0, 60.0), "20.0", "the air around the motor"),
+    {.key = "motor_start_c",
+     .type = KeyType::Number,
+     .unit = "°C",
+     .range = closed(-50.0, 200.0),
+     .default_note = "ambient_c",
+     .help = "the winding's temperature at the start (a motor still warm from a long move)"},
+    {.key = "temperature_limit_c",
+     .type = KeyType::Number,
+     .unit = "°C",
+     .range = closed(0.0, 200.0),
+     .default_note = "none: required with motor_heating",
+     .help = "the axis trips above this winding temperature, as `[hardware.az]`'s"},
+    kTemperatureHysteresisKey,
 }};
 
 constexpr KeySpec mount_error(std::string_view key, std::string_view help) {
@@ -202,7 +241,9 @@ constexpr std::array<SectionSpec, 6> kSections{{
      .keys = kPlant,
      .title = "The simulated azimuth axis",
      .help = "The plant turns at the mount's rate and reads the mount's encoders "
-             "(`[mount.az]`); these are its own."},
+             "(`[mount.az]`); these are its own. With `brake` or `motor_heating` the plant also "
+             "has a brake or a winding that heats, and the station drives and watches them as "
+             "a real axis's ([hardware.md](hardware.md) \"Brake, current and temperature\")."},
     {.name = "sim.el",
      .chapter = Chapter::Simulation,
      .keys = kElPlant,
@@ -216,7 +257,7 @@ constexpr std::array<SectionSpec, 6> kSections{{
      .keys = kPolPlant,
      .title = "The simulated polarisation axis",
      .help = "With `[mount.pol]`: the plant of the feed rotator, its encoder read each tick; as "
-             "`[sim.az]` without the faults."},
+             "`[sim.az]` without the faults, the brake and the heating."},
     {.name = "sim.mount_errors",
      .chapter = Chapter::Simulation,
      .keys = kMountErrors,

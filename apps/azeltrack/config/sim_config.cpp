@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 
 #include "azt/proto/hub_frame.hpp"
 #include "config/config_file.hpp"
+#include "config/hardware_config.hpp"
+#include "config/motor_keys.hpp"
 #include "config/pointing_config.hpp"
 #include "config/pol_config.hpp"
 #include "config/sim_actuator_config.hpp"
@@ -64,7 +67,79 @@ void read_link(const ConfigSection& s, sim::PlantSetup& plant) {
   if (auto seed = s.integer("seed")) plant.seed = static_cast<std::uint64_t>(*seed);
 }
 
+/// Keys that mean something only with `needed` (`needed_words`: the key that gives it) are
+/// refused without it, rather than left to do nothing.
+void refuse_without(const ConfigSection& s, bool needed, const std::string& needed_words,
+                    std::initializer_list<const char*> keys) {
+  if (needed) return;
+  for (const char* key : keys) {
+    if (s.has(key)) s.fail(key, "needs " + needed_words);
+  }
+}
+
+/// `brake = true`: the plant's brake (its own lift and hold times) and the controller's timing
+/// for it, read as a real axis's ([hardware.az] brake_release_s …).
+void read_plant_brake(const ConfigSection& s, std::size_t axis, sim::PlantSetup& plant,
+                      sim::AxisMotorControl& motor) {
+  sim::BrakePlantParams b;
+  b.release_s = s.number("brake_lift_s").value_or(b.release_s);
+  b.engage_s = s.number("brake_hold_s").value_or(b.engage_s);
+  if (auto ok = b.validate(); !ok) s.fail("brake_lift_s", ok.error().message);  // the schema's
+  plant.brakes.at(axis) = b;
+  motor.brake = read_brake_timing(s);
+}
+
+/// `motor_heating = true`: the plant's winding and the controller's temperature trip on it (the
+/// simulated station reads the winding as a temperature sensor on the motor).
+void read_plant_heating(const ConfigSection& s, std::size_t axis, sim::PlantSetup& plant,
+                        sim::AxisMotorControl& motor) {
+  sim::MotorThermalParams t;
+  t.ambient_c = s.number("ambient_c").value_or(t.ambient_c);
+  t.rise_at_full_duty_c = s.number("motor_rise_c").value_or(t.rise_at_full_duty_c);
+  t.time_constant_s = s.number("motor_time_constant_s").value_or(t.time_constant_s);
+  t.start_c = s.number("motor_start_c").value_or(t.ambient_c);
+  if (auto ok = t.validate(); !ok) s.fail("motor_rise_c", ok.error().message);  // the schema's
+  plant.thermal.at(axis) = t;
+  control::MotorTripsConfig trips;
+  trips.axis = axis == 0 ? "az" : "el";
+  trips.temperature_limit_c = s.number("temperature_limit_c");
+  read_temperature_hysteresis(s, trips);
+  if (auto ok = control::MotorTripsConfig::make(trips); !ok) fail_field(s, "", ok.error().message);
+  motor.trips = trips;
+}
+
+/// [sim.az|el] brake and motor_heating for axis 0 or 1 (`driven`: false for a fixed elevation).
+sim::AxisMotorControl read_plant_motor(const ConfigSection& s, std::size_t axis, bool driven,
+                                       sim::PlantSetup& plant) {
+  sim::AxisMotorControl motor;
+  const bool brake = s.boolean("brake").value_or(false);
+  const bool heating = s.boolean("motor_heating").value_or(false);
+  if (!driven && (brake || heating)) {
+    s.fail(brake ? "brake" : "motor_heating",
+           "is for an axis that moves, and [mount.el] fixed_deg says this one does not");
+  }
+  refuse_without(
+      s, brake, "brake = true",
+      {"brake_lift_s", "brake_hold_s", "brake_release_s", "brake_engage_s", "brake_idle_s"});
+  refuse_without(s, heating, "motor_heating = true",
+                 {"ambient_c", "motor_rise_c", "motor_time_constant_s", "motor_start_c",
+                  "temperature_hysteresis_c"});
+  // Required with the winding, refused without it: as a temperature input on real hardware.
+  (void)read_trip_limit(s, "temperature_limit_c", heating, "motor_heating = true",
+                        "the simulated winding's temperature");
+  if (brake) read_plant_brake(s, axis, plant, motor);
+  if (heating) read_plant_heating(s, axis, plant, motor);
+  return motor;
+}
+
 }  // namespace
+
+std::array<sim::AxisMotorControl, 2> sim_motors_from(const ConfigFile& file,
+                                                     sim::PlantSetup& plant) {
+  const ConfigSection s = file.section("sim");
+  return {read_plant_motor(s.child("az"), 0, true, plant),
+          read_plant_motor(s.child("el"), 1, plant.el_axis, plant)};
+}
 
 sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& mount,
                                  const control::StationSetup& station) {
@@ -135,6 +210,7 @@ SimConfig sim_config_from(const ConfigFile& file) {
   config.mount = mount_config_from(file);
   config.setup.station = station_setup_from(file, config.mount);
   config.setup.plant = plant_setup_from(file, config.mount, config.setup.station);
+  config.setup.motors = sim_motors_from(file, config.setup.plant);
   config.hub = sim_hub_from(file);
   config.receiver = sim_receiver_from(file);
   config.pol = pol_settings_from(file);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -53,6 +54,12 @@ SimHubConfig sim_hub_from(const ConfigFile& file);
 /// UsageError naming the key on any invalid value.
 sim::PlantSetup plant_setup_from(const ConfigFile& file, const MountConfig& mount,
                                  const control::StationSetup& station);
+
+/// [sim.az] / [sim.el] brake and motor_heating: adds the plants' brakes and windings to `plant`
+/// and returns what the controller is told of them (its brake timing and temperature trip, the
+/// keys a real axis's [hardware.az] has). Throws UsageError naming the key.
+std::array<sim::AxisMotorControl, 2> sim_motors_from(const ConfigFile& file,
+                                                     sim::PlantSetup& plant);
 
 /// [sim.receiver]. Throws UsageError naming the key.
 SimReceiverConfig sim_receiver_from(const ConfigFile& file);

@@ -9,7 +9,8 @@ Ads1115Chip::Ads1115Chip(std::unique_ptr<I2cBus> bus, std::uint8_t address)
     : bus_(std::move(bus)), adc_(*bus_, address, proto::Ads1115Range::Fs4V096) {}
 
 bool Ads1115Chip::has_channel(unsigned channel) const {
-  return std::find(channels_.begin(), channels_.end(), channel) != channels_.end();
+  return std::find(channels_.begin(), channels_.end(), channel) != channels_.end() ||
+         std::find(slow_.begin(), slow_.end(), channel) != slow_.end();
 }
 
 Ads1115Chip::Step Ads1115Chip::step(unsigned channel, double now_s) {
@@ -36,6 +37,10 @@ Ads1115Chip::Step Ads1115Chip::begin(unsigned channel, double now_s) {
   in_flight_ = channel;
   started_s_ = now_s;
   polls_ = 0;
+  // A slow channel's turn, whoever started it: the next slow turn is the one after it.
+  if (const auto it = std::find(slow_.begin(), slow_.end(), channel); it != slow_.end()) {
+    next_slow_ = static_cast<std::size_t>(it + 1 - slow_.begin()) % slow_.size();
+  }
   return std::optional<std::int16_t>{};
 }
 
@@ -45,10 +50,14 @@ Ads1115Chip::Step Ads1115Chip::lose(Error why) {
 }
 
 unsigned Ads1115Chip::next_after(unsigned channel) const {
+  if (channels_.empty()) return next_slow();
   const auto it = std::find(channels_.begin(), channels_.end(), channel);
-  if (it == channels_.end() || it + 1 == channels_.end()) return channels_.front();
-  return *(it + 1);
+  if (it == channels_.end()) return channels_.front();  // after a slow channel: the pots again
+  if (it + 1 != channels_.end()) return *(it + 1);
+  return slow_.empty() ? channels_.front() : next_slow();  // a round of the pots is done
 }
+
+unsigned Ads1115Chip::next_slow() const { return slow_.at(next_slow_); }
 
 namespace {
 

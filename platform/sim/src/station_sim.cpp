@@ -119,6 +119,10 @@ control::StationControlConfig station_control_config(const StationSimSetup& setu
   if (c.pol && setup.plant.pol) {
     c.pol->control.lsb_deg = proto::hub_resolution_deg(setup.plant.pol->encoder_bits);
   }
+  c.az_drive.brake = setup.motors[0].brake;
+  c.az_drive.trips = setup.motors[0].trips;
+  c.el_drive.brake = setup.motors[1].brake;
+  c.el_drive.trips = setup.motors[1].trips;
   return c;
 }
 
@@ -183,6 +187,7 @@ SimResult simulate_tracking(const StationSimSetup& setup, const SkyTrack& sky, d
   result.simulated_s = static_cast<double>(ticks) * setup.station.tick_s;
   result.hub = loop.hub_counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
+  result.brake_pulled_against_s = loop.brake_pulled_against_s();
   result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),
                            loop.el_plant().shaft_deg()};
   pol_meter.finish(result, loop);
@@ -231,6 +236,7 @@ SimResult simulate_slew(const StationSimSetup& setup, AzEl to, double max_durati
   result.simulated_s = static_cast<double>(k) * setup.station.tick_s;
   result.hub = loop.hub_counters();
   result.max_duty_after_fault = loop.max_duty_after_fault();
+  result.brake_pulled_against_s = loop.brake_pulled_against_s();
   result.final_position = {control::wrap_360(loop.az_plant().shaft_deg()),
                            loop.el_plant().shaft_deg()};
   return result;

@@ -1,6 +1,7 @@
 // The `hardware` backend's ADS1115 sensor (i2c-dev) tick by tick, behind a bus that records every
 // I2C message: a conversion started at one tick is read at the next, a conversion that never
-// finishes and a bus error are named faults, two axes share one chip by taking turns.
+// finishes and a bus error are named faults, two axes share one chip by taking turns, and a
+// motor's current and temperature share a pot's chip in the pot's gaps.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -213,6 +214,89 @@ TEST(Ads1115Sensor, TwoAxesOnOneChannelAreRefusedAndTwoAddressesAreTwoChips) {
   }
   auto az = open_adc_sensor(rig.az(0, 0x49), rig.ports);
   EXPECT_EQ(rig.chips.size(), 2U);
+}
+
+/// The elevation's pot with its motor's current (AIN1, 10 A per volt) and temperature (AIN2, an
+/// LM35) on the same ADS1115.
+HardwareAxisConfig with_motor(HardwareAxisConfig a) {
+  a.motor_adc = MotorAdcKind::Ads1115;
+  a.motor_adc_device = a.adc_device;
+  a.motor_adc_address = a.adc_address;
+  a.current_adc_channel = 1;
+  a.current.amps_per_volt = 10.0;
+  a.temperature_adc_channel = 2;
+  a.trips.current_limit_a = 5.0;
+  a.trips.temperature_limit_c = 75.0;
+  return a;
+}
+
+TEST(Ads1115Sensor, AMotorsChannelsTakeTheTurnsBetweenThePotsReadings) {
+  AdsRig rig;
+  const HardwareAxisConfig el = with_motor(rig.el);
+  auto pot = open_adc_sensor(el, rig.ports);  // the backend's order: sensors, then motors
+  auto motor = open_motor_sensor(el, rig.ports);
+  ASSERT_EQ(rig.chips.size(), 1U) << "the pot's chip, shared";
+  EXPECT_EQ(motor->describe(), "el motor (ADS1115 /dev/i2c-1 at 0x48)");
+  RecordingAds1115& chip = *rig.chips[0];
+  chip.codes = {13000, 8000, 4000, 0};  // 45°; 1.000 V: 10 A; 0.500 V: 50 °C
+  std::vector<std::string> got;         // per tick: the pot, the current, the temperature
+  for (int tick = 0; tick < 10; ++tick) {
+    const double t = 0.05 * tick;
+    auto p = pot->read(t);
+    auto m = motor->read(t);
+    ASSERT_TRUE(p.ok() && m.ok()) << "tick " << tick;
+    if (p.value()) {
+      EXPECT_DOUBLE_EQ(p.value()->deg, 45.0);
+    }
+    if (m.value().current_a) {
+      EXPECT_DOUBLE_EQ(*m.value().current_a, 10.0);
+    }
+    if (m.value().temperature_c) {
+      EXPECT_DOUBLE_EQ(*m.value().temperature_c, 50.0);
+    }
+    got.push_back(std::string(p.value() ? "p" : "") + (m.value().current_a ? "c" : "") +
+                  (m.value().temperature_c ? "t" : ""));
+    EXPECT_LE(chip.take().size(), 5U) << "tick " << tick << ": never more than one conversion";
+  }
+  // The pot every other tick, as beside another axis's pot; each motor input every fourth.
+  EXPECT_EQ(got, (Lines{"", "p", "c", "p", "t", "p", "c", "p", "t", "p"}));
+}
+
+TEST(Ads1115Sensor, AMotorsConversionThatNeverEndsIsItsReadError) {
+  AdsRig rig;
+  HardwareAxisConfig el = with_motor(rig.el);
+  el.adc_address = 0x49;  // the pot on another chip: the motor's inputs alone on theirs
+  auto motor = open_motor_sensor(el, rig.ports);
+  ASSERT_EQ(rig.chips.size(), 1U);
+  rig.chips[0]->codes = {0, 8000, 4000, 0};
+  ASSERT_TRUE(motor->read(0.0).ok());
+  auto current = motor->read(0.05);
+  ASSERT_TRUE(current.ok() && current.value().current_a);
+  EXPECT_FALSE(current.value().temperature_c) << "its conversion started at this tick";
+  auto temperature = motor->read(0.10);
+  ASSERT_TRUE(temperature.ok() && temperature.value().temperature_c);
+  EXPECT_FALSE(temperature.value().current_a);
+  rig.chips[0]->ready = false;
+  for (const double t : {0.15, 0.20}) ASSERT_TRUE(motor->read(t).ok()) << t;
+  auto lost = motor->read(0.25);
+  ASSERT_FALSE(lost.ok());
+  EXPECT_EQ(lost.error().message,
+            "el motor (ADS1115 /dev/i2c-1 at 0x48): ADS1115 at 0x48 channel 1: conversion not "
+            "done after 3 ticks");
+}
+
+TEST(Ads1115Sensor, AMotorInputOnAChannelAnotherAxisReadsIsRefusedByItsKey) {
+  AdsRig rig;
+  auto az = open_adc_sensor(rig.az(1), rig.ports);
+  try {
+    (void)open_motor_sensor(with_motor(rig.el), rig.ports);
+    FAIL() << "the elevation's current on the azimuth pot's AIN1";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("[hardware.el] current_adc_channel: channel 1 of this "
+                                         "ADS1115 is read already"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -65,6 +65,14 @@ std::string context_of(const SectionSpec& s, std::string_view key) {
               {"adc_device", "\"/dev/spidev0.0\""},
               {"pot_calibration", "[100.0, -90.0, 900.0, 90.0]"}};
   }
+  // A simulated brake's and winding's keys are refused without the brake or the winding.
+  if (s.name == "sim.az" || s.name == "sim.el") {
+    if (key.starts_with("brake_")) needed = {{"brake", "true"}};
+    if ((key.starts_with("motor_") && key != "motor_heating") || key == "ambient_c" ||
+        key.starts_with("temperature_")) {
+      needed = {{"motor_heating", "true"}, {"temperature_limit_c", "80.0"}};
+    }
+  }
   std::string out;
   for (const auto& [k, v] : needed) {
     if (k != key) out += std::string(k) + " = " + v + "\n";
@@ -91,10 +99,10 @@ std::string choice_context(const SectionSpec& s, std::string_view choice) {
   return "";
 }
 
-std::string choice_extra_keys(const SectionSpec& s, std::string_view choice) {
+std::string choice_extra_keys(const SectionSpec& s, std::string_view key, std::string_view choice) {
   if (s.name == "receiver" && choice == "rtl_power") return "path = \"/tmp/power.csv\"\n";
   if (s.name == "receiver" && choice == "udp") return "port = 12070\n";
-  if (choice == "mcp3008" || choice == "ads1115") {
+  if (key == "sensor" && (choice == "mcp3008" || choice == "ads1115")) {
     return "adc_device = \"/dev/spidev0.0\"\npot_calibration = [100.0, 0.0, 900.0, 360.0]\n";
   }
   if (choice == "relay") return "relay_forward = 5\nrelay_reverse = 6\n";
@@ -204,7 +212,7 @@ TEST(ConfigSchema, EveryChoiceLoads) {
         const std::string value =
             k.type == KeyType::Integer ? std::string(c) : "\"" + std::string(c) + "\"";
         const std::string text =
-            choice_context(s, c) + table_with(s, k.key, value) + choice_extra_keys(s, c);
+            choice_context(s, c) + table_with(s, k.key, value) + choice_extra_keys(s, k.key, c);
         EXPECT_EQ(load_error(text), "") << text;
       }
       if (k.choices.empty()) continue;

@@ -4,6 +4,7 @@
 // (calibration, moving average, broken-wire and out-of-range checks). No read waits for a
 // conversion: the ADS1115 converts across control ticks (Ads1115Chip).
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -44,6 +45,11 @@ class Ads1115Chip {
 
   [[nodiscard]] bool has_channel(unsigned channel) const;
   void add_channel(unsigned channel) { channels_.push_back(channel); }
+  /// A channel read less often than the pots' (a motor's current or temperature: they change
+  /// over seconds, docs/hardware.md "Brake, current and temperature"): the slow channels take
+  /// one turn, in rotation, after each round of the pots' channels, so a pot alone beside them is
+  /// still read every other tick.
+  void add_slow_channel(unsigned channel) { slow_.push_back(channel); }
 
   /// The tick `now_s` of `channel`'s axis: its new code, nullopt while there is none (the first
   /// tick, a conversion still running, the other axis's turn), or an error (a bus failure, a
@@ -57,10 +63,14 @@ class Ads1115Chip {
   Step lose(Error why);
   /// The channel after `channel` in turn, the same one when it is alone.
   [[nodiscard]] unsigned next_after(unsigned channel) const;
+  /// The slow channel whose turn is next.
+  [[nodiscard]] unsigned next_slow() const;
 
   std::unique_ptr<I2cBus> bus_;
   Ads1115Reader adc_;
   std::vector<unsigned> channels_;
+  std::vector<unsigned> slow_;
+  std::size_t next_slow_ = 0;          ///< the slow channel whose turn is next
   std::optional<unsigned> in_flight_;  ///< the channel being converted
   double started_s_ = 0.0;             ///< the tick that started it
   unsigned polls_ = 0;                 ///< its polls so far

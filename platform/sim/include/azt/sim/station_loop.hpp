@@ -35,6 +35,14 @@ class StationLoop {
   /// The station's polarisation axis; nullptr without one.
   [[nodiscard]] const control::PolAxis* pol() const { return station_.pol(); }
   [[nodiscard]] proto::HubCounters hub_counters() const { return rig_->hub().counters(); }
+  /// Each axis's time driven against its brake plant (0 without one).
+  [[nodiscard]] std::array<double, 2> brake_pulled_against_s() const {
+    std::array<double, 2> out{};
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      if (const BrakePlant* b = rig_->brake(i)) out.at(i) = b->pulled_against_s();
+    }
+    return out;
+  }
 
   /// Adds each axis's first latched fault to `out`: "az: stall at 12.3 s: …".
   void collect_faults(std::vector<std::string>& out, double t_s);

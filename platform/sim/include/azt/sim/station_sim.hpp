@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -9,7 +10,9 @@
 
 #include "azt/control/axis_controller.hpp"
 #include "azt/control/axis_geometry.hpp"
+#include "azt/control/brake.hpp"
 #include "azt/control/modes.hpp"
+#include "azt/control/motor_trips.hpp"
 #include "azt/control/station_controller.hpp"
 #include "azt/control/station_setup.hpp"
 #include "azt/control/supervisor.hpp"
@@ -23,13 +26,24 @@ namespace azt::sim {
 /// One simulated station: the station as its controller knows it (the mount's rates and encoder
 /// steps, the travel, the tick, the corrections: what a real station of this mount would run
 /// with) and the plants it drives, in virtual time.
+/// What the controller is told of one simulated axis's brake and motor (the `sim` backend's
+/// [sim.az] brake_release_s … and temperature_limit_c, as a real station's [hardware.az]): the
+/// plants' brake and winding (PlantSetup::brakes, ::thermal) are the truth it drives and reads,
+/// these the settings it drives and reads them with. Empty: the axis has none.
+struct AxisMotorControl {
+  std::optional<control::BrakeConfig> brake;
+  std::optional<control::MotorTripsConfig> trips;
+};
+
 struct StationSimSetup {
   control::StationSetup station;
   PlantSetup plant;
+  std::array<AxisMotorControl, 2> motors{};  ///< azimuth, elevation
 };
 
 /// The simulated station controller's configuration: the station setup's, with the encoder steps
-/// of the plants it reads. Real stations use control::StationSetup::control_config().
+/// of the plants it reads and the axes' brake and motor trips (`motors`). Real stations use
+/// control::StationSetup::control_config().
 control::StationControlConfig station_control_config(const StationSimSetup& setup);
 
 /// The sky position to follow at `t_s` seconds after the start (nullopt: nothing to follow).
@@ -72,6 +86,9 @@ struct SimResult {
   /// The largest |duty| applied to an axis after its supervisor latched a fault (must be 0: the
   /// motors stop in the tick that detects it).
   double max_duty_after_fault = 0.0;
+  /// The time the motor was driven while its axis's brake still held (azimuth, elevation; 0
+  /// without a brake plant): a controller's brake_release_s shorter than the brake's own lift.
+  std::array<double, 2> brake_pulled_against_s{};
   proto::HubCounters hub{};  ///< the decoder's counters after the run
   /// The polarisation axis (with a pol plant and a PolTracking track): the true shaft against the
   /// feed angle, folded as a linear polarisation, from its acquisition (within window + 2 LSB)
