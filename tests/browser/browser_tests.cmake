@@ -52,9 +52,9 @@ add_test(NAME browser_calibration
 set_tests_properties(browser_calibration PROPERTIES LABELS browser TIMEOUT 180)
 # The main screen's cards for the antennas people have (issue 33): the polarisation card with
 # [mount.pol] (the mode set and followed, a refusal's words), the beam line of a fixed-elevation
-# array, the direction test offering the station's own axes only, the Drives card of the actuator
-# dish (its pulse-counted elevation homed from the card), each on a daemon restarted on its own
-# file; screenshots in build/antennas-shots/.
+# array, the direction test offering the station's own axes only, each on a daemon restarted on its
+# own file; the Drives card on `antenna.axes` the test adds to the state messages, its Home posted to
+# the daemon; screenshots in build/antennas-shots/.
 add_test(NAME browser_antennas
   COMMAND node ${CMAKE_CURRENT_LIST_DIR}/antennas_test.js $<TARGET_FILE:azeltrack>
           ${PROJECT_BINARY_DIR}/antennas-shots)
