@@ -1,5 +1,6 @@
 // The main screen from each state message: position, target, faults, who moved the antenna,
-// station I/O and the Moon panel; the station's GPS, clock and network (station.js).
+// station I/O and the Moon panel; the station's GPS, clock and network (station.js); the pol axis
+// (pol.js) and each axis's drive hardware (drives.js).
 
 import { S, targetLabel } from './state.js';
 import { $, h, setText } from './dom.js';
@@ -11,6 +12,7 @@ import { markActiveTarget } from './targets.js';
 import { renderStation } from './station.js';
 import { renderCorrectionsAndPosition } from './position.js';
 import { renderPol } from './pol.js';
+import { renderDrives } from './drives.js';
 
 // "AOS 12:34 UTC (18:04 local) · max 83° · 8 s beyond 10° from 12:40:05 · in 4 min 12 s", or the tracker's phase.
 function passLine(sat, utc) {
@@ -108,6 +110,7 @@ export function onState(st) {
   renderMoon(m);
   renderStation(st);
   renderPol(st);
+  renderDrives(st);
   // trend
   const now = performance.now() / 1000;
   S.trend.push([now, e && isNum(e.az) ? e.az : null, e && isNum(e.el) ? e.el : null]);

@@ -1,11 +1,11 @@
 // The panel from each state message (docs/web-api.md /api/state): A the target, B the
 // corrections, C the antenna, D (the bar, on every screen) the time and status; the status
-// screen's details. The verdicts on GPS, network and clock are the console's (gps.js, network.js,
-// time.js), so both pages say the same.
+// screen's details, each axis's drives among them. The verdicts on GPS, network and clock are the
+// console's (gps.js, network.js, time.js), so both pages say the same.
 
 import { S, targetLabel } from './state.js';
 import { $, setText } from './dom.js';
-import { deg, hz, pad, sameName, sdeg, waitLine, waitShort } from './format.js';
+import { deg, fix, hz, isNum, pad, sameName, sdeg, waitLine, waitShort } from './format.js';
 import { gpsLevel, gpsSummary } from './gps.js';
 import { linkOf, netSummary } from './network.js';
 import { timeLine } from './time.js';
@@ -40,6 +40,18 @@ function renderBar(st, faults) {
   if ($('status-line').className !== cls) $('status-line').className = cls;
 }
 
+// Each axis's own hardware in one line ("EL homed · brake released; AZ 1.2 A"), as the console's
+// Drives card has it in full; empty when `antenna.axes` is absent. Homing is the console's.
+function drivesLine(axes) {
+  if (!axes || typeof axes !== 'object') return '';
+  return ['az', 'el', 'pol'].filter((k) => axes[k]).map((k) => {
+    const a = axes[k];
+    const parts = [a.homing, a.brake ? `brake ${a.brake}` : null, isNum(a.current_a) ? `${fix(a.current_a, 1)} A` : null,
+      isNum(a.temperature_c) ? `${fix(a.temperature_c, 0)} °C` : null, a.reset_refused ? 'trip latched' : null];
+    return `${k.toUpperCase()} ${parts.filter(Boolean).join(' · ')}`;
+  }).join('; ');
+}
+
 function renderStatus(st, faults) {
   setText('st-mode', `${st.mode || '—'}${st.who ? ` by ${st.who}` : ''}${st.pc_locked_out ? ' · PC programs locked out' : ''}`);
   const [word, detail] = timeLine(st.time || null);
@@ -47,6 +59,10 @@ function renderStatus(st, faults) {
   setText('st-gps', gpsSummary(st.gps));
   setText('st-net', netSummary(st.network));
   setText('st-faults', faults.length ? faults.join('; ') : 'none');
+  const drives = drivesLine(st.antenna && st.antenna.axes);
+  $('st-drives-t').hidden = !drives;
+  $('st-drives').hidden = !drives;
+  setText('st-drives', drives || '—');
   $('faults-clear').hidden = !faults.length;
   $('allow-pc').hidden = !st.pc_locked_out;
 }
