@@ -2,8 +2,9 @@
 // polarisation card on a station with [mount.pol] (docs/eme.md "Polarisation axis"), the beam
 // line of a fixed-elevation array ([mount.el] fixed_deg, "Fixed-elevation arrays"), the
 // direction test offering only the station's own axes, and the Drives card (docs/web-api.md
-// `antenna.axes`; its axes added to the daemon's state messages by the test, see routeAxes) with
-// Home posted to the daemon and its refusal shown. Debian's Chromium driven by playwright-core
+// `antenna.axes`): a simulated actuator dish homed from it, and states the simulation cannot be
+// brought to on demand added to the daemon's state messages by the test (routeAxes), with Home's
+// refusal shown. Debian's Chromium driven by playwright-core
 // against a real `azeltrack serve` on the simulated antenna, restarted on each station's file
 // (harness.js); the page is loaded afresh for each. Screenshots go to OUT_DIR.
 // Usage: node antennas_test.js AZELTRACK OUT_DIR (AZT_WEB_DIR as for console_test.js)
@@ -192,10 +193,49 @@ async function fixedElStation(page) {
   });
 }
 
+// A dish whose elevation is a pulse-counted linear actuator (examples/actuator_dish.toml's
+// [hardware.el], flown by the simulated actuator), waiting for the operator to home it: the
+// daemon's own `antenna.axes`, Home posted and followed to "homed".
+const DISH = `[geometry]
+el_min_deg = 5.3
+el_max_deg = 87.0
+[hardware.el]
+sensor = "pulses"
+pulse_line = 20
+home_switch = 16
+counts_per_mm = 1.0
+home_mm = 525.0
+actuator_pivot_to_fixed_mm = 650.0
+actuator_pivot_to_moving_mm = 400.0
+actuator_offset_deg = 48.0
+actuator_retracted_mm = 520.0
+actuator_extended_mm = 977.2
+home_seek_duty = -0.8
+home_at_start = false
+`;
+async function dishStation(page) {
+  writeStation('stop', DISH, (s) => s.replace('[sim.el]\nstart_deg = 20.0\n', '[sim.el]\nstart_deg = 9.0\n'));
+  await openStation(page);
+  await scenario('drives: the daemon\'s pulse-counted elevation waits for Home, then homes', page, async () => {
+    await until('the Drives card', () => page.isVisible('#drives-panel'), 5000);
+    const shown = await drivesShown(page);
+    if (shown !== 'el+home') throw new Error(`the card has ${shown}`);
+    if ((await text(page, '#drive-el-held')) !== 'not homed: homing has not run') throw new Error(`held: "${await text(page, '#drive-el-held')}"`);
+    await page.click('#drive-el-home');
+    await until('the confirmation', () => page.isVisible('#confirm-dialog'), 3000);
+    const r = await answerTo(page, 'POST', '/api/hardware/home', () => page.click('#confirm-ok'));
+    if (r.status !== 200 || r.json.axis !== 'el') throw new Error(`POST /api/hardware/home: ${r.status} ${JSON.stringify(r.json)}`);
+    await until('homed, in the card', async () => /^homed · \d+ counts$/.test(await text(page, '#drive-el-homing')), 45000);
+    const s = await state();
+    if (s.antenna.axes.el.homing !== 'homed' || s.antenna.axes.el.held !== null) throw new Error(`the state: ${JSON.stringify(s.antenna.axes)}`);
+    if (await page.isVisible('#drive-el-held-row')) throw new Error('the held words still shown once homed');
+  });
+}
+
 // The axes' hardware added to every state message the daemon sends the page (its WebSocket routed
-// through the test): the running daemon sends no `antenna.axes` yet, as its guarded antenna does
-// not pass the station's axes on (the report of this change). `axes` is what the next messages
-// carry; null leaves the state as the daemon sent it.
+// through the test): the states a simulated station cannot be brought to on demand (a brake's
+// words, a refused reset, a lost position). `axes` is what the next messages carry; null leaves
+// the state as the daemon sent it.
 const injected = { axes: null };
 async function routeAxes(page) {
   await page.routeWebSocket(/\/ws$/, (ws) => {
@@ -292,6 +332,7 @@ async function main() {
     await polStation(page);
     await plainStation(page);
     await fixedElStation(page);
+    await dishStation(page);
     await drivesStation(page);
     checkPageErrors(browser.errors);
   } finally {
