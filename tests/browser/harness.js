@@ -124,9 +124,11 @@ function setPassword(password) {
 async function startDaemon(args = []) {
   const log = fs.openSync(path.join(tmp, 'daemon.log'), 'a');
   daemon = spawn(bin, ['serve', '--config', config, ...args], { stdio: ['ignore', log, log] });
+  // Served once the position is known, or once an axis says why it is not (a pulse-counted axis
+  // waiting to be homed: antenna.axes).
   await until('the daemon to serve /api/state', async () => {
     const s = await state();
-    return s && s.antenna && s.antenna.known;
+    return s && s.antenna && (s.antenna.known || s.antenna.axes !== undefined);
   });
 }
 async function stopDaemon() {
