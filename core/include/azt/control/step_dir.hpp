@@ -57,7 +57,7 @@ class StepDir {
 
   StepDirConfig config_;
   std::optional<double> last_s_;  ///< the last call's time; none before the first
-  double rate_hz_ = 0.0;  ///< unsigned: the way is direction_
+  double rate_hz_ = 0.0;          ///< unsigned: the way is direction_
   int direction_ = 0;
 };
 
