@@ -1,4 +1,4 @@
-// Browser test of the main screen's cards for the antennas people have (issue 33): the
+// Browser test of the main screen's cards for the antennas people have (docs/web-api.md): the
 // polarisation card on a station with [mount.pol] (docs/eme.md "Polarisation axis"), the beam
 // line of a fixed-elevation array ([mount.el] fixed_deg, "Fixed-elevation arrays"), the
 // direction test offering only the station's own axes, and the Drives card (docs/web-api.md

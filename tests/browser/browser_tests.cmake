@@ -50,7 +50,7 @@ add_test(NAME browser_calibration
   COMMAND node ${CMAKE_CURRENT_LIST_DIR}/calibration_page_test.js $<TARGET_FILE:azeltrack>
           ${PROJECT_BINARY_DIR}/calibration-shots)
 set_tests_properties(browser_calibration PROPERTIES LABELS browser TIMEOUT 180)
-# The main screen's cards for the antennas people have (issue 33): the polarisation card with
+# The main screen's cards for the antennas people have (docs/web-api.md): the polarisation card with
 # [mount.pol] (the mode set and followed, a refusal's words), the beam line of a fixed-elevation
 # array, the direction test offering the station's own axes only, each on a daemon restarted on its
 # own file; the Drives card on `antenna.axes` the test adds to the state messages, its Home posted to
