@@ -8,6 +8,17 @@
 
 namespace azt::app {
 
+/// A number key with its unit, range, default and help: the shape most of the tables' keys have.
+constexpr KeySpec number_key(std::string_view key, std::string_view unit, Range range,
+                             std::string_view default_toml, std::string_view help) {
+  return {.key = key,
+          .type = KeyType::Number,
+          .unit = unit,
+          .range = range,
+          .default_toml = default_toml,
+          .help = help};
+}
+
 std::span<const SectionSpec> sky_sections();         ///< [station], [sky], [atmosphere]
 std::span<const SectionSpec> control_sections();     ///< [control], [geometry], [corrections], …
 std::span<const SectionSpec> target_sections();      ///< [target], [satellites], [[spacecraft]]

@@ -106,11 +106,11 @@ constexpr std::array<KeySpec, 22> kPlant{{
      .help = "a spring-applied brake that holds the simulated shaft until its line has been on "
              "for `brake_lift_s`; the station drives its line with the `brake_release_s`, "
              "`brake_engage_s` and `brake_idle_s` of a real axis ([hardware.md](hardware.md))"},
-    motor_number("brake_lift_s", "s", above_up_to(0.0, 60.0), "1.2",
-                 "the simulated brake's own lift time, from its line on to the shaft free (above "
-                 "`brake_release_s`, the motor pulls against it)"),
-    motor_number("brake_hold_s", "s", above_up_to(0.0, 60.0), "0.3",
-                 "the simulated brake's time from its line off to holding fully"),
+    number_key("brake_lift_s", "s", above_up_to(0.0, 60.0), "1.2",
+               "the simulated brake's own lift time, from its line on to the shaft free (above "
+               "`brake_release_s`, the motor pulls against it)"),
+    number_key("brake_hold_s", "s", above_up_to(0.0, 60.0), "0.3",
+               "the simulated brake's time from its line off to holding fully"),
     kBrakeReleaseKey,
     kBrakeEngageKey,
     kBrakeIdleKey,
@@ -120,11 +120,11 @@ constexpr std::array<KeySpec, 22> kPlant{{
      .help = "the simulated motor's winding heats with the square of its duty and cools towards "
              "`ambient_c`; the station reads it as a temperature sensor on the motor and trips "
              "the axis above `temperature_limit_c`"},
-    motor_number("motor_rise_c", "°C", closed(0.0, 500.0), "80.0",
-                 "the winding's steady rise above ambient_c at full duty"),
-    motor_number("motor_time_constant_s", "s", above_up_to(0.0, 36000.0), "300.0",
-                 "how fast the winding heats and cools"),
-    motor_number("ambient_c", "°C", closed(-50.0, 60.0), "20.0", "the air around the motor"),
+    number_key("motor_rise_c", "°C", closed(0.0, 500.0), "80.0",
+               "the winding's steady rise above ambient_c at full duty"),
+    number_key("motor_time_constant_s", "s", above_up_to(0.0, 36000.0), "300.0",
+               "how fast the winding heats and cools"),
+    number_key("ambient_c", "°C", closed(-50.0, 60.0), "20.0", "the air around the motor"),
     {.key = "motor_start_c",
      .type = KeyType::Number,
      .unit = "°C",
@@ -163,28 +163,18 @@ constexpr std::array<KeySpec, 7> kMountErrors{{
     mount_error("el_sag_deg", "elevation sag (SAG)"),
 }};
 
-constexpr KeySpec receiver_number(std::string_view key, std::string_view unit, Range range,
-                                  std::string_view default_toml, std::string_view help) {
-  return {.key = key,
-          .type = KeyType::Number,
-          .unit = unit,
-          .range = range,
-          .default_toml = default_toml,
-          .help = help};
-}
-
 constexpr std::array<std::string_view, 3> kFluxBands{"1296", "2304", "10368"};
 
 constexpr std::array<KeySpec, 10> kSimReceiver{{
-    receiver_number("beamwidth_deg", "°", above_up_to(0.0, 30.0), "1.6", "half-power beamwidth"),
-    receiver_number("tsys_k", "K", above_up_to(0.0, 1e5), "50.0", "system noise on cold sky"),
-    receiver_number("noise_db", "dB", closed(0.0, 10.0), "0.1", "rms of one reading"),
-    receiver_number("rate_hz", "Hz", above_up_to(0.0, 100.0), "5.0", "readings per second"),
-    receiver_number("dish_m", "m", above_up_to(0.0, 100.0), "10.0",
-                    "dish diameter, for the radio sources' antenna temperatures"),
-    receiver_number("efficiency", "", above_up_to(0.0, 1.0), "0.6", "aperture efficiency"),
-    receiver_number("sun_k", "K", above_up_to(0.0, 1e8), "170000.0", "the Sun's temperature"),
-    receiver_number("moon_k", "K", above_up_to(0.0, 1e4), "220.0", "the Moon's temperature"),
+    number_key("beamwidth_deg", "°", above_up_to(0.0, 30.0), "1.6", "half-power beamwidth"),
+    number_key("tsys_k", "K", above_up_to(0.0, 1e5), "50.0", "system noise on cold sky"),
+    number_key("noise_db", "dB", closed(0.0, 10.0), "0.1", "rms of one reading"),
+    number_key("rate_hz", "Hz", above_up_to(0.0, 100.0), "5.0", "readings per second"),
+    number_key("dish_m", "m", above_up_to(0.0, 100.0), "10.0",
+               "dish diameter, for the radio sources' antenna temperatures"),
+    number_key("efficiency", "", above_up_to(0.0, 1.0), "0.6", "aperture efficiency"),
+    number_key("sun_k", "K", above_up_to(0.0, 1e8), "170000.0", "the Sun's temperature"),
+    number_key("moon_k", "K", above_up_to(0.0, 1e4), "220.0", "the Moon's temperature"),
     {.key = "flux_mhz",
      .type = KeyType::Integer,
      .unit = "MHz",
