@@ -219,10 +219,7 @@ class LibgpiodProvider final : public GpioProvider {
 
   Result<std::unique_ptr<GpioInput>> input(const GpioLineSpec& spec, GpioBias bias,
                                            GpioEdgeHandler on_edge) override {
-    int flags = active_low_flag(spec);
-    if (bias == GpioBias::PullUp) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
-    if (bias == GpioBias::PullDown) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
-    auto request = Request::make(spec, consumer_, GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES, flags, 0);
+    auto request = input_request(spec, bias);
     if (!request) return request.error();
     return std::unique_ptr<GpioInput>(
         std::make_unique<LibgpiodInput>(io_, spec, std::move(request).value(), std::move(on_edge)));
@@ -230,16 +227,21 @@ class LibgpiodProvider final : public GpioProvider {
 
   Result<std::unique_ptr<GpioInput>> event_input(const GpioLineSpec& spec, GpioBias bias,
                                                  GpioEventHandler on_event) override {
-    int flags = active_low_flag(spec);
-    if (bias == GpioBias::PullUp) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
-    if (bias == GpioBias::PullDown) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
-    auto request = Request::make(spec, consumer_, GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES, flags, 0);
+    auto request = input_request(spec, bias);
     if (!request) return request.error();
     return std::unique_ptr<GpioInput>(std::make_unique<LibgpiodEventInput>(
         io_, spec, std::move(request).value(), std::move(on_event)));
   }
 
  private:
+  /// An input line's request, every edge reported, with the bias asked for.
+  Result<Request> input_request(const GpioLineSpec& spec, GpioBias bias) {
+    int flags = active_low_flag(spec);
+    if (bias == GpioBias::PullUp) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
+    if (bias == GpioBias::PullDown) flags |= GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
+    return Request::make(spec, consumer_, GPIOD_LINE_REQUEST_EVENT_BOTH_EDGES, flags, 0);
+  }
+
   asio::io_context& io_;
   std::string consumer_;
 };
