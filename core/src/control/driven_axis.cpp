@@ -51,7 +51,7 @@ bool sends_setpoint(DriveKind kind) {
 DrivenAxis::DrivenAxis(const AxisControlConfig& control, const SupervisorConfig& supervisor,
                        const AxisDriveConfig& drive, double start_mount_deg, double tick_s)
     : controller_(with_count_lsb(control, drive)),
-      supervisor_(with_lsb(supervisor, with_count_lsb(control, drive))),
+      supervisor_(with_lsb(supervisor, controller_.config())),  // the step just chosen
       drive_(drive),
       relay_(drive.relay),
       mount_deg_(start_mount_deg),
