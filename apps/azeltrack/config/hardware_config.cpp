@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "common/usage_error.hpp"
+#include "config/actuator_config.hpp"
 #include "config/config_file.hpp"
 #include "config/motor_keys.hpp"
 #include "config/pulse_sensor_config.hpp"
@@ -98,6 +99,25 @@ AdcKind adc_kind(AxisSensorKind sensor) {
   throw std::logic_error("the EncoderHub and a pulse sensor are not ADCs");
 }
 
+/// pot_calibration (two readings at known angles), or pot_calibration_mm (two at known actuator
+/// lengths) with the actuator's triangle: one of them.
+void read_pot_line(const ConfigSection& s, control::PotInputConfig& pot) {
+  const auto deg = two_points(s, "pot_calibration");
+  const auto mm = two_points(s, "pot_calibration_mm");
+  if (deg.has_value() == mm.has_value()) {
+    s.fail("pot_calibration",
+           "an ADC sensor needs pot_calibration [counts_a, deg_a, counts_b, deg_b] read at two "
+           "angles, or on a linear actuator pot_calibration_mm [counts_a, mm_a, counts_b, mm_b] "
+           "read at two lengths with the actuator_* triangle: one of them");
+  }
+  const auto& p = deg ? *deg : *mm;
+  const char* key = deg ? "pot_calibration" : "pot_calibration_mm";
+  auto cal = control::PotCalibration::make(p[0], p[1], p[2], p[3]);
+  if (!cal) s.fail(key, cal.error().message);
+  pot.calibration = *cal;
+  if (mm) pot.actuator = read_actuator(s, "pot_calibration_mm");
+}
+
 void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   const AdcKind kind = adc_kind(a.sensor);
   a.adc_device = s.text("adc_device").value_or("");
@@ -108,14 +128,7 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   a.adc_channel = static_cast<unsigned>(ch);
   a.adc_address = static_cast<std::uint8_t>(s.integer("adc_address").value_or(0x48));
   a.pot.adc = kind.spec;
-  const auto p = two_points(s, "pot_calibration");
-  if (!p) {
-    s.fail("pot_calibration",
-           "is needed for an ADC sensor: [counts_a, deg_a, counts_b, deg_b] read at two angles");
-  }
-  auto cal = control::PotCalibration::make((*p)[0], (*p)[1], (*p)[2], (*p)[3]);
-  if (!cal) s.fail("pot_calibration", cal.error().message);
-  a.pot.calibration = *cal;
+  read_pot_line(s, a.pot);
   // Checked before narrowing: 4294967297 must be an error, never 1.
   const std::int64_t max_counts = std::int64_t{1} << a.pot.adc.bits;
   if (const auto lo = s.integer("open_below_counts")) {
@@ -128,7 +141,7 @@ void read_adc(const ConfigSection& s, HardwareAxisConfig& a) {
   }
   a.pot.average_samples = static_cast<std::size_t>(s.integer("average_samples").value_or(4));
   if (auto ok = control::PotInputConfig::make(a.pot); !ok)
-    s.fail("pot_calibration", ok.error().message);
+    s.fail(a.pot.actuator ? "pot_calibration_mm" : "pot_calibration", ok.error().message);
 }
 
 void refuse_enable(const ConfigSection& s, const HardwareAxisConfig& a) {
@@ -271,6 +284,7 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
   }
   if (read_by_adc(a.sensor)) read_adc(s, a);
   read_pulse_sensor(s, a, chip);
+  if (!a.pot.actuator && !(a.pulses && a.pulses->geometry)) refuse_actuator_keys(s);
   read_brake(s, a, chip);
   read_motor_inputs(s, a, chip);
   return a;

@@ -3,6 +3,7 @@
 #include <array>
 #include <string_view>
 
+#include "config/actuator_config.hpp"
 #include "config/config_file.hpp"
 
 namespace azt::app {
@@ -11,18 +12,10 @@ namespace {
 /// The pulse keys that say what is wired (they have no default): refused on any other sensor, so
 /// a home switch written under a pot axis is an error rather than wiring that does nothing. The
 /// homing's tuning keys have defaults and, as every key with one, load alone (ignored).
-constexpr std::array<std::string_view, 12> kPulseWiringKeys{"pulse_line",
-                                                            "pulse_a",
-                                                            "pulse_b",
-                                                            "home_switch",
-                                                            "counts_per_deg",
-                                                            "counts_per_mm",
-                                                            "home_mm",
-                                                            "actuator_pivot_to_fixed_mm",
-                                                            "actuator_pivot_to_moving_mm",
-                                                            "actuator_offset_deg",
-                                                            "actuator_retracted_mm",
-                                                            "actuator_extended_mm"};
+/// (The actuator's triangle is refused by read_axis unless a sensor measures length.)
+constexpr std::array<std::string_view, 7> kPulseWiringKeys{
+    "pulse_line",     "pulse_a",       "pulse_b", "home_switch",
+    "counts_per_deg", "counts_per_mm", "home_mm"};
 
 void refuse_pulse_keys(const ConfigSection& s) {
   for (std::string_view key : kPulseWiringKeys) {
@@ -61,30 +54,6 @@ void read_lines(const ConfigSection& s, HardwareAxisConfig& a, const std::string
   if (!a.home_switch) s.fail("home_switch", "is needed by sensor = \"pulses\" (its reference)");
 }
 
-/// The actuator's triangle ([hardware.*] actuator_*): every length and angle is needed.
-control::ActuatorGeometryConfig read_actuator(const ConfigSection& s) {
-  control::ActuatorGeometryConfig g;
-  const std::array<std::pair<std::string_view, double*>, 5> fields{
-      {{"actuator_pivot_to_fixed_mm", &g.pivot_to_fixed_mm},
-       {"actuator_pivot_to_moving_mm", &g.pivot_to_moving_mm},
-       {"actuator_offset_deg", &g.offset_deg},
-       {"actuator_retracted_mm", &g.retracted_mm},
-       {"actuator_extended_mm", &g.extended_mm}}};
-  for (const auto& [key, value] : fields) {
-    const auto v = s.number(key);
-    if (!v) s.fail(key, "is needed by counts_per_mm (the actuator's triangle, docs/hardware.md)");
-    *value = *v;
-  }
-  g.sense = s.choice("actuator_extend", kActuatorSenses, control::ActuatorSense::ExtendRaises);
-  if (auto ok = control::ActuatorGeometryConfig::make(g); !ok) {
-    fail_field(s, "actuator_", ok.error().message);
-  }
-  if (auto ok = control::ActuatorGeometry::make(g); !ok) {
-    fail_field(s, "actuator_", ok.error().message);
-  }
-  return g;
-}
-
 /// counts_per_deg with home_deg, or counts_per_mm with home_mm and the actuator's triangle.
 void read_scale(const ConfigSection& s, control::PulseAxisConfig& p) {
   const auto per_deg = s.number("counts_per_deg");
@@ -102,7 +71,7 @@ void read_scale(const ConfigSection& s, control::PulseAxisConfig& p) {
     const auto home_mm = s.number("home_mm");
     if (!home_mm) s.fail("home_mm", "is needed by counts_per_mm: the actuator's length at home");
     p.scale = {control::PulseUnit::Millimetres, *per_mm, *home_mm};
-    p.geometry = read_actuator(s);
+    p.geometry = read_actuator(s, "counts_per_mm");
   }
   std::optional<control::ActuatorGeometry> geometry;
   if (p.geometry) geometry = control::ActuatorGeometry(*p.geometry);

@@ -31,7 +31,7 @@ constexpr KeySpec actuator_mm(std::string_view key, std::string_view help) {
           .type = KeyType::Number,
           .unit = "mm",
           .range = above_up_to(0.0, 10000.0),
-          .default_note = "none: required with counts_per_mm",
+          .default_note = "none: required with counts_per_mm or pot_calibration_mm",
           .help = help};
 }
 
@@ -53,7 +53,7 @@ constexpr std::array<KeySpec, 3> kMotorPower{{
      .help = "after switching on, motion waits this long (the supply and the drives settle)"},
 }};
 
-constexpr std::array<KeySpec, 79> kHardwareAxis{{
+constexpr std::array<KeySpec, 80> kHardwareAxis{{
     {.key = "drive",
      .type = KeyType::Choice,
      .choices = kDriveNames,
@@ -145,7 +145,13 @@ constexpr std::array<KeySpec, 79> kHardwareAxis{{
     {.key = "pot_calibration",
      .type = KeyType::NumberList,
      .items = {4, 4},
-     .help = "an ADC sensor, required: `[counts_a, deg_a, counts_b, deg_b]` read at two angles"},
+     .help = "an ADC sensor, required (or `pot_calibration_mm`): `[counts_a, deg_a, counts_b, "
+             "deg_b]` read at two angles"},
+    {.key = "pot_calibration_mm",
+     .type = KeyType::NumberList,
+     .items = {4, 4},
+     .help = "or, a pot on a linear actuator: `[counts_a, mm_a, counts_b, mm_b]` read at two "
+             "lengths (pin to pin), with the `actuator_*` triangle that turns length into angle"},
     {.key = "open_below_counts",
      .type = KeyType::Integer,
      .range = closed(0.0, 32768.0),

@@ -15,11 +15,16 @@ SupervisorConfig with_lsb(SupervisorConfig s, const AxisControlConfig& c) {
   return s;
 }
 
-/// A pulse-counted axis's step is one count at the coarse end of its scale (pulse_scale.hpp),
-/// whatever the mount's encoder resolution says: the controller's window and the supervisor's
-/// checks are in the steps the sensor really has.
+/// A pulse-counted axis's step is one count at the coarse end of its scale (pulse_scale.hpp), an
+/// actuator pot's one ADC count at the coarse end of its stroke, whatever the mount's encoder
+/// resolution says: the controller's window and the supervisor's checks are in the steps the
+/// sensor really has.
 AxisControlConfig with_count_lsb(AxisControlConfig c, const AxisDriveConfig& drive) {
-  if (drive.pulses) c.lsb_deg = PulseAxis::make(*drive.pulses).value().scale().max_deg_per_count();
+  if (drive.pulses) {
+    c.lsb_deg = PulseAxis::make(*drive.pulses).value().scale().max_deg_per_count();
+  } else if (drive.sensor_step_deg) {
+    c.lsb_deg = *drive.sensor_step_deg;
+  }
   return c;
 }
 

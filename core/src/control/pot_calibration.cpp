@@ -105,6 +105,8 @@ std::string_view to_string(PotStatus status) {
       return "pot reads below its guard (open wiper or short to ground)";
     case PotStatus::OpenHigh:
       return "pot reads above its guard (open ground or short to supply)";
+    case PotStatus::OutsideStroke:
+      return "pot reads a length outside the actuator's stroke (check pot_calibration_mm)";
   }
   return "unknown";
 }
@@ -126,11 +128,31 @@ Result<PotInputConfig> PotInputConfig::make(const PotInputConfig& c) {
   if (c.average_samples < 1 || c.average_samples > MovingAverage::kCapacity) {
     return fail("pot averaging must be 1 to 64 samples");
   }
+  if (c.actuator) {
+    if (auto g = ActuatorGeometry::make(*c.actuator); !g) return g.error();
+  }
   return c;
 }
 
+double PotInputConfig::max_deg_per_count() const {
+  const double per_count = std::abs((calibration.deg_b - calibration.deg_a) /
+                                    (calibration.counts_b - calibration.counts_a));
+  if (!actuator) return per_count;
+  return per_count * ActuatorGeometry(*actuator).max_deg_per_mm();  // millimetres per count
+}
+
 PotInput::PotInput(const PotInputConfig& config)
-    : config_(config), average_(config.average_samples) {}
+    : config_(config), average_(config.average_samples) {
+  if (config.actuator) actuator_.emplace(*config.actuator);
+}
+
+PotReading PotInput::angle_of(double counts) const {
+  const double value = config_.calibration.to_deg(counts);
+  if (!actuator_) return PotReading{PotStatus::Ok, value};
+  const auto angle = actuator_->angle_deg(value);  // the line's value is a length here
+  if (!angle) return PotReading{PotStatus::OutsideStroke, kNaN};
+  return PotReading{PotStatus::Ok, *angle};
+}
 
 PotStatus PotInput::classify(std::int32_t counts) const {
   if (counts < 0 || counts > config_.adc.max_counts()) return PotStatus::OutOfRange;
@@ -146,7 +168,7 @@ PotReading PotInput::push(std::int32_t counts) {
     return PotReading{status, kNaN};
   }
   average_.push(counts);
-  return PotReading{PotStatus::Ok, config_.calibration.to_deg(average_.mean())};
+  return angle_of(average_.mean());
 }
 
 }  // namespace azt::control

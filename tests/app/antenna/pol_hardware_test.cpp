@@ -15,6 +15,7 @@
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
 #include "config/daemon_config.hpp"
+#include "support/code_spi.hpp"
 #include "support/fake_gpio.hpp"
 #include "support/hardware_station.hpp"
 
@@ -38,27 +39,6 @@ sensor = "mcp3008"
 adc_device = "/dev/spidev0.2"
 pot_calibration = [0, -95.0, 1023, 95.0]
 )";
-
-/// An MCP3008 answering `code` on every channel; an MCP41010's frames set `wiper`.
-class CodeSpi final : public linux_os::SpiBus {
- public:
-  explicit CodeSpi(std::function<int()> code, std::function<void(int)> wiper = {})
-      : code_(std::move(code)), wiper_(std::move(wiper)) {}
-  Result<bool> transfer(std::span<const std::uint8_t> tx, std::span<std::uint8_t> rx) override {
-    if (tx.size() == 2 && wiper_) wiper_(tx[1]);
-    if (tx.size() == 3 && rx.size() == 3) {
-      const auto c = static_cast<unsigned>(std::clamp(code_(), 0, 1023));
-      rx[0] = 0;
-      rx[1] = static_cast<std::uint8_t>((c >> 8) & 0x3U);
-      rx[2] = static_cast<std::uint8_t>(c & 0xFFU);
-    }
-    return true;
-  }
-
- private:
-  std::function<int()> code_;
-  std::function<void(int)> wiper_;
-};
 
 /// The rotator box of the elevation, ideal: the ADS1115 reads the angle of the wiper last sent.
 class CodeI2c final : public linux_os::I2cBus {
@@ -90,12 +70,12 @@ struct PolRig {
     ports.open_spi = [this](const std::string& path,
                             std::uint32_t) -> Result<std::unique_ptr<linux_os::SpiBus>> {
       if (path == "/dev/spidev0.2") {
-        return std::unique_ptr<linux_os::SpiBus>(std::make_unique<CodeSpi>([this] {
+        return std::unique_ptr<linux_os::SpiBus>(std::make_unique<testing::CodeSpi>([this] {
           return static_cast<int>(std::lround((pol.shaft_deg() + 95.0) / 190.0 * 1023.0));
         }));
       }
       // The azimuth pot at 100° (0–450° on 1023 counts); the elevation box's wiper is written.
-      return std::unique_ptr<linux_os::SpiBus>(std::make_unique<CodeSpi>(
+      return std::unique_ptr<linux_os::SpiBus>(std::make_unique<testing::CodeSpi>(
           [] { return 227; }, [this](int wiper) { el_deg = wiper / 255.0 * 180.0; }));
     };
     ports.open_i2c = [this](const std::string&) -> Result<std::unique_ptr<linux_os::I2cBus>> {

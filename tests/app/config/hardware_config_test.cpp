@@ -102,5 +102,71 @@ TEST(HardwareConfig, AFixedElevationHasNoElevationHardware) {
                UsageError);
 }
 
+/// A feedback pot on the worked example's actuator (docs/hardware.md "Linear actuators").
+const std::string kActuatorPot = R"([hardware.el]
+drive = "relay"
+relay_forward = 7
+relay_reverse = 8
+sensor = "mcp3008"
+adc_device = "/dev/spidev0.2"
+pot_calibration_mm = [100, 520.0, 900, 977.2]
+actuator_pivot_to_fixed_mm = 650.0
+actuator_pivot_to_moving_mm = 400.0
+actuator_offset_deg = 48.0
+actuator_retracted_mm = 520.0
+actuator_extended_mm = 977.2
+actuator_extend = "raises"
+)";
+
+std::string error_or_empty(const std::string& extra) {
+  try {
+    (void)daemon_config_from(ConfigFile::parse(
+        "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"hardware\"\n[hub]\ndevice = "
+        "\"/dev/null\"\n" +
+            extra,
+        "c.toml"));
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(HardwareConfig, APotOnAnActuatorReadsMillimetresThroughItsTriangle) {
+  const DaemonConfig c = daemon_config_from(ConfigFile::parse(
+      "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"hardware\"\n[hub]\ndevice = "
+      "\"/dev/null\"\n" +
+          kActuatorPot,
+      "c.toml"));
+  const control::PotInputConfig& pot = c.hardware.el.pot;
+  ASSERT_TRUE(pot.actuator.has_value());
+  EXPECT_DOUBLE_EQ(pot.actuator->pivot_to_fixed_mm, 650.0);
+  EXPECT_DOUBLE_EQ(pot.calibration.deg_b, 977.2);                  // a length here, in millimetres
+  EXPECT_NEAR(control::PotInput(pot).push(500).deg, 39.56, 0.01);  // mid-stroke, the page's
+}
+
+TEST(HardwareConfig, AnActuatorsMistakesNameTheKey) {
+  const auto names = [](const std::string& text, const std::string& key) {
+    const std::string e = error_or_empty(text);
+    EXPECT_NE(e.find(key), std::string::npos) << text << "\n→ " << e;
+  };
+  const auto replaced = [](const std::string& from, const std::string& to) {
+    std::string t = kActuatorPot;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  EXPECT_EQ(error_or_empty(kActuatorPot), "");
+  // Both lines, or neither: one of them.
+  names(kActuatorPot + "pot_calibration = [0, 0.0, 1023, 90.0]\n", "[hardware.el].pot_calibration");
+  names(replaced("pot_calibration_mm = [100, 520.0, 900, 977.2]\n", ""),
+        "[hardware.el].pot_calibration");
+  names(replaced("actuator_offset_deg = 48.0\n", ""), "[hardware.el].actuator_offset_deg");
+  names(replaced("977.2\n", "1200.0\n"), "[hardware.el].actuator_extended_mm");
+  // A triangle under a pot calibrated in degrees, or under no sensor of length, does nothing.
+  names(replaced("pot_calibration_mm = [100, 520.0, 900, 977.2]",
+                 "pot_calibration = [0, 0.0, 1023, 90.0]"),
+        "[hardware.el].actuator_pivot_to_fixed_mm is for an actuator's length");
+  names("[hardware.az]\nactuator_retracted_mm = 300.0\n", "[hardware.az].actuator_retracted_mm");
+}
+
 }  // namespace
 }  // namespace azt::app

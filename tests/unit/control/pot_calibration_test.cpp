@@ -209,5 +209,46 @@ TEST(PotInputConfig, Validates) {
   EXPECT_FALSE(PotInputConfig::make(c).ok());
 }
 
+/// The worked example's actuator (docs/hardware.md "Linear actuators": 520 mm retracted, an
+/// 18-inch stroke, a = 650 mm, b = 400 mm, θ0 = 48°) with a feedback pot on a 10-bit ADC reading
+/// 100 counts retracted and 900 extended: 0.5715 mm a count.
+PotInputConfig actuator_pot() {
+  PotInputConfig c;
+  c.adc = kAdcBx24;
+  c.calibration = PotCalibration::make(100.0, 520.0, 900.0, 520.0 + 18 * 25.4).value();
+  c.actuator = ActuatorGeometryConfig{
+      650.0, 400.0, 48.0, 520.0, 520.0 + 18 * 25.4, ActuatorSense::ExtendRaises};
+  return PotInputConfig::make(c).value();
+}
+
+TEST(PotInput, AnActuatorsPotReadsLengthThroughTheTriangle) {
+  PotInput pot(actuator_pot());
+  // The page's angles at the stroke's ends and middle (748.6 mm is 500 counts), to 0.01°.
+  EXPECT_NEAR(pot.push(100).deg, 5.12, 0.01);
+  EXPECT_NEAR(pot.push(500).deg, 39.56, 0.01);
+  EXPECT_NEAR(pot.push(900).deg, 87.74, 0.01);
+  // Equal steps of length are unequal steps of angle: the stroke's extended end is coarser.
+  const double low_step = pot.push(101).deg - pot.push(100).deg;
+  const double high_step = pot.push(900).deg - pot.push(899).deg;
+  EXPECT_GT(high_step, 1.5 * low_step);
+}
+
+TEST(PotInput, AnActuatorsPotOutsideItsStrokeIsAFaultNotAnAngle) {
+  PotInput pot(actuator_pot());
+  const PotReading past = pot.push(950);  // 1005.8 mm: 28.6 mm past the extended end
+  EXPECT_EQ(past.status, PotStatus::OutsideStroke);
+  EXPECT_TRUE(std::isnan(past.deg));
+  EXPECT_EQ(pot.push(20).status, PotStatus::OutsideStroke);  // 474.3 mm: short of retracted
+}
+
+TEST(PotInputConfig, AnActuatorsStepIsItsCoarsestCount) {
+  // 0.5715 mm a count at the extended end's 0.3086°/mm (actuator_geometry_test.cpp).
+  EXPECT_NEAR(actuator_pot().max_deg_per_count(), 0.5715 * 0.3086, 1e-4);
+  EXPECT_NEAR(seed_elevation(1).max_deg_per_count(), 90.0 / 256.0, kTol);
+  PotInputConfig c = actuator_pot();
+  c.actuator->pivot_to_moving_mm = 100.0;  // the triangle cannot reach the stroke
+  EXPECT_FALSE(PotInputConfig::make(c).ok());
+}
+
 }  // namespace
 }  // namespace azt::control

@@ -45,6 +45,10 @@ struct AxisDriveConfig {
   /// readings come from on_pulse_edges(). Precondition: PulseAxis::make(*pulses).ok(), and a
   /// duty-driven axis (a setpoint box closes its own loop on its own sensor).
   std::optional<PulseAxisConfig> pulses;
+  /// The sensor's own coarsest step, where it is not the mount's encoder resolution: a pot on a
+  /// linear actuator, whose degrees per count vary along the stroke
+  /// (PotInputConfig::max_deg_per_count). A pulse-counted axis takes its scale's instead.
+  std::optional<double> sensor_step_deg;
 };
 
 /// What the station knows of one axis.

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string_view>
 
+#include "azt/control/actuator_geometry.hpp"
 #include "azt/util/result.hpp"
 
 namespace azt::control {
@@ -101,6 +102,9 @@ enum class PotStatus : std::uint8_t {
   OutOfRange,  ///< the count is outside 0..2^bits − 1: not something this ADC can return
   OpenLow,     ///< below the open-wire guard: broken wiper pulled down, or shorted to ground
   OpenHigh,    ///< above the guard: broken ground end, or wiper shorted to the supply
+  /// A pot on a linear actuator reads a length outside the actuator's stroke: a calibration or
+  /// wiring error, since the actuator cannot be there (actuator_geometry.hpp).
+  OutsideStroke,
 };
 
 std::string_view to_string(PotStatus status);
@@ -123,10 +127,21 @@ struct PotInputConfig {
   std::optional<std::int32_t> open_below_counts;  ///< samples below this are OpenLow
   std::optional<std::int32_t> open_above_counts;  ///< samples above this are OpenHigh
   std::size_t average_samples = 1;                ///< 1..MovingAverage::kCapacity
+  /// A pot on a linear actuator (a LINAK- or superjack-style actuator with a feedback pot): the
+  /// pot measures length, not angle, so the calibration's two points are (counts, millimetres
+  /// of actuator length), its deg_a and deg_b fields holding millimetres, and each averaged
+  /// length becomes the mount angle through the triangle. Empty: the line gives degrees.
+  std::optional<ActuatorGeometryConfig> actuator;
 
   /// Validates: the ADC and the calibration, guards inside 0..max_counts with below < above,
-  /// and the averaging window.
+  /// the averaging window, and the actuator's triangle when there is one.
   static Result<PotInputConfig> make(const PotInputConfig& c);
+
+  /// The angle of one ADC count where it is coarsest: the line's degrees per count, or on an
+  /// actuator its millimetres per count times the stroke's largest degrees per millimetre
+  /// (ActuatorGeometry::max_deg_per_mm). The controller's and the supervisor's step on such an
+  /// axis. Precondition: make(*this).ok().
+  [[nodiscard]] double max_deg_per_count() const;
 };
 
 class PotInput {
@@ -145,7 +160,11 @@ class PotInput {
  private:
   [[nodiscard]] PotStatus classify(std::int32_t counts) const;
 
+  /// The averaged reading's angle: the line's, or the actuator's at the line's length.
+  [[nodiscard]] PotReading angle_of(double counts) const;
+
   PotInputConfig config_;
+  std::optional<ActuatorGeometry> actuator_;
   MovingAverage average_;
 };
 
