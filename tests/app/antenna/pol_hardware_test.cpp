@@ -224,6 +224,7 @@ TEST(PolHardware, ACountedFeedHomesHoldsItsAngleThenFollowsItsCount) {
   EXPECT_NE(pol.held.find("not homed"), std::string::npos) << pol.held;
   EXPECT_TRUE(rig.relay("[hardware.pol] relay_reverse"));
   EXPECT_LT(rig.pol.shaft_deg(), -20.0);
+  EXPECT_FALSE(backend->pol_status()->target_mount_deg.has_value()) << "held: no target shown";
   double homed_at_s = -1.0;
   for (int i = 0; i < 1200 && homed_at_s < 0.0; ++i) {
     rig.run(*backend, control::PolDemand{30.0, 0.0}, 0.1);

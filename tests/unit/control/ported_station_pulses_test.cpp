@@ -200,6 +200,7 @@ TEST(PortedStationPulses, ACountedPolAxisHomesHoldsItsFeedThenFollowsIt) {
   s.run(40.0, 1.0);
   EXPECT_EQ(s.status().homing, HomingState::Seeking);
   EXPECT_LT(s.pol->duty, 0.0);  // the seek towards the switch, not the 40° feed
+  EXPECT_FALSE(s.station->pol()->target_mount_deg().has_value()) << "held: sent nowhere";
   EXPECT_NE(s.status().held.find("not homed"), std::string::npos) << s.status().held;
   EXPECT_TRUE(s.station->faults().empty()) << s.station->faults().front();
   s.run(40.0, 60.0);
@@ -208,6 +209,7 @@ TEST(PortedStationPulses, ACountedPolAxisHomesHoldsItsFeedThenFollowsIt) {
   EXPECT_NEAR(s.feed->deg, 40.0, 0.5 + 1.0 / FeedPulses::kCountsPerDeg);
   EXPECT_NEAR(s.status().mount_deg, s.feed->deg, 1.0 / FeedPulses::kCountsPerDeg + 0.01);
   EXPECT_TRUE(s.status().held.empty()) << s.status().held;
+  EXPECT_EQ(s.station->pol()->target_mount_deg(), 40.0);
   EXPECT_TRUE(s.station->faults().empty()) << s.station->faults().front();
   // The operator's command homes it again; a STOP ends that homing, unreferenced.
   EXPECT_EQ(s.station->home(s.t, 2), std::nullopt);
