@@ -67,7 +67,10 @@ try:
     check(status == 409 and "no pulse sensor" in body.get("error", ""),
           f"the azimuth has no count to home: {status} {body}")
     status, body = http_json(base, "POST", "/api/hardware/home", {"axis": "pol"}, token=token)
-    check(status == 400, f"not an axis that can count: {status} {body}")
+    check(status == 409 and "no pulse sensor" in body.get("error", ""),
+          f"no pol axis here to home: {status} {body}")
+    status, body = http_json(base, "POST", "/api/hardware/home", {"axis": "feed"}, token=token)
+    check(status == 400, f"not an axis: {status} {body}")
     status, body = http_json(base, "POST", "/api/hardware/home", {"axis": "el"}, token=token)
     check(status == 200 and body.get("axis") == "el", f"homing again: {status} {body}")
     homed = wait_until(lambda: el_axis()["homing"] == "homed", 60)

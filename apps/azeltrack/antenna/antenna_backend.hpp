@@ -78,8 +78,8 @@ class AntennaBackend {
   /// The axes this station drives itself (the fixed elevation is none); empty for a Hamlib box,
   /// which keeps its brakes and motors to itself.
   [[nodiscard]] virtual std::vector<NamedAxisStatus> axes() const { return {}; }
-  /// The operator's command to home the pulse-counted axis `axis` ("az" or "el"): nullopt when
-  /// homing began, else why not.
+  /// The operator's command to home the pulse-counted axis `axis` ("az", "el" or "pol"): nullopt
+  /// when homing began, else why not.
   virtual std::optional<std::string> home(double now_s, const std::string& axis) {
     (void)now_s;
     (void)axis;

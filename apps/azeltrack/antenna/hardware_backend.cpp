@@ -1,9 +1,9 @@
 // The `hardware` backend (and `pwm`, its both-axes-on-IBT-2-and-EncoderHub form): the one station
 // backend over each axis's own drive and sensor (axis_devices.hpp), and the polarisation axis's
-// when [hardware.pol] gives them (a pot on an ADC: the EncoderHub reads az and el only). The
-// mount's rates and encoder resolutions are [mount.az] / [mount.el], the travel is [geometry]. The
-// EncoderHub reports its jumpers' bits in every frame: a frame whose bits are not the mount's is
-// never used, and latches a fault naming both (azt/linux/hub_sensors.hpp).
+// when [hardware.pol] gives them (a pot on an ADC or a pulse count: the EncoderHub reads az and
+// el only). The mount's rates and encoder resolutions are [mount.az] / [mount.el], the travel is
+// [geometry]. The EncoderHub reports its jumpers' bits in every frame: a frame whose bits are not
+// the mount's is never used, and latches a fault naming both (azt/linux/hub_sensors.hpp).
 #include "antenna/antenna_backend.hpp"
 #include "antenna/axis_devices.hpp"
 #include "antenna/station_backend.hpp"
@@ -49,18 +49,20 @@ control::StationControlConfig control_config(const DaemonConfig& config) {
   return c;
 }
 
-/// Axis `i`'s own sensor: a pot on an ADC, or a pulse count (the hub's are opened together).
-void open_sensor(const HardwareAxisConfig& a, HardwarePorts& devices, ports::StationPorts& p,
-                 std::size_t i) {
+/// An axis's own sensor into `sensor`: a pot on an ADC; or its pulse count into `pulses` (the
+/// hub's are opened together).
+void open_sensor(const HardwareAxisConfig& a, HardwarePorts& devices,
+                 std::unique_ptr<ports::AxisSensor>& sensor,
+                 std::unique_ptr<ports::PulseInput>& pulses) {
   switch (a.sensor) {
     case AxisSensorKind::Hub:
       return;
     case AxisSensorKind::Mcp3008:
     case AxisSensorKind::Ads1115:
-      p.sensors.at(i) = open_adc_sensor(a, devices);
+      sensor = open_adc_sensor(a, devices);
       return;
     case AxisSensorKind::Pulses:
-      p.pulse_inputs.at(i) = open_pulse_input(a, devices);
+      pulses = open_pulse_input(a, devices);
       return;
   }
 }
@@ -82,12 +84,13 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
     if (!sensors) throw UsageError("[hub] device: " + sensors.error().message);
     p.sensors = std::move(sensors).value();
   }
-  for (std::size_t i = 0; i < driven; ++i) open_sensor(*axes.at(i), devices, p, i);
+  for (std::size_t i = 0; i < driven; ++i)
+    open_sensor(*axes.at(i), devices, p.sensors.at(i), p.pulse_inputs.at(i));
   // The pol axis only with both its settings and its devices (the configuration refuses one
   // without the other: config/pol_config.hpp).
   const HardwareAxisConfig* pol = nullptr;
   if (config.station.pol && config.hardware.pol) pol = &*config.hardware.pol;
-  if (pol != nullptr) p.pol_sensor = open_adc_sensor(*pol, devices);
+  if (pol != nullptr) open_sensor(*pol, devices, p.pol_sensor, p.pol_pulse_input);
   for (std::size_t i = 0; i < driven; ++i)
     p.motor_sensors.at(i) = open_motor_sensor(*axes.at(i), devices);
   if (pol != nullptr) p.pol_motor_sensor = open_motor_sensor(*pol, devices);
@@ -101,18 +104,20 @@ ports::StationPorts open_ports(boost::asio::io_context& io, const DaemonConfig& 
   return p;
 }
 
-/// Axis `i`'s drive and what reads it (a sensor, or a pulse count); "fixed" without a drive.
-std::string describe_axis(const ports::StationPorts& p, std::size_t i) {
-  if (!p.drives.at(i)) return "fixed";
-  const std::string reader =
-      p.sensors.at(i) ? p.sensors.at(i)->describe() : p.pulse_inputs.at(i)->describe();
-  return p.drives.at(i)->describe() + ", " + reader;
+/// An axis's drive and what reads it (a sensor, or a pulse count); "fixed" without a drive.
+std::string describe_axis(const ports::AxisDrive* drive, const ports::AxisSensor* sensor,
+                          const ports::PulseInput* pulses) {
+  if (drive == nullptr) return "fixed";
+  return drive->describe() + ", " + (sensor != nullptr ? sensor->describe() : pulses->describe());
 }
 
 std::string describe_ports(const ports::StationPorts& p) {
-  std::string out = "az: " + describe_axis(p, 0) + "; el: " + describe_axis(p, 1);
-  if (p.pol_drive && p.pol_sensor) {
-    out += "; pol: " + p.pol_drive->describe() + ", " + p.pol_sensor->describe();
+  std::string out =
+      "az: " + describe_axis(p.drives[0].get(), p.sensors[0].get(), p.pulse_inputs[0].get()) +
+      "; el: " + describe_axis(p.drives[1].get(), p.sensors[1].get(), p.pulse_inputs[1].get());
+  if (p.pol_drive) {
+    out +=
+        "; pol: " + describe_axis(p.pol_drive.get(), p.pol_sensor.get(), p.pol_pulse_input.get());
   }
   for (const auto* brake : {p.brakes[0].get(), p.brakes[1].get(), p.pol_brake.get()}) {
     if (brake != nullptr) out += "; " + brake->describe();

@@ -69,7 +69,8 @@ class StationBackend final : public AntennaBackend {
   std::optional<std::string> home(double now_s, const std::string& axis) override {
     if (axis == "az") return station_.home(now_s, 0);
     if (axis == "el") return station_.home(now_s, 1);
-    return "no pulse-counted axis \"" + axis + "\": only az and el can be homed";
+    if (axis == "pol") return station_.home(now_s, 2);
+    return "no axis \"" + axis + "\": only az, el and pol can be homed";
   }
   void stop_homing(double now_s, std::string_view reason) override {
     station_.stop_homing(now_s, reason);

@@ -335,15 +335,15 @@ HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chi
   if (const ConfigSection pol = hw.child("pol"); pol.present()) {
     if (!pol.has("sensor")) {
       pol.fail("sensor",
-               "is needed: a pot on an ADC (\"mcp3008\" or \"ads1115\"); the EncoderHub reads "
-               "azimuth and elevation only");
+               "is needed: a pot on an ADC (\"mcp3008\" or \"ads1115\") or a pulse count "
+               "(\"pulses\"); the EncoderHub reads azimuth and elevation only");
     }
     h.pol = read_axis(pol, "pol", gpio_chip);
     // The hub's frames carry two angles (docs/encoder-hub.md): there is no third to read.
     if (read_by_hub(h.pol->sensor)) {
       pol.fail("sensor",
                "is \"hub\", but the EncoderHub reads azimuth and elevation only: read the pol "
-               "axis with a pot on an ADC (sensor = \"mcp3008\" or \"ads1115\")");
+               "axis with a pot on an ADC (sensor = \"mcp3008\" or \"ads1115\") or its pulses");
     }
   }
   const ConfigSection power = hw.child("power");

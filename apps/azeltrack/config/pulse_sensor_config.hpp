@@ -1,5 +1,5 @@
 #pragma once
-// sensor = "pulses" on [hardware.az] / [hardware.el]: a reed, Hall or quadrature sensor counted on
+// sensor = "pulses" on [hardware.az|el|pol]: a reed, Hall or quadrature sensor counted on
 // GPIO lines, the home switch it is referenced to, what a count measures (degrees, or millimetres
 // of a linear actuator through its triangle) and how the axis homes (docs/hardware.md, "Pulse
 // sensors and homing"). The core's PulseAxis runs it; the `hardware` backend opens the lines.

@@ -69,7 +69,7 @@ constexpr std::array<KeySpec, 80> kHardwareAxis{{
      .help = "`hub`: this axis of the EncoderHub on `[hub]`; `mcp3008` (spidev, 10 bits of 3.3 V) "
              "or `ads1115` (i2c-dev, ±4.096 V, 15 bits): a pot read by an ADC (the `adc_*` keys "
              "and `pot_calibration`); `pulses`: a reed, Hall or quadrature sensor counted on GPIO "
-             "from a home switch (the `pulse_*`, `home_*` and `counts_per_*` keys; az and el)"},
+             "from a home switch (the `pulse_*`, `home_*` and `counts_per_*` keys)"},
     {.key = "enable",
      .type = KeyType::GpioLine,
      .default_note = "tied high",
@@ -322,8 +322,9 @@ constexpr std::array<KeySpec, 80> kHardwareAxis{{
 
 static_assert(control::MovingAverage::kCapacity == 64, "[hardware.*] average_samples' range");
 
-/// The pol axis's sensor names: the ADCs only (the EncoderHub's frames carry two angles).
-constexpr std::array<std::string_view, 2> kPolSensorNames{"mcp3008", "ads1115"};
+/// The pol axis's sensor names: the ADCs and a pulse count, never the hub (the EncoderHub's
+/// frames carry two angles).
+constexpr std::array<std::string_view, 3> kPolSensorNames{"mcp3008", "ads1115", "pulses"};
 
 /// [hardware.pol]: [hardware.az]'s keys, with a sensor that must be given and is never the hub.
 constexpr std::array<KeySpec, kHardwareAxis.size()> pol_axis_keys() {
@@ -335,8 +336,9 @@ constexpr std::array<KeySpec, kHardwareAxis.size()> pol_axis_keys() {
     k.default_note = "none: required";
     k.help =
         "a pot read by an ADC: `mcp3008` (spidev, 10 bits of 3.3 V) or `ads1115` (i2c-dev, "
-        "±4.096 V, 15 bits), with the `adc_*` keys and `pot_calibration`; the EncoderHub "
-        "reads azimuth and elevation only";
+        "±4.096 V, 15 bits), with the `adc_*` keys and `pot_calibration`; or `pulses`: a reed, "
+        "Hall or quadrature sensor counted on GPIO from a home switch (the `pulse_*`, `home_*` "
+        "and `counts_per_deg` keys); the EncoderHub reads azimuth and elevation only";
   }
   return keys;
 }
@@ -367,7 +369,8 @@ constexpr std::array<SectionSpec, 5> kSections{{
      .title = "The polarisation axis's drive and sensor",
      .help = "As `[hardware.az]`, for the axis of `[mount.pol]` (needed with `backend = "
              "\"hardware\"` and `[mount.pol]`; [eme.md](eme.md) \"Polarisation axis\"): the "
-             "sensor is a pot on an ADC, and `drive = \"pwm\"` is the `[pwm]` pol_* channels."},
+             "sensor is a pot on an ADC or a pulse count, and `drive = \"pwm\"` is the `[pwm]` "
+             "pol_* channels."},
 }};
 
 }  // namespace

@@ -43,8 +43,9 @@ json DaemonConsole::axes_json() const {
 
 void DaemonConsole::act_home(const json& body, const std::string& source, const ActDone& done) {
   const std::string axis = body_text(body, "axis");
-  if (axis != "az" && axis != "el") {
-    throw ApiError(400, "axis", "axis must be \"az\" or \"el\" (a pulse-counted axis)");
+  // An axis the station has without a pulse count (or not at all) is the station's refusal, 409.
+  if (axis != "az" && axis != "el" && axis != "pol") {
+    throw ApiError(400, "axis", "axis must be \"az\", \"el\" or \"pol\" (a pulse-counted axis)");
   }
   if (auto refused = p_.antenna.home(p_.monotonic_s(), axis)) throw ApiError(409, "", *refused);
   p_.log(source + ": homing of the " + axis + " axis");

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "azt/control/pulse_axis.hpp"
+
 namespace azt::control {
 
 PolAxis::PolAxis(const PolAxisConfig& config, double tick_s)
@@ -23,7 +25,10 @@ double PolAxis::drive(double now_s, const PolDemand& demand) {
   }
   const double rate =
       target_mount_deg_ && std::isfinite(demand.rate_deg_s) ? demand.rate_deg_s : 0.0;
-  return axis_.drive(now_s, target_mount_deg_, rate);
+  const double duty = axis_.drive(now_s, target_mount_deg_, rate);
+  // A pulse-counted feed not homed held instead (DrivenAxis::drive): it was sent nowhere.
+  if (const PulseAxis* p = axis_.pulses(); p != nullptr && !p->homed()) target_mount_deg_.reset();
+  return duty;
 }
 
 }  // namespace azt::control

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <utility>
+#include <vector>
 
 namespace azt::control {
 namespace {
@@ -43,9 +44,15 @@ PortedStation::PortedStation(const StationControlConfig& control, AzEl start_mou
                              const PositionCorrections& corrections, ports::StationPorts ports)
     : ports_(std::move(ports)), station_(control, start_mount) {
   station_.set_corrections(corrections);
-  // A pol axis needs its settings and both its ports; with any of them missing there is none.
-  if (control.pol && ports_.pol_drive && ports_.pol_sensor)
-    pol_.emplace(*control.pol, control.tick_s);
+  // A pol axis needs its settings, its drive and what reads it (its pulse input when its drive
+  // counts pulses, else its sensor); with any of them missing there is none.
+  if (control.pol && ports_.pol_drive) {
+    const bool counted = control.pol->drive.pulses.has_value();
+    if (counted ? ports_.pol_pulse_input != nullptr : ports_.pol_sensor != nullptr) {
+      pol_.emplace(*control.pol, control.tick_s);
+      pol_counted_ = counted;
+    }
+  }
 }
 
 PortedStation::~PortedStation() { stop_with(0.0, "stopped by the daemon"); }
@@ -69,7 +76,7 @@ void PortedStation::tick(double now_s, const Demand& demand, const AzEl& rate,
                                 fresh_[1]->deg);
     fresh_ = {};
   }
-  if (pol_) read_pol(now_s);
+  if (pol_ && !pol_counted_) read_pol(now_s);
   read_motors(now_s);
   if (pol_) pol_->drive(now_s, pol);
   apply(now_s, station_.tick(now_s, demand, rate));
@@ -117,7 +124,7 @@ std::vector<std::string> PortedStation::faults() const {
     if (ports_.sensors.at(i)) add_once(out, ports_.sensors.at(i)->latched_fault());
     add_once(out, sensor_fault_.at(i));
   }
-  if (pol_) {
+  if (pol_ && !pol_counted_) {
     add_once(out, ports_.pol_sensor->latched_fault());
     add_once(out, pol_sensor_fault_);
   }
@@ -131,7 +138,7 @@ void PortedStation::clear_faults() {
   for (const auto& sensor : ports_.sensors) {
     if (sensor) sensor->clear_fault();
   }
-  if (pol_) ports_.pol_sensor->clear_fault();
+  if (pol_ && !pol_counted_) ports_.pol_sensor->clear_fault();
 }
 
 std::vector<const ports::AxisSensor*> PortedStation::sensors() const {
@@ -139,7 +146,7 @@ std::vector<const ports::AxisSensor*> PortedStation::sensors() const {
   for (const auto& sensor : ports_.sensors) {
     if (sensor) out.push_back(sensor.get());
   }
-  if (pol_) out.push_back(ports_.pol_sensor.get());
+  if (pol_ && !pol_counted_) out.push_back(ports_.pol_sensor.get());
   return out;
 }
 
@@ -165,25 +172,46 @@ void PortedStation::read_sensors(double now_s) {
 }
 
 void PortedStation::read_pulses(double now_s) {
-  for (std::size_t i = 0; i < 2; ++i) {
-    ports::PulseInput* input = ports_.pulse_inputs.at(i).get();
-    const PulseAxis* pulses = station_.pulses(i);
+  for (std::size_t i = 0; i < pulses_started_.size(); ++i) {
+    ports::PulseInput* input = pulse_input(i);
+    const PulseAxis* pulses = pulse_axis(i);
     if (!input || !pulses) continue;
     if (!pulses_started_.at(i)) {
       pulses_started_.at(i) = true;
-      if (pulses->home_at_start()) (void)station_.home(now_s, i, input->home_closed());
+      if (pulses->home_at_start()) (void)home(now_s, i);
     }
-    station_.on_pulse_edges(now_s, i, input->take_edges());
+    const std::vector<ports::PulseEdge> edges = input->take_edges();
+    if (i == 2) {
+      // The pol axis is read alone (no part of the sky position): its count is its reading.
+      pol_->axis().on_pulse_edges(now_s, edges);
+      continue;
+    }
+    station_.on_pulse_edges(now_s, i, edges);
     const double mount_deg = i == 0 ? station_.az().mount_deg : station_.el().mount_deg;
     fresh_.at(i) = ports::AxisSample{mount_deg, now_s};
   }
 }
 
+ports::PulseInput* PortedStation::pulse_input(std::size_t i) const {
+  if (i < ports_.pulse_inputs.size()) return ports_.pulse_inputs.at(i).get();
+  return i == 2 && pol_counted_ ? ports_.pol_pulse_input.get() : nullptr;
+}
+
+const PulseAxis* PortedStation::pulse_axis(std::size_t i) const {
+  if (i < 2) return station_.pulses(i);
+  return i == 2 && pol_ ? pol_->axis().pulses() : nullptr;
+}
+
 std::optional<std::string> PortedStation::home(double now_s, std::size_t axis) {
-  if (axis > 1 || !ports_.pulse_inputs.at(axis) || !station_.pulses(axis)) {
-    return std::string{"this axis has no pulse sensor to home"};
-  }
-  return station_.home(now_s, axis, ports_.pulse_inputs.at(axis)->home_closed());
+  ports::PulseInput* input = pulse_input(axis);
+  if (!input || !pulse_axis(axis)) return std::string{"this axis has no pulse sensor to home"};
+  if (axis == 2) return pol_->axis().home(now_s, input->home_closed());
+  return station_.home(now_s, axis, input->home_closed());
+}
+
+void PortedStation::stop_homing(double now_s, std::string_view reason) {
+  station_.stop_homing(now_s, reason);
+  if (pol_) pol_->axis().stop_homing(now_s, reason);
 }
 
 void PortedStation::read_pol(double now_s) {

@@ -1,11 +1,14 @@
 // The `hardware` backend's polarisation axis ([hardware.pol], docs/hardware.md): relays on GPIO
 // and a pot on an MCP3008, opened beside the azimuth and elevation devices of the hardware
 // station, on simulated buses. The pol plant follows its relays; azimuth and elevation stand
-// still (their demand holds). Time is virtual. And the configurations that cannot drive a pol
-// axis, refused with the reason.
+// still (their demand holds). Time is virtual. The same feed counted by a reed on the fake GPIO
+// (sensor = "pulses"): it homes at start, holds its feed angle until homed, then follows it by the
+// count. And the configurations that cannot drive a pol axis, refused with the reason.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <span>
 #include <string>
 
@@ -15,6 +18,7 @@
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
 #include "config/daemon_config.hpp"
+#include "station/guarded_antenna.hpp"
 #include "support/code_spi.hpp"
 #include "support/fake_gpio.hpp"
 #include "support/hardware_station.hpp"
@@ -61,12 +65,30 @@ class CodeI2c final : public linux_os::I2cBus {
   std::uint8_t pointer_ = 0;
 };
 
+/// kPolAxis's feed counted by a reed: 2 counts a degree, the home switch closed below −90°.
+constexpr double kPolCountsPerDeg = 2.0;
+constexpr double kPolHomeDeg = -90.0;
+std::string pulse_pol_axis() {
+  std::string pol = kPolAxis;
+  pol.erase(pol.find("sensor = \"mcp3008\""));
+  pol.replace(pol.find("lsb_deg = 0.2"), 13, "lsb_deg = 0.5");  // the relay's step: one count
+  return pol + R"(sensor = "pulses"
+pulse_line = 14
+home_switch = 15
+counts_per_deg = 2.0
+home_deg = -90.0
+home_seek_duty = -1.0
+)";
+}
+
 struct PolRig {
   explicit PolRig(const std::string& extra = kPolAxis)
       : config(daemon_config_from(
             ConfigFile::parse(std::string(testing::kHardwareStation) + extra, "hw.toml"))),
         pol(*config.sim.pol) {
     ports.gpio = &gpio;
+    ports.epoch = epoch;
+    gpio.preset("[hardware.pol] home_switch", pol.shaft_deg() < kPolHomeDeg);
     ports.open_spi = [this](const std::string& path,
                             std::uint32_t) -> Result<std::unique_ptr<linux_os::SpiBus>> {
       if (path == "/dev/spidev0.2") {
@@ -91,16 +113,45 @@ struct PolRig {
     for (const double end = t + seconds; t < end; t += 0.05) {
       const bool fwd = relay("[hardware.pol] relay_forward");
       const bool rev = relay("[hardware.pol] relay_reverse");
+      const double before = pol.shaft_deg();
       pol.step(fwd ? 1.0 : rev ? -1.0 : 0.0, 0.05);
+      if (config.hardware.pol->pulses) count(before, t + 0.05);
       a.set_pol_demand(demand);
       a.tick(t, control::Demand{}, control::AzEl{});
     }
+  }
+
+  /// A counted feed's reed closes at every count crossed, its home switch changes at −90°: the
+  /// edges stamped on the loop's clock, delivered by the loop.
+  void count(double before_deg, double at_s) {
+    const auto at = epoch + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                std::chrono::duration<double>(at_s));
+    const double after_deg = pol.shaft_deg();
+    const auto crossed = std::abs(std::lround(std::floor(after_deg * kPolCountsPerDeg)) -
+                                  std::lround(std::floor(before_deg * kPolCountsPerDeg)));
+    for (long i = 0; i < crossed; ++i) {
+      gpio.edge("[hardware.pol] pulse_line", true, at);
+      gpio.edge("[hardware.pol] pulse_line", false, at);
+    }
+    if ((before_deg < kPolHomeDeg) != (after_deg < kPolHomeDeg)) {
+      gpio.edge("[hardware.pol] home_switch", after_deg < kPolHomeDeg, at);
+    }
+    io.poll();
+    io.restart();
+  }
+  [[nodiscard]] static control::AxisStatus pol_of(const AntennaBackend& a) {
+    for (const NamedAxisStatus& axis : a.axes()) {
+      if (axis.axis == "pol") return axis.status;
+    }
+    ADD_FAILURE() << "no pol axis in axes()";
+    return {};
   }
 
   boost::asio::io_context io;
   DaemonConfig config;
   testing::FakeGpio gpio{io};
   HardwarePorts ports;
+  std::chrono::steady_clock::time_point epoch = std::chrono::steady_clock::now();
   sim::AxisPlant pol;
   double el_deg = 10.0;
   double t = 0.0;
@@ -138,6 +189,74 @@ TEST(PolHardware, StopNowStopsThePolAxisWithTheOthers) {
   EXPECT_FALSE(rig.relay("[hardware.pol] relay_forward"));
   rig.run(*backend, control::PolDemand{60.0, 0.0}, 1.0);
   EXPECT_FALSE(rig.relay("[hardware.pol] relay_forward")) << "moved while latched";
+}
+
+TEST(PolHardware, ACountedFeedHomesHoldsItsAngleThenFollowsItsCount) {
+  PolRig rig(pulse_pol_axis());
+  auto backend = make_hardware_backend(rig.io, rig.config, rig.ports);
+  const std::string describe = backend->describe();
+  EXPECT_NE(describe.find("pol: relays"), std::string::npos) << describe;
+  EXPECT_NE(describe.find("home switch", describe.find("pol: ")), std::string::npos) << describe;
+  rig.run(*backend, control::PolDemand{30.0, 0.0}, 1.0);
+  // Homing first: the feed angle waits while the seek drives towards the switch at −90°.
+  auto pol = PolRig::pol_of(*backend);
+  EXPECT_EQ(pol.homing, control::HomingState::Seeking);
+  EXPECT_NE(pol.held.find("not homed"), std::string::npos) << pol.held;
+  EXPECT_TRUE(rig.relay("[hardware.pol] relay_reverse"));
+  EXPECT_LT(rig.pol.shaft_deg(), -20.0);
+  EXPECT_FALSE(backend->pol_status()->target_mount_deg.has_value()) << "held: no target shown";
+  double homed_at_s = -1.0;
+  for (int i = 0; i < 1200 && homed_at_s < 0.0; ++i) {
+    rig.run(*backend, control::PolDemand{30.0, 0.0}, 0.1);
+    if (PolRig::pol_of(*backend).homing == control::HomingState::Homed) homed_at_s = rig.t;
+  }
+  ASSERT_GT(homed_at_s, 0.0) << PolRig::pol_of(*backend).held;
+  EXPECT_LT(homed_at_s, 80.0);
+  rig.run(*backend, control::PolDemand{30.0, 0.0}, 80.0);
+  pol = PolRig::pol_of(*backend);
+  // The count's angle is the feed's within a count, the feed at its angle within the window.
+  EXPECT_NEAR(pol.mount_deg, rig.pol.shaft_deg(), 1.0 / kPolCountsPerDeg + 0.01);
+  EXPECT_NEAR(rig.pol.shaft_deg(), 30.0, 0.5 + 1.0 / kPolCountsPerDeg + 0.1);
+  EXPECT_TRUE(pol.held.empty()) << pol.held;
+  ASSERT_TRUE(pol.pulse_count.has_value());
+  EXPECT_TRUE(backend->faults().empty()) << backend->faults().front();
+  // The operator homes it again; a STOP ends that homing and the feed holds, unreferenced.
+  EXPECT_EQ(backend->home(rig.t, "pol"), std::nullopt);
+  rig.run(*backend, control::PolDemand{30.0, 0.0}, 1.0);
+  EXPECT_EQ(PolRig::pol_of(*backend).homing, control::HomingState::Seeking);
+  backend->stop_homing(rig.t, "stopped by console");
+  rig.run(*backend, control::PolDemand{30.0, 0.0}, 2.0);
+  pol = PolRig::pol_of(*backend);
+  EXPECT_EQ(pol.homing, control::HomingState::NotHomed);
+  EXPECT_NE(pol.held.find("stopped by console"), std::string::npos) << pol.held;
+  EXPECT_FALSE(rig.relay("[hardware.pol] relay_forward"));
+  EXPECT_FALSE(rig.relay("[hardware.pol] relay_reverse"));
+}
+
+TEST(PolHardware, TheEStopEndsTheCountedFeedsHomingAndRefusesAnother) {
+  PolRig rig(pulse_pol_axis() + "[gpio]\nestop = 20\n");
+  const auto latch = std::filesystem::path(::testing::TempDir()) / "pol_pulses_estop.latched";
+  std::filesystem::remove(latch);
+  GuardedAntenna guarded(make_hardware_backend(rig.io, rig.config, rig.ports), rig.config.gpio,
+                         GuardParts{&rig.gpio, nullptr, latch.string(), [&rig] { return rig.t; },
+                                    [] {}, [](const std::string&) {}});
+  rig.run(guarded, control::PolDemand{30.0, 0.0}, 1.0);
+  ASSERT_EQ(PolRig::pol_of(guarded).homing, control::HomingState::Seeking);
+  rig.gpio.set_input("[gpio] estop", true);
+  rig.run(guarded, control::PolDemand{30.0, 0.0}, 0.5);
+  EXPECT_EQ(PolRig::pol_of(guarded).homing, control::HomingState::NotHomed);
+  EXPECT_FALSE(rig.relay("[hardware.pol] relay_reverse"));
+  const auto refused = guarded.home(rig.t, "pol");
+  ASSERT_TRUE(refused.has_value());
+  EXPECT_NE(refused->find("no homing now: the E-stop is latched"), std::string::npos) << *refused;
+  std::filesystem::remove(latch);
+}
+
+TEST(PolHardware, AFeedReadByAPotHasNoCountToHome) {
+  PolRig rig;
+  auto backend = make_hardware_backend(rig.io, rig.config, rig.ports);
+  EXPECT_EQ(backend->home(rig.t, "pol"), "this axis has no pulse sensor to home");
+  EXPECT_NE(backend->home(rig.t, "feed")->find("only az, el and pol"), std::string::npos);
 }
 
 std::string refusal(const std::string& text) {

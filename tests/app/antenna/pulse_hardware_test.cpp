@@ -146,7 +146,7 @@ TEST(PulseHardware, AStopEndsHomingAndTheOperatorStartsItAgain) {
   const double stopped_deg = rig.plant->shaft_deg();
   rig.run(*backend, point_at(100.0), 5.0);
   EXPECT_NEAR(rig.plant->shaft_deg(), stopped_deg, 0.01);
-  // The elevation is fixed and the feed has no count: only the azimuth homes.
+  // The elevation is fixed and there is no feed: only the azimuth homes.
   EXPECT_TRUE(backend->home(rig.t, "el").has_value());
   EXPECT_TRUE(backend->home(rig.t, "pol").has_value());
   EXPECT_EQ(backend->home(rig.t, "az"), std::nullopt);

@@ -1,6 +1,6 @@
-// sensor = "pulses" on [hardware.az] / [hardware.el] (docs/hardware.md, "Pulse sensors and
-// homing"): a reed, Hall or quadrature sensor, its home switch, its scale in degrees or through an
-// actuator's triangle, and its homing; every mistake refused naming its key.
+// sensor = "pulses" on [hardware.az] / [hardware.el] / [hardware.pol] (docs/hardware.md, "Pulse
+// sensors and homing"): a reed, Hall or quadrature sensor, its home switch, its scale in degrees
+// or through an actuator's triangle, and its homing; every mistake refused naming its key.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -152,12 +152,55 @@ home_switch = 13
   names(home_outside, "[hardware.el].home_mm");
 }
 
-TEST(PulseSensorConfig, ThePolarisationAxisCannotCountPulses) {
-  const std::string e = error_of(R"([mount.pol]
+/// A feed rotator on relays, counted by a reed on line 14 from a home switch on line 15.
+const std::string kReedPol = R"([mount.pol]
 [hardware.pol]
+drive = "relay"
+relay_forward = 7
+relay_reverse = 8
 sensor = "pulses"
-)");
-  EXPECT_NE(e.find("[hardware.pol].sensor"), std::string::npos) << e;
+pulse_line = 14
+home_switch = 15
+counts_per_deg = 2.0
+home_deg = -90.0
+home_at_start = false
+)";
+
+TEST(PulseSensorConfig, ThePolarisationAxisCountsPulsesAsAzAndElDo) {
+  const DaemonConfig c = load(kReedPol);
+  ASSERT_TRUE(c.hardware.pol.has_value());
+  const HardwareAxisConfig& pol = *c.hardware.pol;
+  ASSERT_TRUE(pol.pulses.has_value());
+  EXPECT_EQ(pol.pulse_lines.at(0).offset, 14U);
+  EXPECT_EQ(pol.home_switch->offset, 15U);
+  EXPECT_DOUBLE_EQ(pol.pulses->scale.home_value, -90.0);
+  EXPECT_FALSE(pol.pulses->home_at_start);
+  EXPECT_EQ(pol.gpio_lines().size(), 4U);
+  EXPECT_TRUE(control::PulseAxis::make(*pol.pulses).ok());
+}
+
+TEST(PulseSensorConfig, ThePolarisationAxisIsRefusedAsAzAndElAre) {
+  const auto names = [](const std::string& text, const std::string& key) {
+    const std::string e = error_of(text);
+    EXPECT_NE(e.find(key), std::string::npos) << text << "\n→ " << e;
+  };
+  const auto with = [](const std::string& line, const std::string& instead) {
+    std::string t = kReedPol;
+    t.replace(t.find(line), line.size(), instead);
+    return t;
+  };
+  names(with("home_switch = 15\n", ""), "[hardware.pol].home_switch");
+  names(with("counts_per_deg = 2.0", "pulse_a = 20"), "[hardware.pol].pulse_line");
+  names(with("drive = \"relay\"",
+             "drive = \"pot\"\nspi_device = \"/dev/spidev0.0\"\n"
+             "wiper_calibration = [0, -95.0, 255, 95.0]"),
+        "[hardware.pol].sensor");
+  // Its lines join the check of every line: its own relay's, the azimuth's count, the E-stop.
+  names(with("pulse_line = 14", "pulse_line = 7"), "is the same line as");
+  names(kReedAz + with("home_switch = 15", "home_switch = 12"), "is the same line as");
+  names(kReedPol + "[gpio]\nestop = 14\n", "is the same line as");
+  // The hub's frames carry two angles: never the pol axis's.
+  names(with("sensor = \"pulses\"", "sensor = \"hub\""), "[hardware.pol].sensor must be");
 }
 
 }  // namespace

@@ -185,7 +185,10 @@ TEST(DaemonConsole, TheStateShowsEachAxisBrakeMotorAndHoming) {
   az.homing = control::HomingState::Seeking;
   az.held = "not homed: homing in progress (seeking the home switch)";
   az.pulse_count = -17;
-  rig.antenna.axes_ = {{"az", az}, {"el", control::AxisStatus{}}};
+  control::AxisStatus pol;  // a pulse-counted feed, homed
+  pol.homing = control::HomingState::Homed;
+  pol.pulse_count = 180;
+  rig.antenna.axes_ = {{"az", az}, {"el", control::AxisStatus{}}, {"pol", pol}};
   const json axes = rig.console.state()["antenna"]["axes"];
   EXPECT_EQ(axes["az"]["brake"], "released");
   EXPECT_EQ(axes["az"]["brake_released"], true);
@@ -195,6 +198,9 @@ TEST(DaemonConsole, TheStateShowsEachAxisBrakeMotorAndHoming) {
   EXPECT_EQ(axes["az"]["held"], az.held);
   EXPECT_EQ(axes["az"]["pulse_count"], -17);
   EXPECT_FALSE(axes.contains("el")) << "a plain axis has nothing more to show";
+  EXPECT_EQ(axes["pol"]["homing"], "homed");
+  EXPECT_EQ(axes["pol"]["held"], nullptr);
+  EXPECT_EQ(axes["pol"]["pulse_count"], 180);
 }
 
 TEST(DaemonConsole, HomingIsAskedOfThePulseAxisAndEndedByAStop) {
@@ -210,10 +216,15 @@ TEST(DaemonConsole, HomingIsAskedOfThePulseAxisAndEndedByAStop) {
     }
     return 200U;
   };
-  EXPECT_EQ(status_of(json{{"axis", "pol"}}), 400U);
+  // The pol axis is asked as az and el are; whether it counts pulses is the station's to say.
+  EXPECT_EQ(status_of(json{{"axis", "pol"}}), 200U);
+  EXPECT_EQ(rig.antenna.homed, (std::vector<std::string>{"el", "pol"}));
+  EXPECT_EQ(status_of(json{{"axis", "feed"}}), 400U);
   EXPECT_EQ(status_of(json::object()), 400U);
   rig.antenna.home_refusal = "the axis is stopped (emergency stop): clear the fault first";
   EXPECT_EQ(status_of(json{{"axis", "az"}}), 409U);
+  rig.antenna.home_refusal = "this axis has no pulse sensor to home";
+  EXPECT_EQ(status_of(json{{"axis", "pol"}}), 409U);
   // Any STOP ends a homing in progress, naming who stopped it.
   ASSERT_FALSE(rig.act("stop", json::object()).error.has_value());
   ASSERT_EQ(rig.antenna.homing_stopped.size(), 1U);

@@ -1,12 +1,13 @@
 #pragma once
 // The station controller over its ports: each tick reads both axes'
 // sensors, hands the controller a reading when both have a new one, and applies its duties to
-// both drives. A station with a polarisation axis (StationControlConfig::pol and both pol ports)
-// drives it beside them, read and supervised alone: its own demand each tick, its own faults; an
-// E-stop, a drive's write error and shutdown stop it with the others. The daemon's one station
-// backend and the virtual-time simulations both run it, so a simulated hour exercises exactly the
-// code a station runs; what differs is the ports (the plants read by the hub model or by the hub
-// firmware, the Linux devices, a Hamlib box).
+// both drives. A station with a polarisation axis (StationControlConfig::pol, its drive and its
+// sensor, or its pulse input when its drive counts pulses) drives it beside them, read and
+// supervised alone: its own demand each tick, its own faults; an E-stop, a drive's write error
+// and shutdown stop it with the others. The daemon's one station backend and the virtual-time
+// simulations both run it, so a simulated hour exercises exactly the code a station runs; what
+// differs is the ports (the plants read by the hub model or by the hub firmware, the Linux
+// devices, a Hamlib box).
 
 #include <array>
 #include <cstddef>
@@ -40,10 +41,11 @@ class PortedStation {
   void set_pol_limits(double now_s, const LimitPair& limits);
   /// Both drives off now, the station latched with `reason` until the faults are cleared.
   void stop_with(double now_s, std::string_view reason);
-  /// The operator's command to home a pulse-counted axis (0 az, 1 el); why not.
+  /// The operator's command to home a pulse-counted axis (0 az, 1 el, 2 pol); why not.
   std::optional<std::string> home(double now_s, std::size_t axis);
-  /// Ends every homing in progress (the operator's STOP); the axes stay unreferenced.
-  void stop_homing(double now_s, std::string_view reason) { station_.stop_homing(now_s, reason); }
+  /// Ends every homing in progress (the operator's STOP), the pol axis's too; the axes stay
+  /// unreferenced.
+  void stop_homing(double now_s, std::string_view reason);
 
   /// One line per fault: latched axis faults, a drive's write error, each sensor's error (a
   /// link two axes share is named once).
@@ -62,15 +64,21 @@ class PortedStation {
   [[nodiscard]] std::optional<std::string> latched_sensor() const;
   void read_sensors(double now_s);
   /// Pulse-counted axes: homing at start when configured, this tick's edges, and the axis marked
-  /// fresh (its count is read every tick) so the other axis's reading goes in.
+  /// fresh (its count is read every tick) so the other axis's reading goes in. The pol axis's
+  /// count too, read alone as its sensor is.
   void read_pulses(double now_s);
+  /// Axis `i`'s (0 az, 1 el, 2 pol) pulse input and the PulseAxis it feeds; nullptr when either
+  /// is missing (the axis has another sensor, or no such axis).
+  [[nodiscard]] ports::PulseInput* pulse_input(std::size_t i) const;
+  [[nodiscard]] const PulseAxis* pulse_axis(std::size_t i) const;
   void read_pol(double now_s);
   void apply(double now_s, const Duties& d);
   /// Reads each axis's motor sensor, if it has one, and hands the readings to its axis.
   void read_motors(double now_s);
   /// Writes each brake line as its axis's brake wants it; false after a write error (stopped).
   bool apply_brakes(double now_s);
-  /// The sensors that hold a fault of their own: both axes', and the pol axis's if any.
+  /// The sensors that hold a fault of their own: both axes', and the pol axis's if it has one
+  /// (a pulse-counted pol axis has none).
   [[nodiscard]] std::vector<const ports::AxisSensor*> sensors() const;
 
   ports::StationPorts ports_;
@@ -82,7 +90,10 @@ class PortedStation {
   std::string drive_fault_;
   /// A motor sensor's read error per axis (az, el, pol): the axis trips on it, this says why.
   std::array<std::optional<std::string>, 3> motor_sensor_fault_;
-  std::array<bool, 2> pulses_started_{};  ///< the first tick has begun each pulse axis's homing
+  /// The pol axis is read by its pulse count (ports' pol_pulse_input), not by pol_sensor.
+  bool pol_counted_ = false;
+  /// The first tick has begun each pulse axis's homing (az, el, pol).
+  std::array<bool, 3> pulses_started_{};
 };
 
 }  // namespace azt::control

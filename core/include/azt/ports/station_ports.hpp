@@ -28,6 +28,8 @@ struct StationPorts {
   /// A pulse-counted axis's lines (its AxisDriveConfig::pulses), azimuth then elevation; such an
   /// axis has no sensor. nullptr: none.
   std::array<std::unique_ptr<PulseInput>, 2> pulse_inputs;
+  /// The pol axis's, when its PolAxisConfig::drive counts pulses: read in place of pol_sensor.
+  std::unique_ptr<PulseInput> pol_pulse_input;
 };
 
 }  // namespace azt::ports
