@@ -6,7 +6,10 @@ read from the simulator's `value` files) at a fixed speed, and each axis's pot i
 ADS1115 converts: the angle as the 15-bit code of the daemon's pot_calibration, written to the
 i2c-stub chip's Conversion register (0x00) as the SMBus word the chip would send (its first
 byte, the code's high byte, low in the word). The daemon reads it through i2c-dev as a Pi reads
-an ADS1115; nothing here talks to the daemon.
+an ADS1115; nothing here talks to the daemon. The azimuth also has a reed and a home switch, both
+to ground (closed: the line pulled down, as the daemon's pull-up then reads it low), on lines 12
+and 13: the reed is closed for the first half of each of its counts, the home switch at and below
+its angle (guest/pulses counts them).
 
 Usage: rotator.py SIM_DIR I2C_DEV [--once]   (--once: write the start angles and exit)"""
 import ctypes
@@ -27,6 +30,8 @@ AXES = {
     "el": {"addr": 0x49, "plus": 8, "minus": 9, "deg_s": 4.0, "deg": 10.0, "span": 180.0},
 }
 CODE_0, CODE_1 = 1000, 25000
+REED, HOME = 12, 13
+COUNTS_PER_DEG, HOME_DEG = 0.5, 120.0  # guest/pulses sets the same counts_per_deg and home_deg
 STATE = "/run/azt-rotator"  # the angles, for the test's log: "az el"
 
 
@@ -59,7 +64,21 @@ def relay(sim, line):
         return f.read().strip() == "1"
 
 
-def publish(fd):
+def set_closed(sim, line, closed):
+    """A switch to ground: closed pulls the line down. Written every turn, since a consumer's
+    request sets the pull to its own bias (a rewrite of the same pull makes no edge)."""
+    with open(f"{sim}/sim_gpio{line}/pull", "w", encoding="ascii") as f:
+        f.write("pull-down" if closed else "pull-up")
+
+
+def switches(sim):
+    az = AXES["az"]["deg"]
+    set_closed(sim, REED, (az * COUNTS_PER_DEG) % 1.0 < 0.5)
+    set_closed(sim, HOME, az <= HOME_DEG)
+
+
+def publish(fd, sim):
+    switches(sim)
     for axis in AXES.values():
         write_code(fd, axis["addr"], code_of(axis))
     with open(STATE + ".new", "w", encoding="ascii") as f:
@@ -70,7 +89,7 @@ def publish(fd):
 def main():
     sim, dev = sys.argv[1], sys.argv[2]
     fd = os.open(dev, os.O_RDWR)
-    publish(fd)
+    publish(fd, sim)
     if "--once" in sys.argv:
         return 0
     last = time.monotonic()
@@ -81,7 +100,7 @@ def main():
         for axis in AXES.values():
             direction = relay(sim, axis["plus"]) - relay(sim, axis["minus"])
             axis["deg"] += direction * axis["deg_s"] * dt
-        publish(fd)
+        publish(fd, sim)
 
 
 if __name__ == "__main__":
