@@ -21,7 +21,7 @@ release_key=5A33A3747E83ECC0CD2795FE2124FFC9F62C5588
 dpkg-deb -c "$deb" | awk '{ print $6 }' | sed 's|^\./|/|' >"$tmp/files"
 for f in /usr/bin/azeltrack /lib/systemd/system/azeltrack.service \
   /usr/lib/sysusers.d/azeltrack.conf /usr/lib/tmpfiles.d/azeltrack.conf \
-  /lib/udev/rules.d/60-azeltrack.rules /etc/chrony/conf.d/azeltrack.conf \
+  /lib/udev/rules.d/70-azeltrack.rules /etc/chrony/conf.d/azeltrack.conf \
   /etc/chrony/sources.d/azeltrack.sources /usr/share/azeltrack/firmware/encoder-hub.hex \
   /usr/share/azeltrack/firmware/encoder-hub.elf /usr/share/man/man1/azeltrack.1.gz \
   /usr/share/doc/azeltrack/README.md /usr/share/doc/azeltrack/copyright \

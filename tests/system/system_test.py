@@ -47,7 +47,8 @@ def make_payload(work, modules, debs, broken_udev):
     os.makedirs(os.path.join(payload, "debs"))
     if broken_udev:
         open(os.path.join(payload, "break-udev"), "w", encoding="ascii").close()
-    for name in ("run", "pulses", "gpio_watch.py", "board", "rotator.py", "rotctld_p.py"):
+    for name in ("run", "pulses", "gamepad", "pad.py", "gpio_watch.py", "board", "rotator.py",
+                 "rotctld_p.py"):
         shutil.copy(os.path.join(HERE, "guest", name), payload)
     shutil.copy(debs.deb_n, os.path.join(payload, "debs", "azeltrack_N.deb"))
     shutil.copy(debs.panel, os.path.join(payload, "debs", "azeltrack-panel.deb"))
