@@ -4,7 +4,7 @@
 // direction test offering only the station's own axes, and the Drives card (docs/web-api.md
 // `antenna.axes`): a simulated actuator dish homed from it, and states the simulation cannot be
 // brought to on demand added to the daemon's state messages by the test (routeAxes), with Home's
-// refusal shown. Debian's Chromium driven by playwright-core
+// refusal shown, and an absent game pad's line in the Station I/O card. Debian's Chromium driven by playwright-core
 // against a real `azeltrack serve` on the simulated antenna, restarted on each station's file
 // (harness.js); the page is loaded afresh for each. Screenshots go to OUT_DIR.
 // Usage: node antennas_test.js AZELTRACK OUT_DIR (AZT_WEB_DIR as for console_test.js)
@@ -327,6 +327,22 @@ async function drivesStation(page) {
   });
 }
 
+// A game pad configured but not plugged in (docs/hardware.md "Buttons and a game pad"): the
+// daemon's own reason shown in the Station I/O card, and no fault made of it.
+async function gamepadStation(page) {
+  writeStation('stop', '[gamepad]\ndevice = "/dev/input/by-id/azt-absent-pad-event-joystick"\n');
+  await openStation(page);
+  await scenario('game pad: an absent pad shows why it is not found, as no fault', page, async () => {
+    const pad = (await state()).station_io.gamepad;
+    if (!pad || pad.connected || pad.device !== '/dev/input/by-id/azt-absent-pad-event-joystick' || !/No such file/.test(pad.error || '')) {
+      throw new Error(`station_io.gamepad: ${JSON.stringify(pad)}`);
+    }
+    await until('the pad line', async () => (await text(page, '#io-pad')) === `not found: ${pad.error}`, 5000);
+    if (await page.$eval('#io-pad', (e) => e.classList.contains('io-bad'))) throw new Error('an absent pad is marked as a fault');
+    if ((await state()).faults.length) throw new Error(`faults: ${JSON.stringify((await state()).faults)}`);
+  });
+}
+
 async function main() {
   port = await freePort();
   base = useWebPort(port);
@@ -340,6 +356,7 @@ async function main() {
     await fixedElStation(page);
     await dishStation(page);
     await drivesStation(page);
+    await gamepadStation(page);
     checkPageErrors(browser.errors);
   } finally {
     await shutDown(browser);

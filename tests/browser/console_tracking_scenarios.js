@@ -97,6 +97,7 @@ async function runTrackingScenarios(t) {
     if (names !== 'preamp,trx_relay,amplifier,radio') throw new Error(`sequencer outputs: ${names}`);
     if (io.sequencer.outputs.some((o) => o.on)) throw new Error('an output is keyed with no PTT');
     if ((await text(page, '#io-estop')) !== 'not wired') throw new Error(`E-stop: ${await text(page, '#io-estop')}`);
+    if ((await text(page, '#io-pad')) !== 'none set' || io.gamepad !== null) throw new Error(`game pad: ${await text(page, '#io-pad')}, ${JSON.stringify(io.gamepad)}`);
     if ((await page.$$('#io-seq .out.on')).length !== 0) throw new Error('an output is lit');
   });
 

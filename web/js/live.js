@@ -171,6 +171,10 @@ export function renderIo(io) {
     if (!seq.wired) ptt += ' (no GPIO lines)';
   }
   showIo('ptt', ptt, !!(seq && (seq.transmitting || seq.timed_out)));
+  // A pad absent is no fault (it is looked for every 2 s), so never shown as one.
+  const pad = io && io.gamepad ? io.gamepad : null;
+  showIo('pad', !pad ? 'none set' : pad.connected ? `connected: ${pad.name}`
+    : pad.error ? `not found: ${pad.error}` : 'looking for it…', false);
   const outs = seq && Array.isArray(seq.outputs) ? seq.outputs : [];
   $('io-seq').replaceChildren(...outs.map((o) => h('span', { class: `out${o.on ? ' on' : ''}`, text: String(o.name) })));
 }

@@ -437,6 +437,7 @@ void StationDaemon::open_console() {
                                                     : nlohmann::json(nullptr);
                      io["sequencer"] = sequencer_->state();
                      io["motor_power"] = power_ ? power_->to_json(now_s()) : nlohmann::json();
+                     io["gamepad"] = pad_ ? pad_->to_json() : nlohmann::json();
                      return io;
                    },
                    off_loop(),

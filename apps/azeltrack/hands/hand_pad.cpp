@@ -67,4 +67,13 @@ std::string HandPad::connected_name() const {
   return pad_ && pad_->present() ? pad_->name() : std::string{};
 }
 
+nlohmann::json HandPad::to_json() const {
+  const std::string name = connected_name();
+  return {{"device", config_.device},
+          {"connected", !name.empty()},
+          {"name", name.empty() ? nlohmann::json(nullptr) : nlohmann::json(name)},
+          {"error", last_error_.empty() || !name.empty() ? nlohmann::json(nullptr)
+                                                         : nlohmann::json(last_error_)}};
+}
+
 }  // namespace azt::app

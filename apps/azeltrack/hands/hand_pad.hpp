@@ -13,6 +13,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "azt/hands/hand_control.hpp"
 #include "azt/hands/pad_state.hpp"
 #include "azt/linux/evdev_pad.hpp"
@@ -34,6 +36,10 @@ class HandPad {
   void tick();
   /// The pad's name while it is connected; empty otherwise.
   [[nodiscard]] std::string connected_name() const;
+  /// For /api/state `station_io.gamepad` (docs/web-api.md): the configured device, whether the
+  /// pad is connected and its name, or why it cannot be had (null while it is simply being looked
+  /// for again after going away).
+  [[nodiscard]] nlohmann::json to_json() const;
 
  private:
   void look_for_pad(double now_s);

@@ -101,6 +101,11 @@ TEST(HandPad, TheStickMovesAtItsDeflectionAndCentringStops) {
 TEST(HandPad, ThePadGoingAwayLetsGoAndItIsFoundAgainWhenPluggedIn) {
   Mast mast;
   mast.run_for(0.05);
+  const nlohmann::json connected = mast.hands.to_json();  // what the console shows
+  EXPECT_EQ(connected["device"], "/dev/input/by-id/usb-pad-event-joystick");
+  EXPECT_EQ(connected["connected"], true);
+  EXPECT_EQ(connected["name"], "Microsoft X-Box 360 pad");
+  EXPECT_TRUE(connected["error"].is_null());
   mast.pad->replay(kStickFullUp);
   mast.run_for(0.5);
   ASSERT_TRUE(mast.demand().jog.has_value());
@@ -110,11 +115,16 @@ TEST(HandPad, ThePadGoingAwayLetsGoAndItIsFoundAgainWhenPluggedIn) {
   EXPECT_EQ(mast.rig.modes.mode(), control::Mode::Stop);
   EXPECT_EQ(mast.log.back(),
             "game pad: Microsoft X-Box 360 pad went away; looking for it every 2 s");
+  EXPECT_EQ(mast.hands.to_json()["connected"], false);
+  EXPECT_TRUE(mast.hands.to_json()["error"].is_null()) << "looked for, no reason yet";
   // Not there for 5 s: looked for at 2 s and 4 s, the reason logged once.
   mast.run_for(5.0);
   EXPECT_EQ(mast.opens, 3);
   EXPECT_EQ(mast.log.back(),
             "game pad: /dev/input/by-id/usb-pad-event-joystick: No such file or directory");
+  EXPECT_EQ(mast.hands.to_json()["error"],
+            "/dev/input/by-id/usb-pad-event-joystick: No such file or directory");
+  EXPECT_TRUE(mast.hands.to_json()["name"].is_null());
   EXPECT_EQ(mast.rig.modes.mode(), control::Mode::Stop);
   mast.plugged = std::make_unique<RecordedPad>();
   mast.run_for(1.5);  // the next look, at 6.6 s
