@@ -11,19 +11,23 @@
 namespace azt::app {
 namespace {
 
+/// A station on the `hardware` backend, its tables to follow.
+const std::string kTop =
+    "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"hardware\"\n[hub]\ndevice = "
+    "\"/dev/null\"\n";
+
+/// The configuration error of the test station with `extra` added; empty when it loads.
+std::string error_or_empty(const std::string& extra) {
+  try {
+    (void)daemon_config_from(ConfigFile::parse(kTop + extra, "c.toml"));
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(HardwareConfig, MistakesNameTheKey) {
-  const auto error_of = [](const std::string& extra) {
-    try {
-      (void)daemon_config_from(ConfigFile::parse(
-          "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"hardware\"\n[hub]\ndevice = "
-          "\"/dev/null\"\n" +
-              extra,
-          "c.toml"));
-    } catch (const UsageError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
+  const auto error_of = error_or_empty;
   EXPECT_EQ(error_of(""), "");
   EXPECT_NE(
       error_of("[hardware.az]\ndrive = \"relay\"\nrelay_forward = 5\n").find("[hardware.az].drive"),
@@ -118,25 +122,8 @@ actuator_extended_mm = 977.2
 actuator_extend = "raises"
 )";
 
-std::string error_or_empty(const std::string& extra) {
-  try {
-    (void)daemon_config_from(ConfigFile::parse(
-        "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"hardware\"\n[hub]\ndevice = "
-        "\"/dev/null\"\n" +
-            extra,
-        "c.toml"));
-  } catch (const UsageError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(HardwareConfig, APotOnAnActuatorReadsMillimetresThroughItsTriangle) {
-  const DaemonConfig c = daemon_config_from(ConfigFile::parse(
-      "[station]\ngrid = \"FN06HE\"\n[antenna]\nbackend = \"hardware\"\n[hub]\ndevice = "
-      "\"/dev/null\"\n" +
-          kActuatorPot,
-      "c.toml"));
+  const DaemonConfig c = daemon_config_from(ConfigFile::parse(kTop + kActuatorPot, "c.toml"));
   const control::PotInputConfig& pot = c.hardware.el.pot;
   ASSERT_TRUE(pot.actuator.has_value());
   EXPECT_DOUBLE_EQ(pot.actuator->pivot_to_fixed_mm, 650.0);
