@@ -109,6 +109,12 @@ json_check "simulate moon with a pol axis: split within 1 deg after settling" \
 json_check "simulate moon on a fixed-elevation array: azimuth within window + 2 LSB" \
   "j['el'] == {'fixed_deg': 12.0} and j['az']['max_error_deg'] <= 0.5 + 2 * 360 / 4096 and j['motor_starts_per_hour']['el'] == 0 and j['acquired_s'] is not None and j['faults'] == []" \
   simulate --config "$root/examples/fixed_el.toml" --scenario moon --from 2025-03-14T00:00:00Z --hours 0.5 --json
+# An elevation actuator read by its feedback pot (docs/hardware.md, "Linear actuators"): nothing to
+# home; the elevation within the window + a step (the stroke's coarsest ADC count, 0.5715 mm at
+# 0.3086 deg/mm) + half a count of the code's rounding.
+json_check "simulate moon on an actuator dish read by its pot" \
+  "j['acquired_s'] is not None and j['el']['max_error_deg'] <= 0.2 + 1.5 * 0.5715 * 0.3086 and j['el']['rms_error_deg'] < 0.2 and j['el']['starts'] > 0 and j['faults'] == []" \
+  simulate --config "$root/examples/actuator_dish_pot.toml" --scenario moon --from 2025-03-14T04:00:00Z --hours 0.5 --json
 json_check "moon-windows in a fixed array's beam" \
   "j['el_band_deg'] == [2.0, 22.0] and len(j['windows']) > 0 and all(2.0 <= w['el_deg'] <= 22.0 for w in j['windows'])" \
   moon-windows --grid FN06HE --dx-grid JO22 --from 2025-03-01T00:00:00Z --days 3 --fixed-el 12 --beam-width 20 --ephemeris erfa --json

@@ -260,8 +260,10 @@ void read_motor_inputs(const ConfigSection& s, HardwareAxisConfig& a, const std:
   if (a.current_adc_channel || a.temperature_adc_channel) read_motor_adc(s, a);
 }
 
-HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
-                             const std::string& chip) {
+}  // namespace
+
+HardwareAxisConfig read_hardware_axis(const ConfigSection& s, const std::string& name,
+                                      const std::string& chip) {
   HardwareAxisConfig a;
   a.name = name;
   a.drive = s.choice("drive", kAxisDriveKinds, AxisDriveKind::Pwm);
@@ -289,8 +291,6 @@ HardwareAxisConfig read_axis(const ConfigSection& s, const std::string& name,
   read_motor_inputs(s, a, chip);
   return a;
 }
-
-}  // namespace
 
 void fail_field(const ConfigSection& s, const std::string& prefix, const std::string& message) {
   const auto space = message.find(' ');
@@ -323,8 +323,8 @@ HardwareAxisConfig default_axis(const std::string& name) {
 HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chip, bool el_axis) {
   const ConfigSection hw = file.section("hardware");
   HardwareConfig h;
-  h.az = read_axis(hw.child("az"), "az", gpio_chip);
-  h.el = read_axis(hw.child("el"), "el", gpio_chip);
+  h.az = read_hardware_axis(hw.child("az"), "az", gpio_chip);
+  h.el = read_hardware_axis(hw.child("el"), "el", gpio_chip);
   // A fixed elevation ([mount.el] fixed_deg) has nothing to drive or read.
   h.el_axis = el_axis;
   if (!h.el_axis && hw.child("el").present()) {
@@ -338,7 +338,7 @@ HardwareConfig read_hardware(const ConfigFile& file, const std::string& gpio_chi
                "is needed: a pot on an ADC (\"mcp3008\" or \"ads1115\") or a pulse count "
                "(\"pulses\"); the EncoderHub reads azimuth and elevation only");
     }
-    h.pol = read_axis(pol, "pol", gpio_chip);
+    h.pol = read_hardware_axis(pol, "pol", gpio_chip);
     // The hub's frames carry two angles (docs/encoder-hub.md): there is no third to read.
     if (read_by_hub(h.pol->sensor)) {
       pol.fail("sensor",

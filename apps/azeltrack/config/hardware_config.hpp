@@ -201,6 +201,13 @@ struct HardwareConfig {
 std::optional<linux_os::GpioLineSpec> read_gpio_line(const ConfigSection& s, const std::string& key,
                                                      const std::string& chip, bool active_low);
 
+/// One axis's table ([hardware.az|el|pol] `s`, named `name`): its drive, its sensor, its brake and
+/// motor inputs, every key checked; `chip` is [gpio] chip (lines given as bare numbers). The
+/// simulation reads [hardware.el] through it too, to fly the same actuator (sim_actuator_config).
+/// Throws UsageError naming the key.
+HardwareAxisConfig read_hardware_axis(const ConfigSection& s, const std::string& name,
+                                      const std::string& chip);
+
 /// Reads [hardware]; `gpio_chip` is [gpio] chip (relay lines given as bare numbers); `el_axis`
 /// false: [mount.el] fixed_deg, and a [hardware.el] table is refused. Throws UsageError naming
 /// the key.

@@ -12,7 +12,7 @@ namespace {
 /// The pulse keys that say what is wired (they have no default): refused on any other sensor, so
 /// a home switch written under a pot axis is an error rather than wiring that does nothing. The
 /// homing's tuning keys have defaults and, as every key with one, load alone (ignored).
-/// (The actuator's triangle is refused by read_axis unless a sensor measures length.)
+/// (The actuator's triangle is refused by read_hardware_axis unless a sensor measures length.)
 constexpr std::array<std::string_view, 7> kPulseWiringKeys{
     "pulse_line",     "pulse_a",       "pulse_b", "home_switch",
     "counts_per_deg", "counts_per_mm", "home_mm"};

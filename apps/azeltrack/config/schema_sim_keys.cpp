@@ -191,22 +191,24 @@ constexpr std::array<KeySpec, 10> kSimReceiver{{
 constexpr std::array<KeySpec, 6> kPolPlant{
     {kPlant[0], kPlant[1], kPlant[2], kPlant[3], kPlant[4], kPlant[5]}};
 
-/// [sim.el] alone: the dish of a pulse-counted elevation ([hardware.el] sensor = "pulses", the
-/// actuator's triangle), flown as a linear actuator (sim_actuator_config.cpp).
+/// [sim.el] alone: the dish of an elevation on a linear actuator ([hardware.el] sensor = "pulses"
+/// with counts_per_mm, or a pot with pot_calibration_mm; the actuator's triangle), flown as a
+/// linear actuator (sim_actuator_config.cpp).
 constexpr std::array<KeySpec, 2> kActuatorPlant{{
     {.key = "actuator_speed_mm_s",
      .type = KeyType::Number,
      .unit = "mm/s",
      .range = above_up_to(0.0, 200.0),
      .default_toml = "8.0",
-     .help = "a pulse-counted elevation's actuator speed at full duty (a 36 V superjack: about 8)"},
+     .help = "an actuator elevation's speed at full duty, read by its pulses or its pot (a 36 V "
+             "superjack: about 8)"},
     {.key = "drop_pulse_at_s",
      .type = KeyType::Number,
      .unit = "s",
      .range = closed(0.0, 1.0e6),
      .default_note = "none",
      .help = "the first reed pulse from this simulated time on is lost: the next pass of the home "
-             "switch must find the count off by one"},
+             "switch must find the count off by one (refused with a pot)"},
 }};
 
 /// `a`'s keys, then `b`'s.
@@ -240,7 +242,9 @@ constexpr std::array<SectionSpec, 6> kSections{{
      .title = "The simulated elevation axis",
      .help =
          "As `[sim.az]`, for the elevation axis; with `[hardware.el] sensor = \"pulses\"` "
-         "and `counts_per_mm`, a dish on a linear actuator counted by a reed from a home switch "
+         "and `counts_per_mm`, a dish on a linear actuator counted by a reed from a home switch, "
+         "or with a pot on an ADC (`sensor = \"mcp3008\"` or `\"ads1115\"`) and "
+         "`pot_calibration_mm`, the same dish read by its feedback pot "
          "([hardware.md](hardware.md) \"Linear actuators\")."},
     {.name = "sim.pol",
      .chapter = Chapter::Simulation,

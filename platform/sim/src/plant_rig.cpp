@@ -15,15 +15,19 @@ PlantRig::PlantRig(const PlantSetup& plant, std::unique_ptr<SimulatedHub> hub)
   }
   if (plant.el_actuator) {
     el_dish_.emplace(plant.el_actuator->dish);
-    if (plant.el_actuator->drop_pulse_at_s) {
-      el_dish_->drop_pulse_after(*plant.el_actuator->drop_pulse_at_s);
+    if (const SimActuatorReed* reed = plant.el_actuator->reed()) {
+      el_counted_ = true;
+      if (reed->drop_pulse_at_s) el_dish_->drop_pulse_after(*reed->drop_pulse_at_s);
     }
     plants_.el_follows(el_dish_->angle_deg(), 0.0);
   }
 }
 
 void PlantRig::step_el_dish(double duty, double step_s, double end_s) {
-  for (const ActuatorEvent& e : el_dish_->step(duty, step_s)) {
+  std::vector<ActuatorEvent> events = el_dish_->step(duty, step_s);
+  // A pot reads the length: with no reed to take them, the edges would only pile up.
+  if (!el_counted_) events.clear();
+  for (const ActuatorEvent& e : events) {
     // On the loop's clock: the dish's own clock skips the time a late tick's cap leaves out.
     const double at_s = end_s - (el_dish_->now_s() - e.at_s);
     switch (e.kind) {
@@ -59,6 +63,12 @@ std::optional<std::uint16_t> PlantRig::pol_raw(double now_s) {
   advance(now_s);
   if (!pol_) return std::nullopt;
   return pol_->encoder_raw();
+}
+
+std::optional<double> PlantRig::el_length_mm(double now_s) {
+  advance(now_s);
+  if (!el_dish_) return std::nullopt;
+  return el_dish_->length_mm();
 }
 
 void PlantRig::advance(double now_s) {

@@ -1,8 +1,12 @@
 #include "azt/sim/simulated_station.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <string>
 #include <utility>
 
+#include "azt/control/pot_calibration.hpp"
 #include "azt/proto/hub_axis.hpp"
 #include "azt/sim/model_hub.hpp"
 
@@ -124,6 +128,37 @@ class SimActuatorPulses final : public ports::PulseInput {
   std::shared_ptr<PlantRig> rig_;
 };
 
+/// The elevation actuator's feedback pot on an ADC (PlantSetup::el_actuator with a pot): the
+/// length becomes the code the converter would return, through the calibration's inverse, and
+/// the daemon's own PotInput turns the code back into the angle through the triangle. So the
+/// station sees the ADC's quantisation, its averaging, and a length outside the stroke as the
+/// real axis would.
+class SimActuatorPot final : public ports::AxisSensor {
+ public:
+  SimActuatorPot(std::shared_ptr<PlantRig> rig, const control::PotInputConfig& pot)
+      : rig_(std::move(rig)), pot_(pot) {}
+  Result<ports::SensorReading> read(double now_s) override {
+    const auto length_mm = rig_->el_length_mm(now_s);
+    if (!length_mm) return fail("the simulated station has no elevation actuator");
+    const control::PotInputConfig& c = pot_.config();
+    // The calibration's "degrees" are millimetres on an actuator (PotInputConfig::actuator).
+    const double code = std::round(c.calibration.to_counts(*length_mm));
+    const auto counts =
+        static_cast<std::int32_t>(std::clamp(code, 0.0, static_cast<double>(c.adc.max_counts())));
+    const control::PotReading r = pot_.push(counts);
+    // As platform/linux's pot sensors report it: an angle now, or the pot's words.
+    if (r.ok()) return ports::SensorReading{ports::AxisSample{r.deg, now_s}};
+    return fail(describe() + ": " + std::string(control::to_string(r.status)));
+  }
+  [[nodiscard]] std::string describe() const override {
+    return "simulated actuator pot (" + std::to_string(pot_.config().adc.bits) + "-bit ADC)";
+  }
+
+ private:
+  std::shared_ptr<PlantRig> rig_;
+  control::PotInput pot_;
+};
+
 }  // namespace
 
 std::unique_ptr<SimulatedHub> make_model_hub(const PlantSetup& plant) {
@@ -138,7 +173,12 @@ SimulatedStation make_simulated_station(const PlantSetup& plant,
   for (std::size_t i = 0; i < (plant.el_axis ? 2U : 1U); ++i) {
     station.ports.drives.at(i) = std::make_unique<SimDrive>(rig, i);
     if (i == 1 && plant.el_actuator) {
-      station.ports.pulse_inputs.at(i) = std::make_unique<SimActuatorPulses>(rig);
+      // The actuator's own sensor, as on the real dish: its reed's count, or its pot.
+      if (const control::PotInputConfig* pot = plant.el_actuator->pot()) {
+        station.ports.sensors.at(i) = std::make_unique<SimActuatorPot>(rig, *pot);
+      } else {
+        station.ports.pulse_inputs.at(i) = std::make_unique<SimActuatorPulses>(rig);
+      }
     } else {
       station.ports.sensors.at(i) = std::make_unique<SimSensor>(rig, i);
     }

@@ -114,8 +114,14 @@ control::StationControlConfig station_control_config(const StationSimSetup& setu
   // comes from a configuration file; tests may give the plants other resolutions).
   c.az_control.lsb_deg = proto::hub_resolution_deg(setup.plant.az.encoder_bits);
   c.el_control.lsb_deg = proto::hub_resolution_deg(setup.plant.el.encoder_bits);
-  // A pulse-counted elevation: its step is a count (DrivenAxis takes it from the scale).
-  if (setup.plant.el_actuator) c.el_drive.pulses = setup.plant.el_actuator->pulses;
+  // An actuator elevation: its step is a count of its reed (DrivenAxis takes it from the scale)
+  // or of its pot's ADC at the coarse end of the stroke, as the hardware backend's.
+  if (const auto& act = setup.plant.el_actuator) {
+    if (const SimActuatorReed* reed = act->reed()) c.el_drive.pulses = reed->pulses;
+    if (const control::PotInputConfig* pot = act->pot()) {
+      c.el_drive.sensor_step_deg = pot->max_deg_per_count();
+    }
+  }
   if (c.pol && setup.plant.pol) {
     c.pol->control.lsb_deg = proto::hub_resolution_deg(setup.plant.pol->encoder_bits);
   }

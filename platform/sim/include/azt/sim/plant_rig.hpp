@@ -46,8 +46,11 @@ class PlantRig {
   [[nodiscard]] const SimulatedHub& hub() const { return *hub_; }
   /// The polarisation plant's truth; nullptr without one.
   [[nodiscard]] const AxisPlant* pol_plant() const { return pol_ ? &*pol_ : nullptr; }
+  /// The elevation actuator's length at `now_s`, once the plants have run up to it (what its
+  /// feedback pot reads); nullopt without an actuator.
+  std::optional<double> el_length_mm(double now_s);
   /// The elevation actuator's reed and home switch edges since the last call (the plants run up
-  /// to the last read), on the loop's clock; none without an actuator.
+  /// to the last read), on the loop's clock; none without an actuator or with a pot on it.
   std::vector<ports::PulseEdge> take_el_edges() { return std::exchange(el_edges_, {}); }
   /// The elevation actuator's home switch now (false without one).
   [[nodiscard]] bool el_home_closed() const { return el_dish_ && el_dish_->home_closed(); }
@@ -75,6 +78,7 @@ class PlantRig {
   double pol_duty_ = 0.0;
   std::optional<ActuatorDishPlant> el_dish_;
   std::vector<ports::PulseEdge> el_edges_;
+  bool el_counted_ = false;  ///< the actuator's reed is read (not a pot): its edges are queued
   std::optional<double> first_s_;  ///< the configured faults are timed from the first read
   std::optional<double> last_s_;
   std::optional<HubArrival> frame_;

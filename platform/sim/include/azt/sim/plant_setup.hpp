@@ -6,9 +6,11 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <variant>
 #include <vector>
 
 #include "azt/calibration/pointing_model.hpp"
+#include "azt/control/pot_calibration.hpp"
 #include "azt/control/pulse_axis.hpp"
 #include "azt/proto/hub_frame.hpp"
 #include "azt/sim/actuator_dish_plant.hpp"
@@ -26,15 +28,33 @@ struct ScheduledFault {
   AxisFault fault;
 };
 
-/// A dish whose elevation is a linear actuator counted by a reed from a home switch (docs/
-/// hardware.md, "Linear actuators"): the dish plant moves the elevation, and the station reads it
-/// by its count (`pulses`, its PulseAxis settings), not through the hub.
-struct SimActuatorElevation {
-  ActuatorDishParams dish;
+/// The reed of a simulated actuator, counted from its home switch: the station reads the
+/// elevation by its count (`pulses`, its PulseAxis settings) and homes it.
+struct SimActuatorReed {
   control::PulseAxisConfig pulses;
   /// The first reed pulse at or after this simulated time is lost (a pulse lost to motor noise):
   /// the next pass of the home switch must reveal it.
   std::optional<double> drop_pulse_at_s;
+};
+
+/// A dish whose elevation is a linear actuator (docs/hardware.md, "Linear actuators"): the dish
+/// plant moves the elevation, and the station reads it by its own sensor, not through the hub.
+/// The sensor is one of two, as on the real dish: the reed counted from a home switch, or a
+/// feedback pot on an ADC calibrated in millimetres (a control::PotInputConfig whose `actuator`
+/// is the dish's geometry: the same PotInput the daemon runs turns its codes into the angle, and
+/// there is nothing to home).
+struct SimActuatorElevation {
+  ActuatorDishParams dish;
+  std::variant<SimActuatorReed, control::PotInputConfig> sensor;
+
+  /// The reed, or nullptr when a pot reads the length.
+  [[nodiscard]] const SimActuatorReed* reed() const {
+    return std::get_if<SimActuatorReed>(&sensor);
+  }
+  /// The pot, or nullptr when a reed counts the length.
+  [[nodiscard]] const control::PotInputConfig* pot() const {
+    return std::get_if<control::PotInputConfig>(&sensor);
+  }
 };
 
 struct PlantSetup {
@@ -61,7 +81,7 @@ struct PlantSetup {
   /// False: the station's elevation does not move ([mount.el] fixed_deg): it gets no elevation
   /// drive or sensor, and the elevation plant stays where it starts.
   bool el_axis = true;
-  /// The elevation on a pulse-counted linear actuator, if simulated.
+  /// The elevation on a linear actuator (read by a reed's count or a pot), if simulated.
   std::optional<SimActuatorElevation> el_actuator;
 };
 
