@@ -67,12 +67,11 @@ inline constexpr double kMinTriangleDeg = 5.0;
 
 /// Length ↔ angle for one actuator. Pure and stateless after construction.
 ///
-/// A pulse sensor's millimetres become the axis's mount angle through angle_deg() in
-/// control::PulseScale (plugged in by PulseAxis, pulse_axis.hpp). Plug-in point still open (a
-/// later session's): a pot on the actuator reading a length (its two-point calibration in
-/// millimetres), through angle_deg() the same way; the supervisor's step size is deg_per_mm() ×
-/// the sensor's millimetres per step at the coarse end (max_deg_per_mm()). Targets outside angle
-/// range are refused with the words of length_mm().
+/// A length becomes the axis's mount angle through angle_deg() for both sensors that measure it:
+/// a pulse count in control::PulseScale (plugged in by PulseAxis, pulse_axis.hpp) and a feedback
+/// pot in control::PotInput (pot_calibration.hpp). Each sensor's step in degrees is its
+/// millimetres per step times max_deg_per_mm(), the coarse end. Targets outside the angle range
+/// are refused with the words of length_mm().
 class ActuatorGeometry {
  public:
   /// Precondition: ActuatorGeometryConfig::make(config).ok().
