@@ -36,7 +36,7 @@ control::AxisDriveConfig drive_config(const HardwareAxisConfig& a) {
   if (a.brake) d.brake = a.brake_timing;
   if (a.has_motor_inputs()) d.trips = a.trips;
   if (a.pulses) d.pulses = *a.pulses;
-  if (read_by_adc(a.sensor) && a.pot.actuator) d.sensor_step_deg = a.pot.max_deg_per_count();
+  if (a.pot.actuator) d.sensor_step_deg = a.pot.max_deg_per_count();  // read_adc sets it
   return d;
 }
 

@@ -111,6 +111,12 @@ std::string_view to_string(PotStatus status) {
   return "unknown";
 }
 
+Result<ports::SensorReading> pot_sensor_reading(const PotReading& r, double now_s,
+                                                std::string_view what) {
+  if (r.ok()) return ports::SensorReading{ports::AxisSample{r.deg, now_s}};
+  return fail(std::string(what) + ": " + std::string(to_string(r.status)));
+}
+
 Result<PotInputConfig> PotInputConfig::make(const PotInputConfig& c) {
   const auto adc = AdcSpec::make(c.adc.bits, c.adc.vref_v);
   if (!adc) return adc.error();

@@ -61,13 +61,6 @@ unsigned Ads1115Chip::next_slow() const { return slow_.at(next_slow_); }
 
 namespace {
 
-/// A good pot reading is an angle taken at `now_s`; anything else is an error naming the pot.
-Result<ports::SensorReading> pot_angle(const control::PotReading& r, double now_s,
-                                       const std::string& what) {
-  if (r.ok()) return ports::SensorReading{ports::AxisSample{r.deg, now_s}};
-  return fail(what + ": " + std::string(control::to_string(r.status)));
-}
-
 class Mcp3008PotSensor final : public ports::AxisSensor {
  public:
   Mcp3008PotSensor(std::unique_ptr<SpiBus> bus, unsigned channel,
@@ -79,7 +72,7 @@ class Mcp3008PotSensor final : public ports::AxisSensor {
       pot_.reset();
       return code.error();
     }
-    return pot_angle(pot_.push(code.value()), now_s, what_);
+    return control::pot_sensor_reading(pot_.push(code.value()), now_s, what_);
   }
   [[nodiscard]] std::string describe() const override { return what_; }
 
@@ -103,7 +96,7 @@ class Ads1115PotSensor final : public ports::AxisSensor {
       return code.error();
     }
     if (!code.value()) return ports::SensorReading{};
-    return pot_angle(pot_.push(*code.value()), now_s, what_);
+    return control::pot_sensor_reading(pot_.push(*code.value()), now_s, what_);
   }
   [[nodiscard]] std::string describe() const override { return what_; }
 

@@ -145,10 +145,7 @@ class SimActuatorPot final : public ports::AxisSensor {
     const double code = std::round(c.calibration.to_counts(*length_mm));
     const auto counts =
         static_cast<std::int32_t>(std::clamp(code, 0.0, static_cast<double>(c.adc.max_counts())));
-    const control::PotReading r = pot_.push(counts);
-    // As platform/linux's pot sensors report it: an angle now, or the pot's words.
-    if (r.ok()) return ports::SensorReading{ports::AxisSample{r.deg, now_s}};
-    return fail(describe() + ": " + std::string(control::to_string(r.status)));
+    return control::pot_sensor_reading(pot_.push(counts), now_s, describe());
   }
   [[nodiscard]] std::string describe() const override {
     return "simulated actuator pot (" + std::to_string(pot_.config().adc.bits) + "-bit ADC)";

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "azt/control/actuator_geometry.hpp"
+#include "azt/ports/axis_sensor.hpp"
 #include "azt/util/result.hpp"
 
 namespace azt::control {
@@ -114,6 +115,11 @@ struct PotReading {
   double deg = 0.0;  ///< NaN unless ok(): a broken wiper never reads as an angle
   [[nodiscard]] bool ok() const { return status == PotStatus::Ok; }
 };
+
+/// A pot reading as its axis sensor reports it, on Linux and in the simulation alike: an angle
+/// taken at `now_s`, or an error naming the pot (`what`) with the status's words.
+Result<ports::SensorReading> pot_sensor_reading(const PotReading& r, double now_s,
+                                                std::string_view what);
 
 /// One pot channel: ADC, calibration, guards, averaging.
 ///
