@@ -20,25 +20,9 @@
 namespace azt::app {
 namespace {
 
-// The pot reads 100 counts retracted (520 mm) and 900 extended (977.2 mm): 0.5715 mm a count,
-// 0.08° to 0.18° a count along the stroke (0.1433 to 0.3086 °/mm).
-constexpr const char* kActuatorEl = R"([mount.el]
-max_rate_deg_s = 2.0
-[hardware.el]
-drive = "relay"
-relay_forward = 7
-relay_reverse = 8
-window_deg = 0.5
-sensor = "mcp3008"
-adc_device = "/dev/spidev0.2"
-pot_calibration_mm = [100, 520.0, 900, 977.2]
-average_samples = 1
-actuator_pivot_to_fixed_mm = 650.0
-actuator_pivot_to_moving_mm = 400.0
-actuator_offset_deg = 48.0
-actuator_retracted_mm = 520.0
-actuator_extended_mm = 977.2
-)";
+// The support's actuator pot (testing::kActuatorPotEl), with a 0.5° window and no averaging.
+const std::string kActuatorEl = "[mount.el]\nmax_rate_deg_s = 2.0\n" + testing::kActuatorPotEl +
+                                "window_deg = 0.5\naverage_samples = 1\n";
 
 constexpr double kCoarsestCountDeg = 0.5715 * 0.3086;
 

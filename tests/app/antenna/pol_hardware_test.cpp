@@ -126,16 +126,8 @@ struct PolRig {
   void count(double before_deg, double at_s) {
     const auto at = epoch + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                 std::chrono::duration<double>(at_s));
-    const double after_deg = pol.shaft_deg();
-    const auto crossed = std::abs(std::lround(std::floor(after_deg * kPolCountsPerDeg)) -
-                                  std::lround(std::floor(before_deg * kPolCountsPerDeg)));
-    for (long i = 0; i < crossed; ++i) {
-      gpio.edge("[hardware.pol] pulse_line", true, at);
-      gpio.edge("[hardware.pol] pulse_line", false, at);
-    }
-    if ((before_deg < kPolHomeDeg) != (after_deg < kPolHomeDeg)) {
-      gpio.edge("[hardware.pol] home_switch", after_deg < kPolHomeDeg, at);
-    }
+    testing::turn_reed(gpio, "[hardware.pol]", before_deg, pol.shaft_deg(), kPolCountsPerDeg,
+                       kPolHomeDeg, at);
     io.poll();
     io.restart();
   }

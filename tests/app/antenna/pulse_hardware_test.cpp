@@ -65,15 +65,7 @@ struct PulseRig {
     const double after = plant->shaft_deg();
     const auto at = epoch + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                 std::chrono::duration<double>(t + dt));
-    const auto crossed = std::abs(static_cast<long>(std::floor(after * kCountsPerDeg)) -
-                                  static_cast<long>(std::floor(before * kCountsPerDeg)));
-    for (long i = 0; i < crossed; ++i) {
-      gpio.edge("[hardware.az] pulse_line", true, at);
-      gpio.edge("[hardware.az] pulse_line", false, at);
-    }
-    if ((before < kHomeDeg) != (after < kHomeDeg)) {
-      gpio.edge("[hardware.az] home_switch", after < kHomeDeg, at);
-    }
+    testing::turn_reed(gpio, "[hardware.az]", before, after, kCountsPerDeg, kHomeDeg, at);
     io.poll();
     io.restart();
   }

@@ -7,6 +7,7 @@
 #include "common/usage_error.hpp"
 #include "config/config_file.hpp"
 #include "config/daemon_config.hpp"
+#include "support/hardware_station.hpp"
 
 namespace azt::app {
 namespace {
@@ -106,24 +107,9 @@ TEST(HardwareConfig, AFixedElevationHasNoElevationHardware) {
                UsageError);
 }
 
-/// A feedback pot on the worked example's actuator (docs/hardware.md "Linear actuators").
-const std::string kActuatorPot = R"([hardware.el]
-drive = "relay"
-relay_forward = 7
-relay_reverse = 8
-sensor = "mcp3008"
-adc_device = "/dev/spidev0.2"
-pot_calibration_mm = [100, 520.0, 900, 977.2]
-actuator_pivot_to_fixed_mm = 650.0
-actuator_pivot_to_moving_mm = 400.0
-actuator_offset_deg = 48.0
-actuator_retracted_mm = 520.0
-actuator_extended_mm = 977.2
-actuator_extend = "raises"
-)";
-
 TEST(HardwareConfig, APotOnAnActuatorReadsMillimetresThroughItsTriangle) {
-  const DaemonConfig c = daemon_config_from(ConfigFile::parse(kTop + kActuatorPot, "c.toml"));
+  const DaemonConfig c =
+      daemon_config_from(ConfigFile::parse(kTop + testing::kActuatorPotEl, "c.toml"));
   const control::PotInputConfig& pot = c.hardware.el.pot;
   ASSERT_TRUE(pot.actuator.has_value());
   EXPECT_DOUBLE_EQ(pot.actuator->pivot_to_fixed_mm, 650.0);
@@ -137,13 +123,14 @@ TEST(HardwareConfig, AnActuatorsMistakesNameTheKey) {
     EXPECT_NE(e.find(key), std::string::npos) << text << "\n→ " << e;
   };
   const auto replaced = [](const std::string& from, const std::string& to) {
-    std::string t = kActuatorPot;
+    std::string t = testing::kActuatorPotEl;
     t.replace(t.find(from), from.size(), to);
     return t;
   };
-  EXPECT_EQ(error_or_empty(kActuatorPot), "");
+  EXPECT_EQ(error_or_empty(testing::kActuatorPotEl), "");
   // Both lines, or neither: one of them.
-  names(kActuatorPot + "pot_calibration = [0, 0.0, 1023, 90.0]\n", "[hardware.el].pot_calibration");
+  names(testing::kActuatorPotEl + "pot_calibration = [0, 0.0, 1023, 90.0]\n",
+        "[hardware.el].pot_calibration");
   names(replaced("pot_calibration_mm = [100, 520.0, 900, 977.2]\n", ""),
         "[hardware.el].pot_calibration");
   names(replaced("actuator_offset_deg = 48.0\n", ""), "[hardware.el].actuator_offset_deg");

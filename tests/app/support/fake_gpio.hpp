@@ -4,6 +4,7 @@
 // libgpiod adapter does when the kernel's event descriptor becomes readable.
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -129,5 +130,23 @@ class FakeGpio final : public linux_os::GpioProvider {
   std::map<unsigned, bool> busy_;
   bool fail_writes_ = false;
 };
+
+/// A reed counted on `table`'s pulse_line at `counts_per_deg`, with its home switch closed below
+/// `home_deg`, on a rotator that turned from `before_deg` to `after_deg`: each count crossed closes
+/// and opens the reed, and the switch changes where home is crossed, every edge stamped `at` (the
+/// loop delivers them at its next poll).
+inline void turn_reed(FakeGpio& gpio, const std::string& table, double before_deg, double after_deg,
+                      double counts_per_deg, double home_deg,
+                      std::chrono::steady_clock::time_point at) {
+  const auto crossed = std::abs(std::lround(std::floor(after_deg * counts_per_deg)) -
+                                std::lround(std::floor(before_deg * counts_per_deg)));
+  for (long i = 0; i < crossed; ++i) {
+    gpio.edge(table + " pulse_line", true, at);
+    gpio.edge(table + " pulse_line", false, at);
+  }
+  if ((before_deg < home_deg) != (after_deg < home_deg)) {
+    gpio.edge(table + " home_switch", after_deg < home_deg, at);
+  }
+}
 
 }  // namespace azt::app::testing
